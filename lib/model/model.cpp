@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/model/model.h>
+
+#include <seamless/base/error.h>
+#include <seamless/spline/knot_insertion.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace seamless {
+
+namespace {
+std::string fmt(double x) {
+    std::ostringstream os;
+    os.precision(17);
+    os << x;
+    return os.str();
+}
+
+void validate_knots(int degree, int n, const std::vector<double>& U, const std::string& file,
+                    const std::string& field) {
+    const size_t expected = static_cast<size_t>(n) + degree + 1;
+    if (U.size() != expected)
+        throw InputError(file, field,
+                         "expected " + std::to_string(expected) + " numbers, got " +
+                             std::to_string(U.size()));
+    for (size_t k = 0; k < U.size(); ++k) {
+        if (!std::isfinite(U[k]))
+            throw InputError(file, field + "[" + std::to_string(k) + "]", "not a finite number");
+        if (k > 0 && U[k] < U[k - 1])
+            throw InputError(file, field + "[" + std::to_string(k) + "]",
+                             "knots decrease (" + fmt(U[k]) + " after " + fmt(U[k - 1]) + ")");
+    }
+    for (size_t k = 0; k < U.size();) {
+        size_t e = k;
+        while (e < U.size() && U[e] == U[k]) ++e;
+        if (static_cast<int>(e - k) > degree + 1)
+            throw InputError(file, field,
+                             "knot " + fmt(U[k]) + " has multiplicity " + std::to_string(e - k) +
+                                 ", above degree+1 = " + std::to_string(degree + 1));
+        k = e;
+    }
+    if (!(U[degree] < U[n]))
+        throw InputError(file, field,
+                         "empty domain [" + fmt(U[degree]) + ", " + fmt(U[n]) + "] (knots[" +
+                             std::to_string(degree) + "] must be below knots[" +
+                             std::to_string(n) + "])");
+}
+} // namespace
+
+void validate_surface(const BSplineSurface& s, const std::string& file, const std::string& f) {
+    const std::string pre = f.empty() ? "" : f + ".";
+    if (s.degree_u < 1 || s.degree_u > kMaxDegree || s.degree_v < 1 || s.degree_v > kMaxDegree)
+        throw InputError(file, pre + "degree",
+                         "degrees must be integers in 1.." + std::to_string(kMaxDegree));
+    if (s.size_u < s.degree_u + 1 || s.size_v < s.degree_v + 1)
+        throw InputError(file, pre + "size",
+                         "control net " + std::to_string(s.size_u) + " x " +
+                             std::to_string(s.size_v) + " too small for degree [" +
+                             std::to_string(s.degree_u) + ", " + std::to_string(s.degree_v) +
+                             "] (need at least degree+1 points per direction)");
+    validate_knots(s.degree_u, s.size_u, s.knots_u, file, pre + "knots_u");
+    validate_knots(s.degree_v, s.size_v, s.knots_v, file, pre + "knots_v");
+    const size_t n = static_cast<size_t>(s.size_u) * s.size_v;
+    if (s.points.size() != n)
+        throw InputError(file, pre + "control_points",
+                         "expected " + std::to_string(n) + " points, got " +
+                             std::to_string(s.points.size()));
+    for (size_t k = 0; k < n; ++k)
+        if (!is_finite(s.points[k]))
+            throw InputError(file, pre + "control_points[" + std::to_string(k) + "]",
+                             "not a finite point");
+    if (!s.weights.empty()) {
+        if (s.weights.size() != n)
+            throw InputError(file, pre + "weights",
+                             "expected " + std::to_string(n) + " numbers, got " +
+                                 std::to_string(s.weights.size()));
+        for (size_t k = 0; k < n; ++k)
+            if (!std::isfinite(s.weights[k]) || !(s.weights[k] > 0))
+                throw InputError(file, pre + "weights[" + std::to_string(k) + "]",
+                                 "weight " + fmt(s.weights[k]) +
+                                     " is not a positive finite number");
+    }
+}
+
+Model load_model(const std::filesystem::path& path, const ModelLimits& limits) {
+    const std::string file = path.string();
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(file, "", "is a directory, not a model file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(file, "", "cannot open file (" + std::string(std::strerror(errno)) + ")");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) throw InputError(file, "", "read error");
+    const std::string text = ss.str();
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    Model m = ext == ".bpt" ? parse_bpt(text, file, limits) : parse_model_json(text, file, limits);
+    m.source = file;
+    return m;
+}
+
+std::string to_json(const Model& m) {
+    std::ostringstream os;
+    os.precision(17);
+    os << "{\"version\": 1,\n \"surfaces\": [";
+    for (size_t k = 0; k < m.surfaces.size(); ++k) {
+        const BSplineSurface& s = m.surfaces[k];
+        auto list = [&](const std::vector<double>& v) {
+            os << '[';
+            for (size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
+            os << ']';
+        };
+        os << (k ? ",\n" : "\n") << "  {\"name\": \"" << s.name << "\", \"degree\": [" << s.degree_u
+           << ", " << s.degree_v << "], \"size\": [" << s.size_u << ", " << s.size_v << "],\n";
+        os << "   \"knots_u\": ";
+        list(s.knots_u);
+        os << ",\n   \"knots_v\": ";
+        list(s.knots_v);
+        os << ",\n   \"control_points\": [";
+        for (size_t i = 0; i < s.points.size(); ++i)
+            os << (i ? ", " : "") << '[' << s.points[i].x << ", " << s.points[i].y << ", "
+               << s.points[i].z << ']';
+        os << ']';
+        if (s.rational()) {
+            os << ",\n   \"weights\": ";
+            list(s.weights);
+        }
+        os << '}';
+    }
+    os << "\n ]}\n";
+    return os.str();
+}
+
+Box3 control_box(const Model& m) {
+    Box3 b;
+    for (const BSplineSurface& s : m.surfaces) b.extend(control_box(s));
+    return b;
+}
+
+double d_max(const Model& m) { return control_box(m).max_extent(); }
+
+std::vector<BezierPatch> bezier_patches(const Model& m) {
+    std::vector<BezierPatch> out;
+    for (size_t k = 0; k < m.surfaces.size(); ++k) {
+        auto ps = bezier_patches(m.surfaces[k], static_cast<int>(k));
+        out.insert(out.end(), ps.begin(), ps.end());
+    }
+    return out;
+}
+
+} // namespace seamless

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// A model: the B-spline surfaces of one file. Readers for the version-1 JSON
+// model format and the Newell Bezier patch format (.bpt); docs/formats.md
+// documents both and their error messages.
+#pragma once
+
+#include <seamless/base/vec.h>
+#include <seamless/spline/bezier_patch.h>
+#include <seamless/spline/bspline_surface.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace seamless {
+
+struct Model {
+    std::string source; // file the model came from, for messages
+    std::vector<BSplineSurface> surfaces;
+};
+
+// Limits that reject absurd sizes before anything is allocated for them.
+struct ModelLimits {
+    long long max_surfaces = 1'000'000;
+    long long max_control_points = 50'000'000; // per surface, nu * nv
+};
+
+// Reads a .json or .bpt model (by extension; anything else is tried as JSON).
+// Throws InputError naming the file and the field on any defect.
+Model load_model(const std::filesystem::path& path, const ModelLimits& limits = {});
+Model parse_model_json(const std::string& text, const std::string& file,
+                       const ModelLimits& limits = {});
+Model parse_bpt(const std::string& text, const std::string& file, const ModelLimits& limits = {});
+
+// Checks degrees, sizes, knots (count, order, multiplicity <= degree+1, non-empty
+// domain), finiteness and weights. `field` prefixes messages, e.g. "surfaces[2]".
+void validate_surface(const BSplineSurface& s, const std::string& file, const std::string& field);
+
+// Version-1 JSON text of a model (17 significant digits: reads back bit-identical).
+std::string to_json(const Model& m);
+
+// Bounding box of every control point; its largest extent is the paper's d_max.
+Box3 control_box(const Model& m);
+double d_max(const Model& m);
+
+// Bezier patches of every surface, in surface order (paper section 4).
+std::vector<BezierPatch> bezier_patches(const Model& m);
+
+} // namespace seamless

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/spline/bezier_patch.h>
+
+namespace seamless {
+namespace {
+
+// Bernstein values B_i^n(s) and derivatives d/ds B_i^n(s), i = 0..n.
+void bernstein(int n, double s, double* B, double* dB) {
+    // Degree n-1 values first (for the derivative), then one more step.
+    double tmp[BezierPatch::kMaxOrder];
+    tmp[0] = 1.0;
+    const double r = 1.0 - s;
+    for (int d = 1; d < n; ++d) {
+        double prev = 0.0;
+        for (int i = 0; i < d; ++i) {
+            double t = tmp[i];
+            tmp[i] = prev + r * t;
+            prev = s * t;
+        }
+        tmp[d] = prev;
+    }
+    if (n == 0) {
+        B[0] = 1;
+        dB[0] = 0;
+        return;
+    }
+    // tmp holds B^{n-1}. d/ds B_i^n = n (B_{i-1}^{n-1} - B_i^{n-1}).
+    for (int i = 0; i <= n; ++i) {
+        double a = i >= 1 ? tmp[i - 1] : 0.0;
+        double b = i <= n - 1 ? tmp[i] : 0.0;
+        B[i] = s * a + r * b;
+        dB[i] = n * (a - b);
+    }
+}
+
+} // namespace
+
+HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t) {
+    double Bu[BezierPatch::kMaxOrder], dBu[BezierPatch::kMaxOrder];
+    double Bv[BezierPatch::kMaxOrder], dBv[BezierPatch::kMaxOrder];
+    bernstein(b.p, s, Bu, dBu);
+    bernstein(b.q, t, Bv, dBv);
+    HPoint X{0, 0, 0, 0};
+    for (int i = 0; i <= b.p; ++i) {
+        HPoint row{0, 0, 0, 0};
+        for (int j = 0; j <= b.q; ++j) row = row + Bv[j] * b.at(i, j);
+        X = X + Bu[i] * row;
+    }
+    return X;
+}
+
+SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
+    double Bu[BezierPatch::kMaxOrder], dBu[BezierPatch::kMaxOrder];
+    double Bv[BezierPatch::kMaxOrder], dBv[BezierPatch::kMaxOrder];
+    bernstein(b.p, s, Bu, dBu);
+    bernstein(b.q, t, Bv, dBv);
+    HPoint X{0, 0, 0, 0}, Xu{0, 0, 0, 0}, Xv{0, 0, 0, 0};
+    for (int i = 0; i <= b.p; ++i) {
+        HPoint row{0, 0, 0, 0}, rowv{0, 0, 0, 0};
+        for (int j = 0; j <= b.q; ++j) {
+            row = row + Bv[j] * b.at(i, j);
+            rowv = rowv + dBv[j] * b.at(i, j);
+        }
+        X = X + Bu[i] * row;
+        Xu = Xu + dBu[i] * row;
+        Xv = Xv + Bu[i] * rowv;
+    }
+    SurfacePoint r;
+    r.point = X.xyz() / X.w;
+    r.du = (Xu.xyz() - Xu.w * r.point) / X.w;
+    r.dv = (Xv.xyz() - Xv.w * r.point) / X.w;
+    return r;
+}
+
+void split_u(const BezierPatch& b, double s, BezierPatch& lo, BezierPatch& hi) {
+    const int p = b.p, q = b.q;
+    for (BezierPatch* h : {&lo, &hi}) {
+        h->p = p;
+        h->q = q;
+        h->rational = b.rational;
+        h->surface = b.surface;
+        h->v0 = b.v0;
+        h->v1 = b.v1;
+    }
+    const double um = b.u_at(s);
+    lo.u0 = b.u0;
+    lo.u1 = um;
+    hi.u0 = um;
+    hi.u1 = b.u1;
+    HPoint col[BezierPatch::kMaxOrder];
+    for (int j = 0; j <= q; ++j) {
+        for (int i = 0; i <= p; ++i) col[i] = b.at(i, j);
+        // De Casteljau: lo gets the first point of each level, hi the last.
+        for (int level = 0; level <= p; ++level) {
+            lo.at(level, j) = col[0];
+            hi.at(p - level, j) = col[p - level];
+            for (int i = 0; i < p - level; ++i) col[i] = lerp(col[i], col[i + 1], s);
+        }
+    }
+}
+
+void split_v(const BezierPatch& b, double t, BezierPatch& lo, BezierPatch& hi) {
+    const int p = b.p, q = b.q;
+    for (BezierPatch* h : {&lo, &hi}) {
+        h->p = p;
+        h->q = q;
+        h->rational = b.rational;
+        h->surface = b.surface;
+        h->u0 = b.u0;
+        h->u1 = b.u1;
+    }
+    const double vm = b.v_at(t);
+    lo.v0 = b.v0;
+    lo.v1 = vm;
+    hi.v0 = vm;
+    hi.v1 = b.v1;
+    HPoint row[BezierPatch::kMaxOrder];
+    for (int i = 0; i <= p; ++i) {
+        for (int j = 0; j <= q; ++j) row[j] = b.at(i, j);
+        for (int level = 0; level <= q; ++level) {
+            lo.at(i, level) = row[0];
+            hi.at(i, q - level) = row[q - level];
+            for (int j = 0; j < q - level; ++j) row[j] = lerp(row[j], row[j + 1], t);
+        }
+    }
+}
+
+Box3 control_box(const BezierPatch& b) {
+    Box3 box;
+    for (int i = 0; i <= b.p; ++i)
+        for (int j = 0; j <= b.q; ++j) box.extend(b.point(i, j));
+    return box;
+}
+
+} // namespace seamless

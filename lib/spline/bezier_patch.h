@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// Bezier patch (paper section 4): the pieces a B-spline surface falls into after
+// knot insertion. Control points are homogeneous (w*x, w*y, w*z, w) so that
+// de Casteljau subdivision is linear also for rational patches. Fixed-size
+// storage: splitting and copying never allocate.
+#pragma once
+
+#include <seamless/base/vec.h>
+#include <seamless/spline/bspline_surface.h>
+
+#include <array>
+
+namespace seamless {
+
+struct BezierPatch {
+    static constexpr int kMaxOrder = kMaxDegree + 1;
+
+    int p = 3, q = 3;       // degrees in u and v
+    bool rational = false;  // some weight differs from 1
+    int surface = -1;       // index of the source B-spline surface in its model
+    double u0 = 0, u1 = 1;  // parameter rectangle on the source surface
+    double v0 = 0, v1 = 1;
+    std::array<HPoint, kMaxOrder * kMaxOrder> cp{}; // (i, j) at i * kMaxOrder + j
+
+    HPoint& at(int i, int j) { return cp[i * kMaxOrder + j]; }
+    const HPoint& at(int i, int j) const { return cp[i * kMaxOrder + j]; }
+    Vec3 point(int i, int j) const { return at(i, j).point(); }
+    // Corner points P(0,0), P(1,0), P(1,1), P(0,1) in local (s, t).
+    Vec3 corner(int c) const {
+        switch (c) {
+        case 0: return point(0, 0);
+        case 1: return point(p, 0);
+        case 2: return point(p, q);
+        default: return point(0, q);
+        }
+    }
+    // Source-surface parameters of local (s, t) in [0,1]^2.
+    double u_at(double s) const { return u0 + s * (u1 - u0); }
+    double v_at(double t) const { return v0 + t * (v1 - v0); }
+};
+
+// Point, derivatives with respect to the LOCAL parameters (s, t) in [0,1]^2, and
+// normal. Multiply du by 1/(u1-u0) for derivatives on the source surface.
+SurfacePoint evaluate(const BezierPatch& b, double s, double t);
+// Homogeneous point X(s,t) = sum B_i(s) B_j(t) cp_ij.
+HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t);
+
+// De Casteljau subdivision at local parameter s (in u) or t (in v); the halves
+// keep the source surface and their part of the parameter rectangle.
+void split_u(const BezierPatch& b, double s, BezierPatch& lo, BezierPatch& hi);
+void split_v(const BezierPatch& b, double t, BezierPatch& lo, BezierPatch& hi);
+
+// Bounding box of the (projected) control points: holds the patch (convex hull property).
+Box3 control_box(const BezierPatch& b);
+
+} // namespace seamless

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/spline/bspline_surface.h>
+
+#include <algorithm>
+#include <cassert>
+
+namespace seamless {
+
+int find_span(int degree, int n, const std::vector<double>& knots, double t) {
+    for (int k = n - 1; k > degree; --k)
+        if (knots[k] <= t && knots[k] < knots[k + 1]) return k;
+    return degree;
+}
+
+void basis_functions(int p, int k, const std::vector<double>& U, double t, double* N0,
+                     double* N1) {
+    // Triangular table of the Cox-de Boor recurrence (The NURBS Book, A2.2/A2.3, first derivative).
+    double left[kMaxDegree + 2], right[kMaxDegree + 2];
+    double ndu[kMaxDegree + 1][kMaxDegree + 1];
+    ndu[0][0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = t - U[k + 1 - j];
+        right[j] = U[k + j] - t;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            ndu[j][r] = right[r + 1] + left[j - r]; // lower triangle: knot differences
+            double temp = ndu[r][j - 1] / ndu[j][r];
+            ndu[r][j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    for (int r = 0; r <= p; ++r) N0[r] = ndu[r][p];
+    if (!N1) return;
+    if (p == 0) {
+        N1[0] = 0;
+        return;
+    }
+    // N'_{k-p+r,p} = p * (N_{k-p+r,p-1} / (U[k+r]-U[k-p+r]) - N_{k-p+r+1,p-1} / (U[k+r+1]-U[k-p+r+1]))
+    for (int r = 0; r <= p; ++r) {
+        double d = 0.0;
+        if (r >= 1) d += ndu[r - 1][p - 1] / ndu[p][r - 1];
+        if (r <= p - 1) d -= ndu[r][p - 1] / ndu[p][r];
+        N1[r] = p * d;
+    }
+}
+
+SurfacePoint evaluate(const BSplineSurface& s, double u, double v) {
+    const int p = s.degree_u, q = s.degree_v;
+    u = std::clamp(u, s.u_min(), s.u_max());
+    v = std::clamp(v, s.v_min(), s.v_max());
+    const int ku = find_span(p, s.size_u, s.knots_u, u);
+    const int kv = find_span(q, s.size_v, s.knots_v, v);
+    double Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
+    basis_functions(p, ku, s.knots_u, u, Nu, dNu);
+    basis_functions(q, kv, s.knots_v, v, Nv, dNv);
+    HPoint X{0, 0, 0, 0}, Xu{0, 0, 0, 0}, Xv{0, 0, 0, 0};
+    for (int a = 0; a <= p; ++a) {
+        HPoint row{0, 0, 0, 0}, rowv{0, 0, 0, 0};
+        for (int b = 0; b <= q; ++b) {
+            HPoint c = s.hpoint(ku - p + a, kv - q + b);
+            row = row + Nv[b] * c;
+            rowv = rowv + dNv[b] * c;
+        }
+        X = X + Nu[a] * row;
+        Xu = Xu + dNu[a] * row;
+        Xv = Xv + Nu[a] * rowv;
+    }
+    // Quotient rule on the homogeneous coordinates: P = X/W, P_u = (X_u - P W_u) / W.
+    SurfacePoint r;
+    r.point = X.xyz() / X.w;
+    r.du = (Xu.xyz() - Xu.w * r.point) / X.w;
+    r.dv = (Xv.xyz() - Xv.w * r.point) / X.w;
+    return r;
+}
+
+Box3 control_box(const BSplineSurface& s) {
+    Box3 b;
+    for (Vec3 p : s.points) b.extend(p);
+    return b;
+}
+
+} // namespace seamless

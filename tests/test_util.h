@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// Helpers shared by the tests: paths to bundled data and running the CLI.
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace seamless::test {
+
+inline std::filesystem::path data_dir() { return SEAMLESS_DATA_DIR; }
+inline std::filesystem::path shared_dir() { return SEAMLESS_SHARED_DIR; }
+inline std::filesystem::path model_path(const std::string& name) {
+    return data_dir() / "models" / name;
+}
+
+// A fresh, empty scratch directory under the test's working directory.
+inline std::filesystem::path scratch_dir(const std::string& name) {
+    auto p = std::filesystem::current_path() / ("scratch-" + name);
+    std::filesystem::remove_all(p);
+    std::filesystem::create_directories(p);
+    return p;
+}
+
+inline void write_file(const std::filesystem::path& p, const std::string& text) {
+    std::ofstream(p, std::ios::binary) << text;
+}
+
+struct RunResult {
+    int status = -1;
+    std::string out, err;
+};
+
+// Runs the seamless CLI with `args` (shell-quoted by the caller).
+inline RunResult run_cli(const std::string& args, const std::string& tag = "run") {
+    auto dir = std::filesystem::current_path();
+    auto out = dir / (tag + ".stdout"), err = dir / (tag + ".stderr");
+    std::string cmd = std::string("\"") + SEAMLESS_CLI + "\" " + args + " >\"" + out.string() +
+                      "\" 2>\"" + err.string() + "\" </dev/null";
+    int rc = std::system(cmd.c_str());
+    RunResult r;
+    r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    std::ifstream o(out), e(err);
+    std::stringstream so, se;
+    so << o.rdbuf();
+    se << e.rdbuf();
+    r.out = so.str();
+    r.err = se.str();
+    return r;
+}
+
+} // namespace seamless::test

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// seamless info MODEL: what a model holds.
+#include "commands.h"
+
+#include <seamless/model/model.h>
+#include <seamless/spline/knot_insertion.h>
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace seamless::cli {
+namespace {
+
+// "[0 x4, 1, 2, 3 x4]": each distinct knot with its multiplicity; long vectors elided.
+std::string summarise_knots(const std::vector<double>& U) {
+    std::vector<std::pair<double, int>> runs;
+    for (double t : U) {
+        if (!runs.empty() && runs.back().first == t) ++runs.back().second;
+        else runs.push_back({t, 1});
+    }
+    std::ostringstream os;
+    os.precision(6);
+    os << '[';
+    const size_t n = runs.size();
+    for (size_t k = 0; k < n; ++k) {
+        if (n > 8 && k == 3) {
+            os << "... " << (n - 6) << " more, ";
+            k = n - 3;
+        }
+        os << runs[k].first;
+        if (runs[k].second > 1) os << " x" << runs[k].second;
+        if (k + 1 < n) os << ", ";
+    }
+    os << ']';
+    return os.str();
+}
+
+} // namespace
+
+void add_info(CLI::App& app, Action& action) {
+    auto* cmd = app.add_subcommand("info", "Describe a model: surfaces, degrees, knots, Bezier "
+                                           "patches, bounding box and d_max");
+    auto model = std::make_shared<std::string>();
+    auto as_json = std::make_shared<bool>(false);
+    cmd->add_option("MODEL", *model, "model file (.json version 1, or Newell .bpt)")->required();
+    cmd->add_flag("--json", *as_json, "print the report as JSON");
+    cmd->callback([&action, model, as_json] {
+        action = [model, as_json] {
+            const Model m = load_model(*model);
+            const Box3 box = control_box(m);
+            int total = 0;
+            nlohmann::json js;
+            js["model"] = *model;
+            for (const BSplineSurface& s : m.surfaces) {
+                const int patches = bezier_patch_count(s);
+                total += patches;
+                if (*as_json) {
+                    js["surfaces"].push_back({{"name", s.name},
+                                              {"degree", {s.degree_u, s.degree_v}},
+                                              {"size", {s.size_u, s.size_v}},
+                                              {"knots_u", s.knots_u},
+                                              {"knots_v", s.knots_v},
+                                              {"rational", s.rational()},
+                                              {"bezier_patches", patches}});
+                } else {
+                    std::cout << s.name << ": degree " << s.degree_u << "x" << s.degree_v
+                              << ", net " << s.size_u << "x" << s.size_v << ", "
+                              << (s.rational() ? "rational" : "polynomial")
+                              << ", knots_u " << summarise_knots(s.knots_u) << ", knots_v "
+                              << summarise_knots(s.knots_v) << ", " << patches
+                              << " Bezier patch" << (patches == 1 ? "" : "es") << "\n";
+                }
+            }
+            const double dmax = box.max_extent();
+            if (*as_json) {
+                js["surface_count"] = m.surfaces.size();
+                js["bezier_patches"] = total;
+                js["bbox"] = {{"min", {box.lo.x, box.lo.y, box.lo.z}},
+                              {"max", {box.hi.x, box.hi.y, box.hi.z}}};
+                js["d_max"] = dmax;
+                std::cout << js.dump(2) << "\n";
+            } else {
+                std::cout.precision(10);
+                std::cout << m.surfaces.size() << " surface" << (m.surfaces.size() == 1 ? "" : "s")
+                          << ", " << total << " Bezier patches\n"
+                          << "bbox of control points: [" << box.lo.x << ", " << box.lo.y << ", "
+                          << box.lo.z << "] .. [" << box.hi.x << ", " << box.hi.y << ", "
+                          << box.hi.z << "]\n"
+                          << "d_max: " << dmax << "\n";
+            }
+            return 0;
+        };
+    });
+}
+
+} // namespace seamless::cli

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// seamless: crack-free tessellation, watertightness checks and interval ray
+// tracing of B-spline surfaces. Exit status: 0 ok, 1 defects found (check),
+// 2 bad input or usage.
+#include "commands.h"
+
+#include <seamless/base/error.h>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    CLI::App app{"seamless: B-spline surfaces to crack-free triangle meshes, watertightness "
+                 "checks and interval ray tracing (W. Enger, The Visual Computer 1992)"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "seamless 0.1.0");
+    seamless::cli::Action action;
+    seamless::cli::add_info(app, action);
+    seamless::cli::add_tessellate(app, action);
+    seamless::cli::add_check(app, action);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    }
+    try {
+        return action ? action() : 0;
+    } catch (const seamless::InputError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "error: out of memory\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 2;
+    }
+}
