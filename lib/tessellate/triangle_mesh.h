@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// Indexed triangle mesh: the output of tessellation and the input of export,
+// check and the TRAY renderer. Plain arrays (libigl style), no library types.
+#pragma once
+
+#include <seamless/base/vec.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace seamless {
+
+struct TriangleMesh {
+    // positions: #V, model units. Every geometric point is one vertex.
+    std::vector<Vec3> positions;
+    // triangles: #F vertex index triples, oriented consistently with the source
+    // surface's (u,v) normal dP/du x dP/dv.
+    std::vector<std::array<int, 3>> triangles;
+
+    // Optional per-triangle and per-corner attributes (empty when absent):
+    // triangle_surface: #F index of the source surface (into surface_names).
+    std::vector<int> triangle_surface;
+    // corner_normals: #F x 3 unit exact surface normals at the triangle's corners.
+    std::vector<std::array<Vec3, 3>> corner_normals;
+    // corner_uvs: #F x 3 (u,v) of each corner on the triangle's source surface
+    // (per corner: a seam vertex has different (u,v) on either side).
+    std::vector<std::array<std::array<double, 2>, 3>> corner_uvs;
+    // surface_names: one per source surface.
+    std::vector<std::string> surface_names;
+
+    int vertex_count() const { return static_cast<int>(positions.size()); }
+    int triangle_count() const { return static_cast<int>(triangles.size()); }
+};
+
+} // namespace seamless
