@@ -45,7 +45,8 @@ struct Reader {
             fail(field, "expected an integer");
         if (j.is_number_unsigned() ? j.get<unsigned long long>() > static_cast<unsigned long long>(hi)
                                    : (x < static_cast<double>(lo) || x > static_cast<double>(hi)))
-            fail(field, "value out of range " + std::to_string(lo) + ".." + std::to_string(hi));
+            fail(field, "value " + j.dump() + " out of range " + std::to_string(lo) + ".." +
+                            std::to_string(hi));
         long long v = j.is_number_float() ? static_cast<long long>(x) : j.get<long long>();
         if (v < lo || v > hi)
             fail(field, "value " + std::to_string(v) + " out of range " + std::to_string(lo) + ".." +
@@ -66,6 +67,59 @@ struct Reader {
     }
 };
 
+// SAX handler that only tracks where in the document the parser is, so that an
+// error nlohmann reports without a field (a number like 1e999 that overflows to
+// infinity) can still be named: "surfaces[0].knots_u[3]".
+class PathTracker : public nlohmann::json_sax<json> {
+  public:
+    std::string path() const {
+        std::string s;
+        for (const Frame& f : stack_) {
+            if (f.array) s += "[" + std::to_string(f.index) + "]";
+            else if (!f.key.empty()) s += (s.empty() ? "" : ".") + f.key;
+        }
+        return s;
+    }
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return push(false); }
+    bool key(string_t& k) override {
+        stack_.back().key = k;
+        return true;
+    }
+    bool end_object() override { return pop(); }
+    bool start_array(std::size_t) override { return push(true); }
+    bool end_array() override { return pop(); }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+        return false;
+    }
+
+  private:
+    struct Frame {
+        bool array;
+        size_t index = 0;
+        std::string key;
+    };
+    bool value() {
+        if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
+        return true;
+    }
+    bool push(bool array) {
+        stack_.push_back({array, 0, {}});
+        return true;
+    }
+    bool pop() {
+        stack_.pop_back();
+        return value();
+    }
+    std::vector<Frame> stack_;
+};
+
 } // namespace
 
 Model parse_model_json(const std::string& text, const std::string& file, const ModelLimits& limits) {
@@ -83,6 +137,11 @@ Model parse_model_json(const std::string& text, const std::string& file, const M
         auto pos = what.find("syntax error");
         throw InputError(file, "line " + std::to_string(line) + ", column " + std::to_string(col),
                          "JSON " + (pos == std::string::npos ? what : what.substr(pos)));
+    } catch (const json::out_of_range&) {
+        // JSON has no NaN or infinity, but 1e999 overflows to infinity.
+        PathTracker where;
+        json::sax_parse(text, &where);
+        throw InputError(file, where.path(), "not a finite number (overflows a double)");
     }
     Reader r{file};
     if (!root.is_object()) r.fail("", "expected a JSON object at the top level");
