@@ -16,5 +16,6 @@ using Action = std::function<int()>;
 void add_info(CLI::App& app, Action& action);
 void add_tessellate(CLI::App& app, Action& action);
 void add_check(CLI::App& app, Action& action);
+void add_render(CLI::App& app, Action& action);
 
 } // namespace seamless::cli

@@ -1,7 +1,80 @@
 // SPDX-License-Identifier: MIT
-// seamless tessellate: placeholder until lib/tessellate lands.
+// seamless tessellate MODEL -o OUT: crack-free adaptive triangulation (paper
+// section 6) with the tolerances of section 8, written in OUT's format.
 #include "commands.h"
 
+#include <seamless/base/atomic_file.h>
+#include <seamless/mesh/mesh_io.h>
+#include <seamless/model/model.h>
+#include <seamless/tessellate/tessellation.h>
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+
 namespace seamless::cli {
-void add_tessellate(CLI::App&, Action&) {}
+
+void add_tessellate(CLI::App& app, Action& action) {
+    auto* cmd = app.add_subcommand(
+        "tessellate", "Triangulate a model into a crack-free mesh (planar subpatches, "
+                      "straight-midpoint edge vertices, fans of four or more triangles)");
+    struct Args {
+        std::string model, out, stats;
+        double eps1 = -1, eps2 = -1;
+        int max_depth = TessellationOptions{}.max_depth;
+    };
+    auto args = std::make_shared<Args>();
+    cmd->add_option("MODEL", args->model, "model file (.json version 1, or Newell .bpt)")
+        ->required();
+    cmd->add_option("-o,--output", args->out,
+                    "mesh file; format by extension (.off .obj .ply .stl .gltf .glb)")
+        ->required();
+    cmd->add_option("--eps1", args->eps1,
+                    "planarity tolerance in model units (default 0.001 * d_max)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--eps2", args->eps2,
+                    "boundary straightness tolerance in model units (default 0.02 * d_max)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--max-depth", args->max_depth, "most halvings per Bezier patch")
+        ->check(CLI::Range(0, 60));
+    cmd->add_option("--stats", args->stats, "also write the statistics as JSON to this file");
+    cmd->callback([&action, args] {
+        action = [args] {
+            const Model m = load_model(args->model);
+            TessellationOptions opt;
+            opt.eps1 = args->eps1;
+            opt.eps2 = args->eps2;
+            opt.max_depth = args->max_depth;
+            const Tessellation t = tessellate(m, opt);
+            write_mesh(args->out, t.mesh);
+            const TessellationStats& s = t.stats;
+            std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches
+                      << " subpatches, " << s.triangles << " triangles, " << s.vertices
+                      << " vertices, max_error_bound " << s.max_error_bound << ", " << s.seconds
+                      << " s\n";
+            if (!args->stats.empty()) {
+                nlohmann::json js{{"model", args->model},
+                                  {"output", args->out},
+                                  {"surfaces", s.surfaces},
+                                  {"patches", s.patches},
+                                  {"subpatches", s.subpatches},
+                                  {"triangles", s.triangles},
+                                  {"vertices", s.vertices},
+                                  {"shared_edges", s.shared_edges},
+                                  {"collapsed_edges", s.collapsed_edges},
+                                  {"nonplanar_subpatches", s.nonplanar_subpatches},
+                                  {"max_depth", s.max_depth},
+                                  {"d_max", s.d_max},
+                                  {"eps1", s.eps1},
+                                  {"eps2", s.eps2},
+                                  {"max_error_bound", s.max_error_bound},
+                                  {"seconds", s.seconds}};
+                write_text_atomically(args->stats, js.dump(2) + "\n");
+            }
+            return 0;
+        };
+    });
+}
+
 } // namespace seamless::cli

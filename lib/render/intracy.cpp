@@ -1,0 +1,526 @@
+// SPDX-License-Identifier: MIT
+// INTRACY (paper section 7) for primary rays and direct light.
+//
+// The screen is prepartitioned into 8 x 8 parts (remark 4), each handled with
+// its own stack of sub-screens B and run in parallel. For each B:
+//  step 3: every marked patch is compared with B by hull (remark 1 of Prop. 11
+//          in its primary-ray form), then its (s, t) intervals are narrowed by
+//          Theorem 10 (remark 3: at the interval bounds, and at the midpoints
+//          where a silhouette is possible, which may separate the patch in two);
+//          a patch whose intervals become empty is unmarked;
+//  step 5: B shrinks to the hull of the projections of the marked patches; the
+//          rest of B is background, certainly;
+//  step 6: a one-pixel B is solved by Hansen-Sengupta with the covering method
+//          on every marked patch (remark 1: the nearest intersection);
+//  step 7: otherwise, if the nearest marked patch is q-separated from all the
+//          others (a nearest q-connected set, Theorem 10 remark 4), and the
+//          Hansen-Sengupta operator over the whole cluster maps its box into
+//          its interior (Theorem 6 iii for every ray of B at once: each ray
+//          hits it, exactly once in the box), then every ray of B sees that
+//          patch and nothing else;
+//  step 8: SHADE encloses the intensity of B over the hulls of point and normal;
+//  step 9: if every channel's enclosure holds at most two levels, B is painted
+//          with the bilinear form of its four corner intensities (corner rays by
+//          Hansen-Sengupta, remark 2) plus dither in [-0.5, 0.5], kept within
+//          the enclosure's levels; without dithering B must hold one level;
+//  step 10: otherwise B is split into four (remark 3), or two, and pushed.
+// Step 7's certificate replaces the paper's conditions a)-c) of remark 4 with a
+// proof: a pixel painted from a cluster is never wrong by more than one level
+// (the enclosure holds the true intensity), and background is never painted
+// where a patch is hit.
+#include <seamless/render/projection.h>
+#include <seamless/render/render.h>
+#include <seamless/render/shading.h>
+
+#include <seamless/interval/hansen_sengupta.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+
+namespace seamless {
+namespace {
+
+struct Mark {
+    int patch;
+    ParamBox box;
+};
+
+struct SubScreen {
+    int x0, y0, x1, y1; // inclusive pixel range
+    size_t offset, count; // its marks in the arena
+};
+
+// The cluster system G = (X - a Z, Y - b Z) of Theorem 10 on the homogeneous
+// camera coordinates (W cancels), with interval coefficients [a], [b].
+struct ClusterSystem {
+    PowerForm G, Gs, Gt;
+};
+
+void cluster_system(const PatchForms& f, Interval a, Interval b, ClusterSystem& out) {
+    const Interval m[2][PowerForm::kMaxDim] = {{Interval(1.0), Interval(0.0), -a, Interval(0.0)},
+                                               {Interval(0.0), Interval(1.0), -b, Interval(0.0)}};
+    out.G = combine(f.X, m, 2);
+    out.Gs = combine(f.Xs, m, 2);
+    out.Gt = combine(f.Xt, m, 2);
+}
+
+// Pieces of {x in X : 0 in n + d (x - x0)}, at most two (extended division;
+// Theorem 10 remark 5). Returns how many are non-empty.
+int solve_pieces(Interval n, Interval d, Interval X, double x0, Interval out[2]) {
+    const Interval rel = X - Interval(x0);
+    if (!d.contains(0.0)) {
+        out[0] = intersect(Interval(x0) + (-n) / d, X);
+        return out[0].is_empty() ? 0 : 1;
+    }
+    if (n.contains(0.0)) {
+        out[0] = X;
+        return 1;
+    }
+    // -n / d with 0 in d: two half-lines, or one when d touches 0 from one side.
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const Interval num = -n;
+    Interval left = Interval::empty(), right = Interval::empty();
+    if (num.lo() > 0) {
+        if (d.hi() > 0) right = {next_down(num.lo() / d.hi()), inf};
+        if (d.lo() < 0) left = {-inf, next_up(num.lo() / d.lo())};
+    } else {
+        if (d.hi() > 0) left = {-inf, next_up(num.hi() / d.hi())};
+        if (d.lo() < 0) right = {next_down(num.hi() / d.lo()), inf};
+    }
+    int k = 0;
+    for (Interval piece : {intersect(left, rel), intersect(right, rel)})
+        if (!piece.is_empty()) out[k++] = intersect(Interval(x0) + piece, X);
+    return k;
+}
+
+// Theorem 10 with remark 3: narrows box in s and t, solving at both bounds.
+// Returns false when the patch certainly misses every ray of the cluster.
+bool narrow(const ClusterSystem& sys, ParamBox& box) {
+    for (int pass = 0; pass < 3; ++pass) {
+        const double before = box.s.width() * box.t.width();
+        for (int k = 0; k < 2; ++k) {
+            const Interval Ds = horner(sys.Gs, k, box);
+            Interval s = box.s;
+            for (double s0 : {box.s.lo(), box.s.hi()}) {
+                Interval piece[2];
+                const Interval N = horner(sys.G, k, ParamBox{Interval(s0), box.t});
+                int n = solve_pieces(N, Ds, s, s0, piece);
+                s = n == 0 ? Interval::empty() : (n == 1 ? piece[0] : hull(piece[0], piece[1]));
+                if (s.is_empty()) return false;
+            }
+            box.s = s;
+            const Interval Dt = horner(sys.Gt, k, box);
+            Interval t = box.t;
+            for (double t0 : {box.t.lo(), box.t.hi()}) {
+                Interval piece[2];
+                const Interval N = horner(sys.G, k, ParamBox{box.s, Interval(t0)});
+                int n = solve_pieces(N, Dt, t, t0, piece);
+                t = n == 0 ? Interval::empty() : (n == 1 ? piece[0] : hull(piece[0], piece[1]));
+                if (t.is_empty()) return false;
+            }
+            box.t = t;
+        }
+        if (box.s.width() * box.t.width() > 0.8 * before) break;
+    }
+    return true;
+}
+
+// Remark 3: where a silhouette is possible, solve at the midpoints too; when
+// that leaves two separate pieces, the patch is separated into two marks.
+int separate(const ClusterSystem& sys, const ParamBox& box, ParamBox out[2]) {
+    for (int dir = 0; dir < 2; ++dir) {
+        for (int k = 0; k < 2; ++k) {
+            Interval piece[2];
+            int n;
+            if (dir == 0) {
+                const double s0 = box.s.mid();
+                n = solve_pieces(horner(sys.G, k, ParamBox{Interval(s0), box.t}),
+                                 horner(sys.Gs, k, box), box.s, s0, piece);
+            } else {
+                const double t0 = box.t.mid();
+                n = solve_pieces(horner(sys.G, k, ParamBox{box.s, Interval(t0)}),
+                                 horner(sys.Gt, k, box), box.t, t0, piece);
+            }
+            if (n == 0) return 0;
+            if (n == 2) {
+                out[0] = out[1] = box;
+                (dir == 0 ? out[0].s : out[0].t) = piece[0];
+                (dir == 0 ? out[1].s : out[1].t) = piece[1];
+                return 2;
+            }
+        }
+    }
+    out[0] = box;
+    return 1;
+}
+
+// Theorem 6 iii over the whole cluster: if the Hansen-Sengupta operator with
+// the interval coefficients [a], [b] maps the box into its interior, every ray
+// of the cluster has exactly one zero in the box. Contracts `box` meanwhile.
+bool certify_cluster(const ClusterSystem& sys, ParamBox& box) {
+    for (int iter = 0; iter < 6; ++iter) {
+        IMat<2> A;
+        IVec<2> F, x;
+        for (int k = 0; k < 2; ++k) {
+            A(k, 0) = horner(sys.Gs, k, box);
+            A(k, 1) = horner(sys.Gt, k, box);
+        }
+        const double cs = box.s.mid(), ct = box.t.mid();
+        for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, ParamBox{Interval(cs), Interval(ct)});
+        x[0] = box.s;
+        x[1] = box.t;
+        const HansenSenguptaStep<2> step = hansen_sengupta<2>(A, F, x, RVec<2>{cs, ct});
+        if (step.box.is_empty()) return false;
+        if (step.unique) {
+            box = {step.box[0], step.box[1]};
+            return true;
+        }
+        if (step.box[0] == x[0] && step.box[1] == x[1]) return false;
+        box = {step.box[0], step.box[1]};
+    }
+    return false;
+}
+
+struct Hit {
+    int patch = -1;
+    double s = 0, t = 0, q = 0;
+};
+
+// Nearest intersection of one primary ray with the marked patches (step 6,
+// remark 1), each searched in its box with Hansen-Sengupta and the covering method.
+Hit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
+                RenderStats& st, std::vector<RayPatchHit>& hits) {
+    Hit best;
+    double best_q = std::numeric_limits<double>::infinity();
+    const Ray ray = ProjectedScene::primary_ray(a, b);
+    ++st.primary_rays;
+    for (size_t k = 0; k < n; ++k) {
+        const ProjectedPatch& pp = ps.patches[marks[k].patch];
+        hits.clear();
+        RayPatchStats rs;
+        intersect(pp.forms, ray, marks[k].box, hits, RayPatchOptions{}, &rs);
+        ++st.pixel_patch_solves;
+        st.hs_iterations += rs.iterations;
+        auto h = nearest_hit(hits, 0.0);
+        if (!h || !(h->q.hi() > 0)) continue;
+        const double q = std::max(h->q.lo(), 0.0);
+        if (q < best_q) {
+            best_q = q;
+            best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid()};
+        }
+    }
+    return best;
+}
+
+std::array<double, 3> shade_hit(const ProjectedScene& ps, const Hit& h) {
+    Vec3 P, N;
+    const ProjectedPatch& pp = ps.patches[h.patch];
+    surface_frame(pp.patch, h.s, h.t, P, N);
+    return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N), Vec3{});
+}
+
+// Deterministic dither in [-0.5, 0.5) per pixel and channel (remark 2), so
+// that sequential and parallel runs paint the same image.
+double dither(int x, int y, int c) {
+    std::uint64_t z = (static_cast<std::uint64_t>(x) << 40) ^ (static_cast<std::uint64_t>(y) << 16) ^
+                      static_cast<std::uint64_t>(c) ^ 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0) - 0.5;
+}
+
+class PartRenderer {
+  public:
+    PartRenderer(const ProjectedScene& ps, const RenderOptions& opt, Image& image, int levels)
+        : ps_(ps), opt_(opt), image_(image), levels_(levels) {
+        const Vec3 bg = ps.lighting.background;
+        for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
+    }
+
+    void run(int x0, int y0, int x1, int y1, RenderStats& st) {
+        arena_.clear();
+        stack_.clear();
+        for (size_t k = 0; k < ps_.patches.size(); ++k)
+            arena_.push_back({static_cast<int>(k), ParamBox{}});
+        stack_.push_back({x0, y0, x1, y1, 0, arena_.size()});
+        while (!stack_.empty()) {
+            SubScreen B = stack_.back();
+            stack_.pop_back();
+            arena_.resize(B.offset + B.count);
+            ++st.subscreens;
+            step(B, st);
+        }
+    }
+
+  private:
+    Interval screen_a(int x0, int x1) const {
+        return {ps_.frame.screen_a(x0 + 0.5), ps_.frame.screen_a(x1 + 0.5)};
+    }
+    Interval screen_b(int y0, int y1) const {
+        return {ps_.frame.screen_b(y0 + 0.5), ps_.frame.screen_b(y1 + 0.5)};
+    }
+
+    void paint_background(int x0, int y0, int x1, int y1, RenderStats& st) {
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                for (int c = 0; c < 3; ++c) image_.at(x, y, c) = bg_[c];
+        st.background_pixels += static_cast<long long>(x1 - x0 + 1) * (y1 - y0 + 1);
+    }
+    void count(const SubScreen& B, RenderStats& st) {
+        ++st.subscreens_by_size[static_cast<long long>(B.x1 - B.x0 + 1) * (B.y1 - B.y0 + 1)];
+    }
+
+    void step(SubScreen B, RenderStats& st) {
+        const bool thin = B.x0 == B.x1 && B.y0 == B.y1;
+        const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
+        // Step 3: hull comparison and Theorem 10 for every marked patch.
+        const size_t first = arena_.size();
+        for (size_t k = B.offset; k < B.offset + B.count; ++k) {
+            Mark m = arena_[k];
+            const ProjectedPatch& pp = ps_.patches[m.patch];
+            const IVec3 P = enclose_point(pp.forms, m.box);
+            if (!(P[2].hi() > 0)) continue; // behind the eye
+            if (!(P[0] - a * P[2]).contains(0.0) || !(P[1] - b * P[2]).contains(0.0)) continue;
+            if (thin) {
+                arena_.push_back(m);
+                continue;
+            }
+            cluster_system(pp.forms, a, b, sys_);
+            if (!narrow(sys_, m.box)) continue;
+            // Remark 3: a possible silhouette (normal . view contains 0) is separated.
+            const PatchEnclosure e = enclose(pp.forms, m.box);
+            const Interval nv = e.normal[0] * e.point[0] + e.normal[1] * e.point[1] + e.normal[2] * e.point[2];
+            ParamBox parts[2];
+            const int n = nv.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);
+            for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i]});
+        }
+        const size_t nmarks = arena_.size() - first;
+        if (nmarks == 0) { // step 4: nothing marked
+            paint_background(B.x0, B.y0, B.x1, B.y1, st);
+            count(B, st);
+            return;
+        }
+        if (thin) {
+            ++st.single_pixels;
+            const Hit h = solve_pixel(ps_, a.lo(), b.lo(), &arena_[first], nmarks, st, hits_);
+            if (h.patch < 0) {
+                paint_background(B.x0, B.y0, B.x0, B.y0, st);
+            } else {
+                const auto I = shade_hit(ps_, h);
+                for (int c = 0; c < 3; ++c)
+                    image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
+            }
+            count(B, st);
+            return;
+        }
+        // Step 5: B shrinks to the hull of the projections of the marked patches.
+        if (improve(B, first, nmarks, st)) return;
+        // Step 7: a nearest q-separated patch that certainly covers B.
+        if (try_paint(B, first, nmarks, st)) return;
+        // Step 10: split into four while possible (remark 3), else two.
+        const int w = B.x1 - B.x0 + 1, h = B.y1 - B.y0 + 1;
+        const int xm = B.x0 + w / 2 - 1, ym = B.y0 + h / 2 - 1;
+        SubScreen kids[4];
+        int nk = 0;
+        if (w > 1 && h > 1) {
+            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0};
+            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0};
+            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0};
+            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0};
+        } else if (w > 1) {
+            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0};
+            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0};
+        } else {
+            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0};
+            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0};
+        }
+        // Each child gets the marks of B (already at the top of the arena for
+        // the first; copies for the others). Pushed in reverse so the first is next.
+        for (int i = nk - 1; i >= 0; --i) {
+            kids[i].offset = first;
+            kids[i].count = nmarks;
+        }
+        // All children share one mark list: a child's processing truncates the
+        // arena to offset+count before appending, so the list survives for the next.
+        for (int i = nk - 1; i >= 0; --i) stack_.push_back(kids[i]);
+    }
+
+    // Step 5. Returns true if B was finished (all background).
+    bool improve(SubScreen& B, size_t first, size_t n, RenderStats& st) {
+        Interval ha = Interval::empty(), hb = Interval::empty();
+        for (size_t k = first; k < first + n; ++k) {
+            const IVec3 P = enclose_point(ps_.patches[arena_[k].patch].forms, arena_[k].box);
+            if (!(P[2].lo() > 0)) return false; // crosses the eye plane: no projection hull
+            ha = hull(ha, P[0] / P[2]);
+            hb = hull(hb, P[1] / P[2]);
+        }
+        int nx0 = B.x0, nx1 = B.x1, ny0 = B.y0, ny1 = B.y1;
+        while (nx0 <= nx1 && ps_.frame.screen_a(nx0 + 0.5) < ha.lo()) ++nx0;
+        while (nx1 >= nx0 && ps_.frame.screen_a(nx1 + 0.5) > ha.hi()) --nx1;
+        while (ny0 <= ny1 && ps_.frame.screen_b(ny0 + 0.5) < hb.lo()) ++ny0;
+        while (ny1 >= ny0 && ps_.frame.screen_b(ny1 + 0.5) > hb.hi()) --ny1;
+        if (nx0 > nx1 || ny0 > ny1) {
+            paint_background(B.x0, B.y0, B.x1, B.y1, st);
+            count(B, st);
+            return true;
+        }
+        if (nx0 == B.x0 && nx1 == B.x1 && ny0 == B.y0 && ny1 == B.y1) return false;
+        // The strips of B outside the hull are background.
+        if (ny0 > B.y0) paint_background(B.x0, B.y0, B.x1, ny0 - 1, st);
+        if (ny1 < B.y1) paint_background(B.x0, ny1 + 1, B.x1, B.y1, st);
+        if (nx0 > B.x0) paint_background(B.x0, ny0, nx0 - 1, ny1, st);
+        if (nx1 < B.x1) paint_background(nx1 + 1, ny0, B.x1, ny1, st);
+        B.x0 = nx0;
+        B.x1 = nx1;
+        B.y0 = ny0;
+        B.y1 = ny1;
+        if (B.x0 == B.x1 && B.y0 == B.y1) { // down to one pixel: solve it now
+            ++st.single_pixels;
+            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
+                                      &arena_[first], n, st, hits_);
+            if (h.patch < 0) {
+                paint_background(B.x0, B.y0, B.x0, B.y0, st);
+            } else {
+                const auto I = shade_hit(ps_, h);
+                for (int c = 0; c < 3; ++c)
+                    image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
+            }
+            count(B, st);
+            return true;
+        }
+        return false;
+    }
+
+    // Steps 7 to 9. Returns true if B was painted.
+    bool try_paint(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
+        // Depth (q) intervals; the nearest mark must be separated from all others.
+        size_t best = first;
+        Interval qbest;
+        double best_lo = std::numeric_limits<double>::infinity();
+        for (size_t k = first; k < first + n; ++k) {
+            const Interval q = enclose_point(ps_.patches[arena_[k].patch].forms, arena_[k].box)[2];
+            if (q.lo() < best_lo) {
+                best_lo = q.lo();
+                best = k;
+                qbest = q;
+            }
+        }
+        if (!(qbest.lo() > 0)) return false;
+        for (size_t k = first; k < first + n; ++k) {
+            if (k == best) continue;
+            const Interval q = enclose_point(ps_.patches[arena_[k].patch].forms, arena_[k].box)[2];
+            if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
+        }
+        const Mark m = arena_[best];
+        const ProjectedPatch& pp = ps_.patches[m.patch];
+        const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
+        cluster_system(pp.forms, a, b, sys_);
+        ParamBox box = m.box;
+        if (!certify_cluster(sys_, box)) return false;
+        // Step 8: SHADE over the hulls of the intersection points and normals.
+        const PatchEnclosure e = enclose(pp.forms, box);
+        const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
+        const V3<Interval> N{e.normal[0], e.normal[1], e.normal[2]};
+        const auto I = shade<Interval>(ps_.lighting, ps_.lighting.materials[pp.material], P, N, Vec3{});
+        int lo[3], hi[3];
+        bool two = false;
+        for (int c = 0; c < 3; ++c) {
+            if (!I[c].is_finite()) return false;
+            lo[c] = quantise(I[c].lo(), levels_);
+            hi[c] = quantise(I[c].hi(), levels_);
+            if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
+            two |= hi[c] > lo[c];
+        }
+        if (!two) {
+            for (int y = B.y0; y <= B.y1; ++y)
+                for (int x = B.x0; x <= B.x1; ++x)
+                    for (int c = 0; c < 3; ++c) image_.at(x, y, c) = static_cast<std::uint16_t>(lo[c]);
+            count(B, st);
+            return true;
+        }
+        // Step 9 with remark 2: corner rays, bilinear form, dither.
+        std::array<double, 3> corner[4];
+        const int cx[4] = {B.x0, B.x1, B.x0, B.x1}, cy[4] = {B.y0, B.y0, B.y1, B.y1};
+        const Mark only{m.patch, box};
+        for (int k = 0; k < 4; ++k) {
+            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5), ps_.frame.screen_b(cy[k] + 0.5),
+                                      &only, 1, st, hits_);
+            if (h.patch < 0) {
+                for (int c = 0; c < 3; ++c) corner[k][c] = I[c].mid();
+            } else {
+                corner[k] = shade_hit(ps_, h);
+            }
+        }
+        const double wx = std::max(1, B.x1 - B.x0), wy = std::max(1, B.y1 - B.y0);
+        for (int y = B.y0; y <= B.y1; ++y) {
+            const double fy = (y - B.y0) / wy;
+            for (int x = B.x0; x <= B.x1; ++x) {
+                const double fx = (x - B.x0) / wx;
+                for (int c = 0; c < 3; ++c) {
+                    const double v = (1 - fy) * ((1 - fx) * corner[0][c] + fx * corner[1][c]) +
+                                     fy * ((1 - fx) * corner[2][c] + fx * corner[3][c]);
+                    long level = std::lround(clamp01(v) * (levels_ - 1) + dither(x, y, c));
+                    level = std::clamp<long>(level, lo[c], hi[c]);
+                    image_.at(x, y, c) = static_cast<std::uint16_t>(level);
+                }
+            }
+        }
+        count(B, st);
+        return true;
+    }
+
+    const ProjectedScene& ps_;
+    const RenderOptions& opt_;
+    Image& image_;
+    int levels_;
+    std::uint16_t bg_[3];
+    std::vector<Mark> arena_;
+    std::vector<SubScreen> stack_;
+    std::vector<RayPatchHit> hits_;
+    ClusterSystem sys_;
+};
+
+} // namespace
+
+Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& st) {
+    const int W = opt.width > 0 ? opt.width : scene.camera.width;
+    const int H = opt.height > 0 ? opt.height : scene.camera.height;
+    const int L = opt.levels > 0 ? opt.levels : scene.levels;
+    const auto t0 = std::chrono::steady_clock::now();
+    const ProjectedScene ps = project_scene(scene, W, H); // step 1
+    st.precalc_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    st.patches = static_cast<long long>(ps.patches.size());
+    Image image(W, H, L);
+
+    // Remark 4: 8 x 8 congruent parts (fewer when the image is smaller).
+    const int px = std::min(opt.prepartition, W), py = std::min(opt.prepartition, H);
+    const int parts = px * py;
+    std::vector<RenderStats> part_stats(parts);
+    std::atomic<int> done{0};
+    auto work = [&](int p) {
+        const int i = p % px, j = p / px;
+        const int x0 = i * W / px, x1 = (i + 1) * W / px - 1;
+        const int y0 = j * H / py, y1 = (j + 1) * H / py - 1;
+        PartRenderer r(ps, opt, image, L);
+        r.run(x0, y0, x1, y1, part_stats[p]);
+        const int d = ++done;
+        if (opt.progress) opt.progress(static_cast<double>(d) / parts);
+    };
+    if (opt.threads == 1) {
+        for (int p = 0; p < parts; ++p) work(p);
+    } else {
+        tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
+        arena.execute([&] {
+            tbb::parallel_for(0, parts, [&](int p) { work(p); });
+        });
+    }
+    for (const RenderStats& s : part_stats) st.merge(s);
+    return image;
+}
+
+} // namespace seamless

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/render/projection.h>
+
+#include <seamless/spline/knot_insertion.h>
+
+namespace seamless {
+
+ProjectedScene project_scene(const Scene& scene, int width, int height) {
+    Camera cam = scene.camera;
+    cam.width = width;
+    cam.height = height;
+    ProjectedScene ps(cam);
+    ps.lighting.ambient = scene.ambient;
+    ps.lighting.background = scene.background;
+    ps.lighting.materials = scene.materials;
+    ps.lighting.levels = scene.levels;
+    for (const Light& l : scene.lights)
+        if (l.on()) ps.lighting.lights.push_back({ps.frame.to_camera(l.position), l.color});
+    for (size_t k = 0; k < scene.model.surfaces.size(); ++k) {
+        for (BezierPatch b : bezier_patches(scene.model.surfaces[k], static_cast<int>(k))) {
+            for (int i = 0; i <= b.p; ++i)
+                for (int j = 0; j <= b.q; ++j) b.at(i, j) = ps.frame.to_camera(b.at(i, j));
+            ProjectedPatch pp;
+            pp.patch = b;
+            pp.forms = patch_forms(b);
+            pp.material = scene.surface_material[k];
+            ps.patches.push_back(std::move(pp));
+        }
+    }
+    return ps;
+}
+
+void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal) {
+    SurfacePoint sp = evaluate(b, s, t);
+    point = sp.point;
+    normal = sp.normal();
+    // At a collapsed edge the normal vanishes; take it a little way inside.
+    for (double h = 1e-7; norm(normal) <= 1e-14 * (norm(sp.du) + norm(sp.dv) + 1e-300) && h < 0.1; h *= 10) {
+        SurfacePoint q = evaluate(b, s + (s < 0.5 ? h : -h), t + (t < 0.5 ? h : -h));
+        normal = q.normal();
+    }
+}
+
+} // namespace seamless

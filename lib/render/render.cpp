@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/render/render.h>
+
+#include <seamless/render/projection.h>
+#include <seamless/render/shading.h>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+
+namespace seamless {
+
+void RenderStats::merge(const RenderStats& o) {
+    for (const auto& [size, n] : o.subscreens_by_size) subscreens_by_size[size] += n;
+    subscreens += o.subscreens;
+    single_pixels += o.single_pixels;
+    pixel_patch_solves += o.pixel_patch_solves;
+    hs_iterations += o.hs_iterations;
+    primary_rays += o.primary_rays;
+    background_pixels += o.background_pixels;
+}
+
+Image render(const Scene& scene, const RenderOptions& opt, RenderStats* stats) {
+    RenderStats local;
+    RenderStats& st = stats ? *stats : local;
+    st = RenderStats{};
+    st.width = opt.width > 0 ? opt.width : scene.camera.width;
+    st.height = opt.height > 0 ? opt.height : scene.camera.height;
+    st.levels = opt.levels > 0 ? opt.levels : scene.levels;
+    st.threads = opt.threads;
+    const auto t0 = std::chrono::steady_clock::now();
+    Image im;
+    switch (opt.method) {
+    case RenderMethod::intracy:
+        st.method = "intracy";
+        im = render_intracy(scene, opt, st);
+        break;
+    case RenderMethod::tray:
+        st.method = "tray";
+        im = render_tray(scene, opt, st);
+        break;
+    case RenderMethod::reference:
+        st.method = "reference";
+        im = render_reference(scene, opt, st);
+        break;
+    }
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return im;
+}
+
+Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats& st) {
+    const int W = opt.width > 0 ? opt.width : scene.camera.width;
+    const int H = opt.height > 0 ? opt.height : scene.camera.height;
+    const int L = opt.levels > 0 ? opt.levels : scene.levels;
+    const ProjectedScene ps = project_scene(scene, W, H);
+    st.patches = static_cast<long long>(ps.patches.size());
+    Image image(W, H, L);
+    // Whole-patch screen rectangles for the hull comparison.
+    struct Rect {
+        Interval a, b;
+        bool valid;
+    };
+    std::vector<Rect> rects;
+    for (const ProjectedPatch& pp : ps.patches) {
+        const IVec3 P = enclose_point(pp.forms, ParamBox{});
+        const bool valid = P[2].lo() > 0;
+        rects.push_back({valid ? P[0] / P[2] : Interval::entire(), valid ? P[1] / P[2] : Interval::entire(), valid});
+    }
+    std::vector<RenderStats> row_stats(H);
+    std::atomic<int> done{0};
+    auto row = [&](int y) {
+        RenderStats& rs = row_stats[y];
+        std::vector<RayPatchHit> hits;
+        const double b = ps.frame.screen_b(y + 0.5);
+        for (int x = 0; x < W; ++x) {
+            const double a = ps.frame.screen_a(x + 0.5);
+            const Ray ray = ProjectedScene::primary_ray(a, b);
+            ++rs.primary_rays;
+            ++rs.single_pixels;
+            double best_q = std::numeric_limits<double>::infinity();
+            int best = -1;
+            double bs = 0, bt = 0;
+            for (size_t k = 0; k < ps.patches.size(); ++k) {
+                if (rects[k].valid && (!rects[k].a.contains(a) || !rects[k].b.contains(b))) continue;
+                hits.clear();
+                RayPatchStats hs;
+                intersect(ps.patches[k].forms, ray, hits, RayPatchOptions{}, &hs);
+                ++rs.pixel_patch_solves;
+                rs.hs_iterations += hs.iterations;
+                auto h = nearest_hit(hits, 0.0);
+                if (!h || !(h->q.hi() > 0)) continue;
+                if (std::max(h->q.lo(), 0.0) < best_q) {
+                    best_q = std::max(h->q.lo(), 0.0);
+                    best = static_cast<int>(k);
+                    bs = h->box.s.mid();
+                    bt = h->box.t.mid();
+                }
+            }
+            std::array<double, 3> I;
+            if (best < 0) {
+                I = {ps.lighting.background.x, ps.lighting.background.y, ps.lighting.background.z};
+                ++rs.background_pixels;
+            } else {
+                Vec3 P, N;
+                surface_frame(ps.patches[best].patch, bs, bt, P, N);
+                I = shade<double>(ps.lighting, ps.lighting.materials[ps.patches[best].material], to_v3(P),
+                                  to_v3(N), Vec3{});
+            }
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = static_cast<std::uint16_t>(quantise(I[c], L));
+        }
+        const int d = ++done;
+        if (opt.progress && d % std::max(1, H / 100) == 0) opt.progress(static_cast<double>(d) / H);
+    };
+    if (opt.threads == 1) {
+        for (int y = 0; y < H; ++y) row(y);
+    } else {
+        tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
+        arena.execute([&] { tbb::parallel_for(0, H, row); });
+    }
+    for (const RenderStats& s : row_stats) st.merge(s);
+    st.subscreens_by_size[1] = static_cast<long long>(W) * H;
+    return image;
+}
+
+} // namespace seamless

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// Rendering a scene: INTRACY (paper section 7: screen subdivision with interval
+// enclosures of the intensity), TRAY (section 8: one ray per pixel against the
+// triangles of the crack-free tessellation through binary patch trees) and the
+// per-pixel exact reference (Hansen-Sengupta on the patches for every pixel).
+#pragma once
+
+#include <seamless/render/image.h>
+#include <seamless/render/scene.h>
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace seamless {
+
+enum class RenderMethod { intracy, tray, reference };
+
+struct RenderOptions {
+    RenderMethod method = RenderMethod::intracy;
+    int width = 0, height = 0; // 0: the scene camera's size
+    int levels = 0;            // 0: the scene's levels
+    int threads = 0;           // 0: every core; 1: sequential. The image is the same either way.
+    bool dither = true;        // step 9 with remark 2; false: split until one level per channel
+    int prepartition = 8;      // remark 4: the screen is prepartitioned into 8 x 8 parts
+    // Called with the fraction done (0..1), from any thread, at most a few hundred times.
+    std::function<void(double)> progress;
+};
+
+struct RenderStats {
+    std::string method;
+    int width = 0, height = 0, levels = 0, threads = 0;
+    double seconds = 0, precalc_seconds = 0;
+    // Paper's Table 3: pixel count of each sub-screen painted at once -> how many.
+    std::map<long long, long long> subscreens_by_size;
+    long long subscreens = 0;         // sub-screens taken from the stacks
+    long long single_pixels = 0;      // pixels solved as a one-pixel sub-screen
+    long long pixel_patch_solves = 0; // single-ray Hansen-Sengupta solves (pixel x patch)
+    long long hs_iterations = 0;      // Hansen-Sengupta steps in those solves
+    long long primary_rays = 0;       // single rays traced (pixels and corner rays)
+    long long background_pixels = 0;
+    long long patches = 0, triangles = 0;
+
+    double single_pixel_fraction() const {
+        return width * height ? static_cast<double>(single_pixels) / (static_cast<double>(width) * height) : 0;
+    }
+    double hs_iterations_per_patch() const {
+        return pixel_patch_solves ? static_cast<double>(hs_iterations) / pixel_patch_solves : 0;
+    }
+    double patches_per_pixel() const {
+        return single_pixels ? static_cast<double>(pixel_patch_solves) / single_pixels : 0;
+    }
+    void merge(const RenderStats& o);
+};
+
+Image render(const Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr);
+
+// The three methods behind render().
+Image render_intracy(const Scene& scene, const RenderOptions& options, RenderStats& stats);
+Image render_tray(const Scene& scene, const RenderOptions& options, RenderStats& stats);
+Image render_reference(const Scene& scene, const RenderOptions& options, RenderStats& stats);
+
+} // namespace seamless

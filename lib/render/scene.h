@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+// A scene to render: camera, lights, materials and B-spline objects (scene
+// format version 1, docs/formats.md). Object transforms are applied to the
+// control points when the scene is loaded (affine maps commute with B-spline
+// and NURBS evaluation), so the renderer sees world-space surfaces only.
+#pragma once
+
+#include <seamless/base/vec.h>
+#include <seamless/model/model.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace seamless {
+
+struct Camera {
+    Vec3 eye{0, -10, 3}, look_at{0, 0, 0}, up{0, 0, 1};
+    double fov_deg = 40; // vertical field of view
+    int width = 640, height = 480;
+};
+
+struct Light {
+    Vec3 position;
+    Vec3 color{1, 1, 1}; // RGB intensity; a light with colour 0 is off and costs nothing
+    bool on() const { return color.x > 0 || color.y > 0 || color.z > 0; }
+};
+
+struct Material {
+    std::string name;
+    Vec3 color{0.8, 0.8, 0.8};
+    double diffuse = 0.7, specular = 0.3, shininess = 20;
+    double reflect = 0, transmit = 0, ior = 1.5;
+};
+
+struct SceneObject {
+    std::string model_path;
+    int material = 0;  // index into Scene::materials
+    int first_surface; // this object's surfaces in Scene::model.surfaces
+    int surface_count;
+};
+
+struct Scene {
+    std::string source;
+    Camera camera;
+    int levels = 16; // representable intensities per channel; level k -> round(255 k / (levels-1))
+    Vec3 background{0, 0, 0};
+    double ambient = 0.1;
+    std::vector<Light> lights;
+    std::vector<Material> materials;
+    std::vector<SceneObject> objects;
+    int max_depth = 2;
+    // All objects' surfaces, transformed to world space, in object order.
+    Model model;
+    // material index of each surface of `model`
+    std::vector<int> surface_material;
+};
+
+struct SceneLimits {
+    int max_width = 16384, max_height = 16384;
+    int max_levels = 65536;
+    int max_depth = 16;
+    size_t max_objects = 100000, max_lights = 1000;
+};
+
+// Reads a scene file and the models it names (paths relative to the scene's
+// folder). Throws InputError naming the file and the field on any defect.
+Scene load_scene(const std::filesystem::path& path, const SceneLimits& limits = {});
+
+} // namespace seamless

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// seamless render SCENE -o OUT.png: INTRACY, TRAY or the per-pixel reference.
+#include "commands.h"
+#include "progress.h"
+
+#include <seamless/base/atomic_file.h>
+#include <seamless/base/error.h>
+#include <seamless/render/render.h>
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+#include <regex>
+
+namespace seamless::cli {
+
+nlohmann::json stats_json(const RenderStats& st) {
+    nlohmann::json sizes = nlohmann::json::object();
+    for (const auto& [size, n] : st.subscreens_by_size) sizes[std::to_string(size)] = n;
+    return {{"method", st.method},
+            {"width", st.width},
+            {"height", st.height},
+            {"levels", st.levels},
+            {"threads", st.threads},
+            {"seconds", st.seconds},
+            {"precalc_seconds", st.precalc_seconds},
+            {"patches", st.patches},
+            {"triangles", st.triangles},
+            {"subscreens", st.subscreens},
+            {"subscreens_by_size", sizes},
+            {"single_pixels", st.single_pixels},
+            {"single_pixel_fraction", st.single_pixel_fraction()},
+            {"hs_iterations_per_patch", st.hs_iterations_per_patch()},
+            {"patches_per_pixel", st.patches_per_pixel()},
+            {"primary_rays", st.primary_rays},
+            {"background_pixels", st.background_pixels}};
+}
+
+void add_render(CLI::App& app, Action& action) {
+    struct Args {
+        std::string scene, out, method = "intracy", size, stats;
+        int levels = 0, threads = 0;
+        bool no_dither = false;
+    };
+    auto a = std::make_shared<Args>();
+    auto* cmd = app.add_subcommand("render", "Ray trace a scene to PNG with INTRACY (interval "
+                                             "screen subdivision), TRAY (one ray per pixel) or "
+                                             "the per-pixel exact reference");
+    cmd->add_option("SCENE", a->scene, "scene file (JSON, docs/formats.md)")->required();
+    cmd->add_option("-o,--output", a->out, "output PNG")->required();
+    cmd->add_option("--method", a->method, "intracy | tray | reference")
+        ->check(CLI::IsMember({"intracy", "tray", "reference"}))
+        ->capture_default_str();
+    cmd->add_option("--size", a->size, "image size WxH (default: the scene camera's)");
+    cmd->add_option("--levels", a->levels, "intensity levels per channel (default: the scene's)")
+        ->check(CLI::Range(2, 65536));
+    cmd->add_option("--threads", a->threads, "worker threads (0: all cores; 1: sequential)")
+        ->check(CLI::Range(0, 1024))
+        ->capture_default_str();
+    cmd->add_flag("--no-dither", a->no_dither,
+                  "INTRACY splits until one level instead of dithering two (TRAY: no effect)");
+    cmd->add_option("--stats", a->stats, "write run statistics as JSON to this file");
+    cmd->callback([&action, a] {
+        action = [a] {
+            RenderOptions opt;
+            opt.method = a->method == "tray"        ? RenderMethod::tray
+                         : a->method == "reference" ? RenderMethod::reference
+                                                    : RenderMethod::intracy;
+            opt.levels = a->levels;
+            opt.threads = a->threads;
+            opt.dither = !a->no_dither;
+            if (!a->size.empty()) {
+                std::smatch m;
+                if (!std::regex_match(a->size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
+                    throw InputError("", "--size", "expected WxH, e.g. 640x480, got '" + a->size + "'");
+                opt.width = std::stoi(m[1]);
+                opt.height = std::stoi(m[2]);
+                if (opt.width < 1 || opt.height < 1 || opt.width > 16384 || opt.height > 16384)
+                    throw InputError("", "--size", "width and height must be in 1..16384");
+            }
+            const Scene scene = load_scene(a->scene);
+            ProgressBar bar("render");
+            opt.progress = [&bar](double f) { bar.update(f); };
+            RenderStats st;
+            const Image im = render(scene, opt, &st);
+            bar.finish();
+            write_png(a->out, im);
+            if (!a->stats.empty()) write_text_atomically(a->stats, stats_json(st).dump(2) + "\n");
+            std::cout << st.method << ": " << st.width << "x" << st.height << ", " << st.levels
+                      << " levels, " << st.seconds << " s, single-pixel fraction "
+                      << st.single_pixel_fraction() << ", " << st.primary_rays << " primary rays -> "
+                      << a->out << "\n";
+            return 0;
+        };
+    });
+}
+
+} // namespace seamless::cli
