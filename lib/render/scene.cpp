@@ -92,8 +92,8 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
     if (!root.is_object()) r.fail("", "expected a JSON object at the top level");
     Scene sc;
     sc.source = r.file;
-    if (r.integer_in(root, "version", -1, 0, 1000000) != 1)
-        r.fail("version", root.contains("version") ? "unsupported version (this reader knows 1)"
+    if (r.integer_in(root, "version", "", -1, 0, 1000000) != 1)
+        r.fail("version", root.contains("version") ? "unsupported version " + root["version"].dump() + " (this reader knows 1)"
                                                    : "missing");
 
     // Camera.

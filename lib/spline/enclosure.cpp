@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/spline/enclosure.h>
+
+#include <cassert>
+
+namespace seamless {
+namespace {
+
+constexpr int K = PowerForm::kMaxOrder;
+
+// Horner with interval coefficients.
+Interval horner1(const Interval* c, int n, Interval u) {
+    Interval r = c[n];
+    for (int i = n - 1; i >= 0; --i) r = r * u + c[i];
+    return r;
+}
+// Horner with real coefficients (exact doubles).
+Interval horner1(const double* c, int n, Interval u) {
+    Interval r(c[n]);
+    for (int i = n - 1; i >= 0; --i) r = r * u + Interval(c[i]);
+    return r;
+}
+
+// Range of a real polynomial over u: Horner intersected with the mean value
+// form (Proposition 1), or the end values where the derivative has one sign.
+Interval real_polynomial_range(const double* c, int n, Interval u) {
+    if (n == 0 || u.is_thin()) return horner1(c, n, u);
+    Interval dc[K]; // derivative coefficients i * c_i, outward rounded
+    for (int i = 1; i <= n; ++i) dc[i - 1] = Interval(double(i)) * Interval(c[i]);
+    const Interval slope = horner1(dc, n - 1, u);
+    if (slope.lo() >= 0 || slope.hi() <= 0) // monotone: range at the ends
+        return hull(horner1(c, n, Interval(u.lo())), horner1(c, n, Interval(u.hi())));
+    const double m = u.mid();
+    const Interval mvf = horner1(c, n, Interval(m)) + slope * (u - Interval(m));
+    return intersect(horner1(c, n, u), mvf);
+}
+
+// Parameter box inside [0,1]^2 (what the convex hull bounds need).
+[[maybe_unused]] bool in_unit_square(ParamBox b) {
+    return b.s.lo() >= 0 && b.s.hi() <= 1 && b.t.lo() >= 0 && b.t.hi() <= 1;
+}
+
+} // namespace
+
+Interval polynomial_range(const Interval* c, int n, Interval u) {
+    assert(n >= 0 && n < K);
+    if (u.is_empty()) return Interval::empty();
+    if (u.is_thin() || u.lo() < 0) return horner1(c, n, u);
+    // Lemma 2: for u >= 0 the range is [min sum lo(c_i) u^i, max sum hi(c_i) u^i].
+    double lo[K] = {}, hi[K] = {};
+    bool thin = true;
+    for (int i = 0; i <= n; ++i) {
+        lo[i] = c[i].lo();
+        hi[i] = c[i].hi();
+        thin = thin && lo[i] == hi[i];
+    }
+    const Interval rl = real_polynomial_range(lo, n, u);
+    if (thin) return rl;
+    const Interval rh = real_polynomial_range(hi, n, u);
+    return {rl.lo(), rh.hi()};
+}
+
+Interval horner(const PowerForm& f, int c, ParamBox box) {
+    Interval b[K], inner[K];
+    // Section 5: sum_i b_i(t) s^i if [t] is narrower, else sum_j c_j(s) t^j.
+    if (box.t.rad() <= box.s.rad()) {
+        for (int i = 0; i <= f.p; ++i) {
+            for (int j = 0; j <= f.q; ++j) inner[j] = f.at(c, i, j);
+            b[i] = polynomial_range(inner, f.q, box.t);
+        }
+        return polynomial_range(b, f.p, box.s);
+    }
+    for (int j = 0; j <= f.q; ++j) {
+        for (int i = 0; i <= f.p; ++i) inner[i] = f.at(c, i, j);
+        b[j] = polynomial_range(inner, f.p, box.s);
+    }
+    return polynomial_range(b, f.q, box.t);
+}
+
+Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, int c,
+                 ParamBox box) {
+    const Interval h = horner(f, c, box);
+    if (box.s.is_thin() && box.t.is_thin()) return h;
+    // Proposition 1: mean value form with the center at the midpoint.
+    const double sm = box.s.mid(), tm = box.t.mid();
+    const ParamBox center{Interval(sm), Interval(tm)};
+    const Interval mvf = horner(f, c, center) + horner(fs, c, box) * (box.s - Interval(sm)) +
+                         horner(ft, c, box) * (box.t - Interval(tm));
+    return intersect(h, mvf);
+}
+
+PatchForms patch_forms(const BezierPatch& b) {
+    PatchForms f;
+    f.X = power_form(b);
+    f.Xs = derivative_s(f.X);
+    f.Xt = derivative_t(f.X);
+    f.Xss = derivative_s(f.Xs);
+    f.Xst = derivative_t(f.Xs);
+    f.Xtt = derivative_t(f.Xt);
+    f.rational = b.rational;
+    double wlo = b.at(0, 0).w, whi = wlo;
+    IVec3 hull3 = IVec3::empty();
+    for (int i = 0; i <= b.p; ++i)
+        for (int j = 0; j <= b.q; ++j) {
+            const HPoint& h = b.at(i, j);
+            wlo = std::min(wlo, h.w);
+            whi = std::max(whi, h.w);
+            for (int k = 0; k < 3; ++k) {
+                const Interval x = h.w == 1 ? Interval(h[k]) : Interval(h[k]) / Interval(h.w);
+                hull3[k] = hull(hull3[k], x);
+            }
+        }
+    if (!f.rational && (wlo != 1 || whi != 1)) f.rational = true;
+    f.w_hull = {wlo, whi};
+    f.control_hull = hull3;
+    return f;
+}
+
+IVec3 cross(const IVec3& a, const IVec3& b) {
+    return IVec3{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
+IVec3 enclose_point(const PatchForms& f, ParamBox box) {
+    assert(in_unit_square(box));
+    IVec3 P;
+    if (!f.rational) {
+        for (int c = 0; c < 3; ++c)
+            P[c] = intersect(enclose(f.X, f.Xs, f.Xt, c, box), f.control_hull[c]);
+        return P;
+    }
+    // Convex hull property: W over the box lies in [min w_ij, max w_ij] > 0.
+    const Interval W = intersect(enclose(f.X, f.Xs, f.Xt, 3, box), f.w_hull);
+    const Interval Ws = horner(f.Xs, 3, box), Wt = horner(f.Xt, 3, box);
+    IVec3 naive;
+    for (int c = 0; c < 3; ++c) naive[c] = enclose(f.X, f.Xs, f.Xt, c, box) / W;
+    if (box.s.is_thin() && box.t.is_thin()) {
+        for (int c = 0; c < 3; ++c) P[c] = intersect(naive[c], f.control_hull[c]);
+        return P;
+    }
+    // Proposition 1 on P = X / W itself: the quotient of two enclosures is only
+    // first order, the mean value form with P_s = (X_s - P W_s) / W is second order.
+    const double sm = box.s.mid(), tm = box.t.mid();
+    const ParamBox center{Interval(sm), Interval(tm)};
+    const Interval Wm = intersect(horner(f.X, 3, center), f.w_hull);
+    for (int c = 0; c < 3; ++c) {
+        const Interval Pm = horner(f.X, c, center) / Wm;
+        const Interval Ps = (horner(f.Xs, c, box) - naive[c] * Ws) / W;
+        const Interval Pt = (horner(f.Xt, c, box) - naive[c] * Wt) / W;
+        const Interval mvf = Pm + Ps * (box.s - Interval(sm)) + Pt * (box.t - Interval(tm));
+        P[c] = intersect(intersect(naive[c], mvf), f.control_hull[c]);
+    }
+    return P;
+}
+
+PatchEnclosure enclose(const PatchForms& f, ParamBox box) {
+    PatchEnclosure e;
+    e.point = enclose_point(f, box);
+    IVec3 Xs, Xt;
+    for (int c = 0; c < 3; ++c) {
+        Xs[c] = enclose(f.Xs, f.Xss, f.Xst, c, box);
+        Xt[c] = enclose(f.Xt, f.Xst, f.Xtt, c, box);
+    }
+    if (!f.rational) {
+        e.ds = Xs;
+        e.dt = Xt;
+    } else {
+        // Quotient rule: P_s = (X_s W - X W_s) / W^2 = (X_s - P W_s) / W.
+        const Interval W = intersect(enclose(f.X, f.Xs, f.Xt, 3, box), f.w_hull);
+        const Interval Ws = enclose(f.Xs, f.Xss, f.Xst, 3, box);
+        const Interval Wt = enclose(f.Xt, f.Xst, f.Xtt, 3, box);
+        for (int c = 0; c < 3; ++c) {
+            e.ds[c] = (Xs[c] - e.point[c] * Ws) / W;
+            e.dt[c] = (Xt[c] - e.point[c] * Wt) / W;
+        }
+    }
+    e.normal = cross(e.ds, e.dt);
+    return e;
+}
+
+} // namespace seamless

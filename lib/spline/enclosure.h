@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// Range enclosures of a Bezier patch over a parameter box [s] x [t] in [0,1]^2
+// (paper section 5): the point P, the partial derivatives dP/ds, dP/dt and the
+// normal dP/ds x dP/dt. Each coordinate is the intersection of
+//  - Horner on the power form, ordered as sum_i b_i(t) s^i when [t] is the
+//    narrower interval and sum_j c_j(s) t^j otherwise, each one-dimensional
+//    polynomial with interval coefficients bounded by Lemma 2 (parameters >= 0);
+//  - the mean value form f(mid) + f_s(box)(s - mid s) + f_t(box)(t - mid t)
+//    (Proposition 1), whose overestimation is O(rad^2);
+//  - the hull of the control points (convex hull property, section 4).
+// Rational patches: the homogeneous X and W are enclosed, W is intersected with
+// [min w_ij, max w_ij] (keeps W > 0), P = X / W, derivatives by the quotient
+// rule P_s = (X_s - P W_s) / W. All with outward rounding: enclosures never miss.
+#pragma once
+
+#include <seamless/interval/interval.h>
+#include <seamless/interval/interval_matrix.h>
+#include <seamless/spline/bezier_patch.h>
+#include <seamless/spline/power_form.h>
+
+namespace seamless {
+
+// A box of local parameters; a subset of [0,1]^2 for the enclosures below.
+struct ParamBox {
+    Interval s{0.0, 1.0}, t{0.0, 1.0};
+};
+
+using IVec3 = IVec<3>;
+
+// Everything the enclosures need, computed once per patch (about 40 KB).
+struct PatchForms {
+    PowerForm X, Xs, Xt, Xss, Xst, Xtt; // homogeneous coordinates and their derivatives
+    bool rational = false;
+    Interval w_hull{1.0}; // [min w_ij, max w_ij]: W over [0,1]^2 (convex hull property)
+    IVec3 control_hull;   // hull of the projected control points, outward rounded
+};
+PatchForms patch_forms(const BezierPatch& b);
+
+struct PatchEnclosure {
+    IVec3 point, ds, dt, normal; // over the box; derivatives in local (s, t)
+};
+
+// Range of a one-dimensional polynomial sum_{i<=n} c_i u^i with interval
+// coefficients over u: Lemma 2 when u >= 0 (the lower and upper coefficient
+// polynomials bounded separately, each by Horner, mean value form or, where
+// monotone, its end values), interval Horner otherwise.
+Interval polynomial_range(const Interval* c, int n, Interval u);
+// Coordinate c of a power form over a box by nested Horner (section 5 ordering).
+Interval horner(const PowerForm& f, int c, ParamBox box);
+// Horner intersected with the mean value form; fs, ft: the power forms of f_s, f_t.
+Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, int c, ParamBox box);
+
+IVec3 enclose_point(const PatchForms& f, ParamBox box);
+PatchEnclosure enclose(const PatchForms& f, ParamBox box);
+
+// Cross product of interval vectors (the normal of section 5).
+IVec3 cross(const IVec3& a, const IVec3& b);
+
+} // namespace seamless

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/spline/power_form.h>
+
+#include <cassert>
+
+namespace seamless {
+namespace {
+
+// Bernstein-to-power matrix M[k][i] = C(n,k) C(k,i) (-1)^(k-i) for i <= k:
+// B_i^n(s) = sum_k M[k][i] s^k. The entries are integers below 2^53: exact.
+void bernstein_to_power(int n, double M[][PowerForm::kMaxOrder]) {
+    double C[PowerForm::kMaxOrder][PowerForm::kMaxOrder] = {};
+    for (int a = 0; a <= n; ++a) {
+        C[a][0] = C[a][a] = 1;
+        for (int b = 1; b < a; ++b) C[a][b] = C[a - 1][b - 1] + C[a - 1][b];
+    }
+    for (int k = 0; k <= n; ++k)
+        for (int i = 0; i <= n; ++i)
+            M[k][i] = i <= k ? C[n][k] * C[k][i] * (((k - i) % 2) ? -1.0 : 1.0) : 0.0;
+}
+
+} // namespace
+
+PowerForm power_form(const BezierPatch& b) {
+    assert(b.p >= 0 && b.p <= kMaxDegree && b.q >= 0 && b.q <= kMaxDegree);
+    constexpr int K = PowerForm::kMaxOrder;
+    PowerForm f;
+    f.p = b.p;
+    f.q = b.q;
+    f.dim = 4;
+    double Mu[K][K], Mv[K][K];
+    bernstein_to_power(b.p, Mu);
+    bernstein_to_power(b.q, Mv);
+    for (int c = 0; c < 4; ++c) {
+        // Rows first: r(i, l) = sum_j Mv[l][j] cp(i, j), then a(k, l) = sum_i Mu[k][i] r(i, l).
+        Interval r[K][K];
+        for (int i = 0; i <= b.p; ++i)
+            for (int l = 0; l <= b.q; ++l) {
+                Interval s(0.0);
+                for (int j = 0; j <= l; ++j) s += Interval(Mv[l][j]) * Interval(b.at(i, j)[c]);
+                r[i][l] = s;
+            }
+        for (int k = 0; k <= b.p; ++k)
+            for (int l = 0; l <= b.q; ++l) {
+                Interval s(0.0);
+                for (int i = 0; i <= k; ++i) s += Interval(Mu[k][i]) * r[i][l];
+                f.at(c, k, l) = s;
+            }
+    }
+    return f;
+}
+
+PowerForm derivative_s(const PowerForm& f) {
+    PowerForm d;
+    d.dim = f.dim;
+    d.q = f.q;
+    d.p = f.p > 0 ? f.p - 1 : 0;
+    for (int c = 0; c < f.dim; ++c)
+        for (int i = 0; i <= d.p; ++i)
+            for (int j = 0; j <= d.q; ++j)
+                d.at(c, i, j) =
+                    f.p > 0 ? Interval(double(i + 1)) * f.at(c, i + 1, j) : Interval(0.0);
+    return d;
+}
+
+PowerForm derivative_t(const PowerForm& f) {
+    PowerForm d;
+    d.dim = f.dim;
+    d.p = f.p;
+    d.q = f.q > 0 ? f.q - 1 : 0;
+    for (int c = 0; c < f.dim; ++c)
+        for (int i = 0; i <= d.p; ++i)
+            for (int j = 0; j <= d.q; ++j)
+                d.at(c, i, j) =
+                    f.q > 0 ? Interval(double(j + 1)) * f.at(c, i, j + 1) : Interval(0.0);
+    return d;
+}
+
+PowerForm combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows) {
+    assert(rows >= 1 && rows <= PowerForm::kMaxDim);
+    PowerForm g;
+    g.p = f.p;
+    g.q = f.q;
+    g.dim = rows;
+    for (int k = 0; k < rows; ++k)
+        for (int i = 0; i <= f.p; ++i)
+            for (int j = 0; j <= f.q; ++j) {
+                Interval s(0.0);
+                for (int c = 0; c < f.dim; ++c) s += m[k][c] * f.at(c, i, j);
+                g.at(k, i, j) = s;
+            }
+    return g;
+}
+
+Interval evaluate(const PowerForm& f, int c, double s, double t) {
+    const Interval S(s), T(t);
+    Interval r(0.0);
+    for (int i = f.p; i >= 0; --i) {
+        Interval b(0.0);
+        for (int j = f.q; j >= 0; --j) b = b * T + f.at(c, i, j);
+        r = r * S + b;
+    }
+    return r;
+}
+
+double evaluate_mid(const PowerForm& f, int c, double s, double t) {
+    double r = 0;
+    for (int i = f.p; i >= 0; --i) {
+        double b = 0;
+        for (int j = f.q; j >= 0; --j) b = b * t + f.at(c, i, j).mid();
+        r = r * s + b;
+    }
+    return r;
+}
+
+} // namespace seamless

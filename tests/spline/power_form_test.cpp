@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/spline/power_form.h>
+
+#include "spline/patch_samples.h"
+#include "test_util.h"
+
+#include <seamless/model/model.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace seamless;
+
+namespace {
+
+// Checks the power form (and its derivatives) of b at random points.
+void check_patch(const BezierPatch& b, std::mt19937_64& rng) {
+    const PowerForm f = power_form(b), fs = derivative_s(f), ft = derivative_t(f);
+    REQUIRE(f.p == b.p);
+    REQUIRE(f.q == b.q);
+    std::uniform_real_distribution<double> u(0, 1);
+    // Rounding allowance: the power basis loses about 2 bits per degree
+    // (the coefficients C(n,k) C(k,i) cancel), scaled by the control points.
+    double scale = 0, wmin = 1e300;
+    for (int i = 0; i <= b.p; ++i)
+        for (int j = 0; j <= b.q; ++j) {
+            for (int c = 0; c < 4; ++c) scale = std::max(scale, std::abs(b.at(i, j)[c]));
+            wmin = std::min(wmin, b.at(i, j).w);
+        }
+    const double tol = 1e-15 * (std::pow(4.0, b.p + b.q) + 8) * scale / wmin;
+    for (int n = 0; n < 200; ++n) {
+        double s = n == 0 ? 0 : n == 1 ? 1 : u(rng), t = n == 0 ? 1 : n == 1 ? 0 : u(rng);
+        const HPoint h = evaluate_homogeneous(b, s, t);
+        const test::RefPoint ref = test::reference(b, s, t);
+        for (int c = 0; c < 4; ++c) {
+            // Agrees with de Casteljau within rounding.
+            const double pm = evaluate_mid(f, c, s, t);
+            CHECK(std::abs(pm - h[c]) <= tol);
+        }
+        for (int c = 0; c < 3; ++c) {
+            // The interval power form contains the exact point: X_c = P_c W.
+            const Interval Xc = evaluate(f, c, s, t), Wc = evaluate(f, 3, s, t);
+            const Interval Pc = Xc / Wc;
+            const long double slack = 1e-17L * (1 + std::fabs(ref.point[c]));
+            REQUIRE(Pc.lo() <= ref.point[c] + slack);
+            REQUIRE(Pc.hi() >= ref.point[c] - slack);
+            // Derivative forms: P_s = (X_s - P W_s) / W.
+            const Interval Ps = (evaluate(fs, c, s, t) - Pc * evaluate(fs, 3, s, t)) / Wc;
+            const Interval Pt = (evaluate(ft, c, s, t) - Pc * evaluate(ft, 3, s, t)) / Wc;
+            const long double ss = 1e-16L * (1 + std::fabs(ref.ds[c]));
+            const long double st = 1e-16L * (1 + std::fabs(ref.dt[c]));
+            REQUIRE(Ps.lo() <= ref.ds[c] + ss);
+            REQUIRE(Ps.hi() >= ref.ds[c] - ss);
+            REQUIRE(Pt.lo() <= ref.dt[c] + st);
+            REQUIRE(Pt.hi() >= ref.dt[c] - st);
+            // The enclosure is tight (within the rounding allowance).
+            INFO("p " << b.p << " q " << b.q << " width " << Pc.width());
+            REQUIRE(Pc.width() < tol);
+        }
+    }
+}
+
+} // namespace
+
+TEST_CASE("power form of random patches agrees with de Casteljau", "[power_form]") {
+    std::mt19937_64 rng(21);
+    for (int p = 0; p <= 6; ++p)
+        for (int q = 0; q <= 6; ++q)
+            for (bool rational : {false, true})
+                check_patch(test::random_patch(rng, p, q, rational), rng);
+}
+
+TEST_CASE("power form of the teapot patches", "[power_form]") {
+    std::mt19937_64 rng(22);
+    const auto patches = bezier_patches(load_model(test::model_path("teapot.json")));
+    REQUIRE(patches.size() == 32);
+    for (const auto& b : patches) check_patch(b, rng);
+}
+
+TEST_CASE("power form of a degree 9 patch", "[power_form]") {
+    std::mt19937_64 rng(23);
+    check_patch(test::random_patch(rng, 9, 9, false), rng);
+    check_patch(test::random_patch(rng, 9, 2, true), rng);
+}
+
+TEST_CASE("derivative forms lower the degree; combine is linear", "[power_form]") {
+    std::mt19937_64 rng(24);
+    const BezierPatch b = test::random_patch(rng, 3, 2, true);
+    const PowerForm f = power_form(b);
+    CHECK(derivative_s(f).p == 2);
+    CHECK(derivative_t(f).q == 1);
+    const PowerForm c = derivative_s(power_form(test::random_patch(rng, 0, 2, false)));
+    CHECK(c.at(0, 0, 0) == Interval(0.0));
+    Interval m[2][PowerForm::kMaxDim] = {{2.0, 0.0, 0.0, -1.0}, {0.0, 1.0, 1.0, 0.0}};
+    const PowerForm g = combine(f, m, 2);
+    CHECK(g.dim == 2);
+    for (double s : {0.0, 0.3, 1.0}) {
+        const Interval g0 = evaluate(g, 0, s, 0.7);
+        const Interval ref = Interval(2.0) * evaluate(f, 0, s, 0.7) - evaluate(f, 3, s, 0.7);
+        CHECK(g0.overlaps(ref));
+        CHECK(g0.width() < 1e-10);
+    }
+}
