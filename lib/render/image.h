@@ -12,9 +12,15 @@ struct Image {
     int width = 0, height = 0, levels = 16;
     // level per channel, row-major, 3 per pixel, row 0 at the top
     std::vector<std::uint16_t> level;
+    // per pixel: 1 where a surface was painted, 0 where background
+    std::vector<std::uint8_t> surface;
 
     Image() = default;
-    Image(int w, int h, int lv) : width(w), height(h), levels(lv), level(static_cast<size_t>(w) * h * 3, 0) {}
+    Image(int w, int h, int lv)
+        : width(w), height(h), levels(lv), level(static_cast<size_t>(w) * h * 3, 0),
+          surface(static_cast<size_t>(w) * h, 0) {}
+    std::uint8_t& surface_at(int x, int y) { return surface[static_cast<size_t>(y) * width + x]; }
+    std::uint8_t surface_at(int x, int y) const { return surface[static_cast<size_t>(y) * width + x]; }
     std::uint16_t& at(int x, int y, int c) { return level[(static_cast<size_t>(y) * width + x) * 3 + c]; }
     std::uint16_t at(int x, int y, int c) const { return level[(static_cast<size_t>(y) * width + x) * 3 + c]; }
 };

@@ -314,6 +314,7 @@ class PartRenderer {
                 const auto I = shade_hit(ps_, h);
                 for (int c = 0; c < 3; ++c)
                     image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
+                image_.surface_at(B.x0, B.y0) = 1;
             }
             count(B, st);
             return;
@@ -389,6 +390,7 @@ class PartRenderer {
                 const auto I = shade_hit(ps_, h);
                 for (int c = 0; c < 3; ++c)
                     image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
+                image_.surface_at(B.x0, B.y0) = 1;
             }
             count(B, st);
             return true;
@@ -438,8 +440,10 @@ class PartRenderer {
         }
         if (!two) {
             for (int y = B.y0; y <= B.y1; ++y)
-                for (int x = B.x0; x <= B.x1; ++x)
+                for (int x = B.x0; x <= B.x1; ++x) {
                     for (int c = 0; c < 3; ++c) image_.at(x, y, c) = static_cast<std::uint16_t>(lo[c]);
+                    image_.surface_at(x, y) = 1;
+                }
             count(B, st);
             return true;
         }
@@ -461,6 +465,7 @@ class PartRenderer {
             const double fy = (y - B.y0) / wy;
             for (int x = B.x0; x <= B.x1; ++x) {
                 const double fx = (x - B.x0) / wx;
+                image_.surface_at(x, y) = 1;
                 for (int c = 0; c < 3; ++c) {
                     const double v = (1 - fy) * ((1 - fx) * corner[0][c] + fx * corner[1][c]) +
                                      fy * ((1 - fx) * corner[2][c] + fx * corner[3][c]);

@@ -109,6 +109,7 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
                                   to_v3(N), Vec3{});
             }
             for (int c = 0; c < 3; ++c) image.at(x, y, c) = static_cast<std::uint16_t>(quantise(I[c], L));
+            image.surface_at(x, y) = best >= 0;
         }
         const int d = ++done;
         if (opt.progress && d % std::max(1, H / 100) == 0) opt.progress(static_cast<double>(d) / H);
