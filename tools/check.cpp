@@ -5,6 +5,8 @@
 #include <seamless/mesh/check.h>
 #include <seamless/mesh/mesh_io.h>
 
+#include <nlohmann/json.hpp>
+
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -33,19 +35,19 @@ void print_report(std::ostream& os, const CheckReport& r) {
     if (r.welded)
         os << "welded " << r.welded_vertices << " of " << r.input_vertices
            << " vertices with bit-identical positions\n";
-    else os << "no welding (--no-weld): " << r.input_vertices << " vertices as indexed\n";
+    else
+        os << "no welding (--no-weld): " << r.input_vertices << " vertices as indexed\n";
     os << "vertices " << r.vertices << ", triangles " << r.triangles << ", edges " << r.edges
        << ", components " << r.components.size();
     if (r.unreferenced_vertices) os << ", unreferenced vertices " << r.unreferenced_vertices;
     os << "\n";
     os << "d_max " << r.d_max << ", gap tolerance " << r.gap << "\n";
     os << "border edges " << r.border_edges << " in " << r.border_loops.size() << " loop"
-       << (r.border_loops.size() == 1 ? "" : "s") << ": " << (r.closed ? "closed" : "open")
-       << "\n";
+       << (r.border_loops.size() == 1 ? "" : "s") << ": " << (r.closed ? "closed" : "open") << "\n";
     for (size_t i = 0; i < r.border_loops.size() && i < 10; ++i) {
         const auto& l = r.border_loops[i];
-        os << "  loop of " << l.edges << " edges, length " << l.length << ", at "
-           << point(l.start) << (l.closed ? "" : " (not closed)") << "\n";
+        os << "  loop of " << l.edges << " edges, length " << l.length << ", at " << point(l.start)
+           << (l.closed ? "" : " (not closed)") << "\n";
     }
     if (r.border_loops.size() > 10) os << "  ... " << r.border_loops.size() - 10 << " more\n";
     print_list(os, "non-manifold edges", r.non_manifold_edges, [](const EdgeDefect& e) {
@@ -121,7 +123,10 @@ void add_check(CLI::App& app, Action& action) {
             const CheckReport report = check_mesh(mesh, *opts);
             const bool passed = check_passed(report, *opts);
             if (*as_json) {
-                std::cout << to_json(report) << "\n";
+                auto j = nlohmann::json::parse(to_json(report));
+                j["file"] = *mesh_path;
+                j["passed"] = passed;
+                std::cout << j.dump(2) << "\n";
             } else {
                 std::cout << *mesh_path << "\n";
                 print_report(std::cout, report);

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// glTF 2.0 (.gltf with an embedded base64 buffer, .glb) through tinygltf; used by
+// mesh_io.cpp, which picks the format from the extension.
+#pragma once
+
+#include <seamless/tessellate/triangle_mesh.h>
+
+#include <filesystem>
+
+namespace seamless {
+
+// One glTF mesh (and node) per source surface, named after it, with one indexed
+// triangle primitive: POSITION (float32, min/max), NORMAL (unit float32, from
+// corner_normals) and TEXCOORD_0 (float32, from corner_uvs) when present. A vertex
+// is split where its corners differ in normal or uv. Writes `path` directly (the
+// caller provides atomicity); throws InputError naming `name` on failure.
+void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, bool binary,
+                const std::string& name);
+
+// Every triangle primitive (modes 4, 5, 6) of every mesh, as indexed, no welding;
+// triangle_surface is the glTF mesh index, surface_names the mesh names; corner
+// normals and uvs are read when every primitive has them.
+TriangleMesh read_gltf(const std::filesystem::path& path);
+
+} // namespace seamless

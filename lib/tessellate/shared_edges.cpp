@@ -1,0 +1,375 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/tessellate/shared_edges.h>
+
+#include <algorithm>
+#include <cassert>
+#include <numeric>
+
+namespace seamless {
+namespace {
+
+constexpr int kEdgeCorners[4][2] = {{0, 1}, {1, 2}, {3, 2}, {0, 3}};
+
+int edge_order(const BezierPatch& b, int e) {
+    return (e == 0 || e == 2) ? b.p : b.q;
+}
+
+// k-th control point of edge e, in increasing parameter.
+HPoint edge_control(const BezierPatch& b, int e, int k) {
+    switch (e) {
+    case 0:
+        return b.at(k, 0);
+    case 1:
+        return b.at(b.p, k);
+    case 2:
+        return b.at(k, b.q);
+    default:
+        return b.at(0, k);
+    }
+}
+
+// Grid point at coordinate x along edge e (increasing parameter).
+void edge_grid_point(int e, int x, int& s, int& t) {
+    switch (e) {
+    case 0:
+        s = x, t = 0;
+        break;
+    case 1:
+        s = kParamOne, t = x;
+        break;
+    case 2:
+        s = x, t = kParamOne;
+        break;
+    default:
+        s = 0, t = x;
+        break;
+    }
+}
+
+struct UnionFind {
+    std::vector<int> parent;
+    explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+    int find(int x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    }
+    // The smaller index becomes the root: representatives are deterministic.
+    void unite(int a, int b) {
+        a = find(a), b = find(b);
+        if (a == b) return;
+        if (a < b)
+            parent[b] = a;
+        else
+            parent[a] = b;
+    }
+};
+
+// Largest deviation between two edges' control polygons (points and weights),
+// forwards or with the second reversed; infinity when the orders differ.
+double polygon_deviation(const BezierPatch& A, int ea, const BezierPatch& B, int eb, bool reverse) {
+    const int n = edge_order(A, ea);
+    if (edge_order(B, eb) != n) return std::numeric_limits<double>::infinity();
+    double dev = 0;
+    for (int k = 0; k <= n; ++k) {
+        const HPoint a = edge_control(A, ea, k), b = edge_control(B, eb, reverse ? n - k : k);
+        dev = std::max({dev, distance(a.point(), b.point()), std::abs(a.w - b.w)});
+    }
+    return dev;
+}
+
+constexpr std::uint64_t line_key(int patch, int dir, int c) {
+    return (static_cast<std::uint64_t>(patch) << 32) | (static_cast<std::uint64_t>(dir) << 31) |
+           static_cast<std::uint64_t>(c);
+}
+
+// Side k of rect on its line; creates interior lines in `lines` when given.
+SideOnLine locate_side(const BoundaryMatch& m, int patch, const ParamRect& r, int k,
+                       const std::unordered_map<std::uint64_t, int>* lines,
+                       std::unordered_map<std::uint64_t, int>* create, int boundary_lines) {
+    SideOnLine out;
+    int edge = -1, dir = 0, c = 0, tag = 0;
+    switch (k) {
+    case 0:
+        out.a = r.s0, out.b = r.s1, dir = 0, c = r.t0, tag = 1, edge = r.t0 == 0 ? 0 : -1;
+        break;
+    case 1:
+        out.a = r.t0, out.b = r.t1, dir = 1, c = r.s1, tag = 0, edge = r.s1 == kParamOne ? 1 : -1;
+        break;
+    case 2:
+        out.a = r.s0, out.b = r.s1, dir = 0, c = r.t1, tag = 0, edge = r.t1 == kParamOne ? 2 : -1;
+        break;
+    default:
+        out.a = r.t0, out.b = r.t1, dir = 1, c = r.s0, tag = 1, edge = r.s0 == 0 ? 3 : -1;
+        break;
+    }
+    if (edge >= 0) {
+        const int pe = 4 * patch + edge;
+        if (m.collapsed[pe]) {
+            out.line = -1;
+            return out;
+        }
+        out.line = m.edge_group[pe];
+        out.side = pe;
+        out.reversed = m.edge_reversed[pe] != 0;
+        if (out.reversed) {
+            const int a = kParamOne - out.b, b = kParamOne - out.a;
+            out.a = a, out.b = b;
+        }
+        return out;
+    }
+    const std::uint64_t key = line_key(patch, dir, c);
+    out.side = tag;
+    if (create) {
+        auto [it, fresh] =
+            create->try_emplace(key, boundary_lines + static_cast<int>(create->size()));
+        out.line = it->second;
+    } else {
+        auto it = lines->find(key);
+        assert(it != lines->end());
+        out.line = it->second;
+    }
+    return out;
+}
+
+// The segment of `line` holding x strictly inside, or nullptr. Sides of one
+// tag are disjoint, so each tag's run is searched by bisection.
+const LineSegment* containing(const EdgeRegistry& reg, int line, int x) {
+    const LineSegment* begin = reg.segments.data() + reg.offsets[line];
+    const LineSegment* end = reg.segments.data() + reg.offsets[line + 1];
+    while (begin != end) {
+        const int tag = begin->side;
+        const LineSegment* run_end =
+            std::partition_point(begin, end, [tag](const LineSegment& s) { return s.side == tag; });
+        const LineSegment* it =
+            std::partition_point(begin, run_end, [x](const LineSegment& s) { return s.b <= x; });
+        if (it != run_end && it->a < x) return it;
+        begin = run_end;
+    }
+    return nullptr;
+}
+
+// Interior line (patch, direction, coordinate), -1 when no subpatch side lies on it.
+int find_interior_line(const EdgeRegistry& reg, int patch, int dir, int c) {
+    auto it = reg.interior_line.find(line_key(patch, dir, c));
+    return it == reg.interior_line.end() ? -1 : it->second;
+}
+
+} // namespace
+
+BoundaryMatch match_boundaries(const std::vector<BezierPatch>& patches, double tol) {
+    const int np = static_cast<int>(patches.size());
+    BoundaryMatch m;
+    m.edge_group.assign(4 * np, -1);
+    m.edge_reversed.assign(4 * np, 0);
+    m.collapsed.assign(4 * np, 0);
+
+    // Collapsed edges (poles) and the sweep keys of the others.
+    std::vector<int> order;
+    std::vector<double> key(4 * np, 0);
+    for (int pe = 0; pe < 4 * np; ++pe) {
+        const BezierPatch& b = patches[pe / 4];
+        const int e = pe % 4, n = edge_order(b, e);
+        const Vec3 first = edge_control(b, e, 0).point();
+        bool collapsed = true;
+        for (int k = 1; k <= n && collapsed; ++k)
+            collapsed = distance(edge_control(b, e, k).point(), first) <= tol;
+        m.collapsed[pe] = collapsed;
+        if (collapsed) {
+            ++m.collapsed_edges;
+            continue;
+        }
+        key[pe] = std::min(first.x, edge_control(b, e, n).point().x);
+        order.push_back(pe);
+    }
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
+    UnionFind edges(4 * np);
+    for (size_t i = 0; i < order.size(); ++i)
+        for (size_t j = i + 1; j < order.size() && key[order[j]] - key[order[i]] <= tol; ++j) {
+            const int a = order[i], b = order[j];
+            const BezierPatch &A = patches[a / 4], &B = patches[b / 4];
+            if (polygon_deviation(A, a % 4, B, b % 4, false) <= tol ||
+                polygon_deviation(A, a % 4, B, b % 4, true) <= tol)
+                edges.unite(a, b);
+        }
+    std::vector<int> group_of_root(4 * np, -1);
+    for (int pe = 0; pe < 4 * np; ++pe) {
+        if (m.collapsed[pe]) continue;
+        const int root = edges.find(pe);
+        if (group_of_root[root] < 0) {
+            group_of_root[root] = static_cast<int>(m.group_ref.size());
+            m.group_ref.push_back(pe); // the smallest member: the reference
+            m.group_size.push_back(0);
+        }
+        const int g = group_of_root[root];
+        m.edge_group[pe] = g;
+        ++m.group_size[g];
+        const int ref = m.group_ref[g];
+        if (ref != pe) {
+            const BezierPatch &A = patches[ref / 4], &B = patches[pe / 4];
+            m.edge_reversed[pe] = polygon_deviation(A, ref % 4, B, pe % 4, true) <
+                                  polygon_deviation(A, ref % 4, B, pe % 4, false);
+        }
+    }
+    for (int n : m.group_size)
+        if (n >= 2) ++m.shared_edges;
+
+    // Weld corners by position (sweep in x).
+    std::vector<Vec3> corners(4 * np);
+    for (int c = 0; c < 4 * np; ++c) corners[c] = patches[c / 4].corner(c % 4);
+    std::vector<int> by_x(4 * np);
+    std::iota(by_x.begin(), by_x.end(), 0);
+    std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return corners[a].x < corners[b].x; });
+    UnionFind welded(4 * np);
+    for (size_t i = 0; i < by_x.size(); ++i)
+        for (size_t j = i + 1; j < by_x.size() && corners[by_x[j]].x - corners[by_x[i]].x <= tol;
+             ++j)
+            if (distance(corners[by_x[i]], corners[by_x[j]]) <= tol) welded.unite(by_x[i], by_x[j]);
+    m.corner_root.resize(4 * np);
+    for (int c = 0; c < 4 * np; ++c) m.corner_root[c] = welded.find(c);
+    return m;
+}
+
+SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int patch,
+                        const ParamRect& r, int k) {
+    return locate_side(m, patch, r, k, &reg.interior_line, nullptr, reg.boundary_lines);
+}
+
+EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches) {
+    EdgeRegistry reg;
+    reg.boundary_lines = static_cast<int>(m.group_ref.size());
+    std::vector<std::pair<int, LineSegment>> all;
+    all.reserve(4 * subpatches.size());
+    for (const Subpatch& sp : subpatches)
+        for (int k = 0; k < 4; ++k) {
+            const SideOnLine s = locate_side(m, sp.patch, sp.rect, k, nullptr, &reg.interior_line,
+                                             reg.boundary_lines);
+            if (s.line >= 0) all.push_back({s.line, LineSegment{s.a, s.b, s.side}});
+        }
+    const int lines = reg.boundary_lines + static_cast<int>(reg.interior_line.size());
+    reg.offsets.assign(lines + 1, 0);
+    for (const auto& [line, seg] : all) ++reg.offsets[line + 1];
+    for (int l = 0; l < lines; ++l) reg.offsets[l + 1] += reg.offsets[l];
+    reg.segments.resize(all.size());
+    std::vector<int> fill(reg.offsets.begin(), reg.offsets.end() - 1);
+    for (const auto& [line, seg] : all) reg.segments[fill[line]++] = seg;
+    for (int l = 0; l < lines; ++l)
+        std::sort(reg.segments.begin() + reg.offsets[l], reg.segments.begin() + reg.offsets[l + 1],
+                  [](const LineSegment& x, const LineSegment& y) {
+                      return x.side != y.side ? x.side < y.side : x.a < y.a;
+                  });
+    return reg;
+}
+
+void points_inside(const EdgeRegistry& reg, const SideOnLine& side, std::vector<int>& out) {
+    if (side.line < 0) return;
+    const size_t first = out.size();
+    const LineSegment* begin = reg.segments.data() + reg.offsets[side.line];
+    const LineSegment* end = reg.segments.data() + reg.offsets[side.line + 1];
+    while (begin != end) {
+        const int tag = begin->side;
+        const LineSegment* run_end =
+            std::partition_point(begin, end, [tag](const LineSegment& s) { return s.side == tag; });
+        if (tag != side.side) {
+            const int a = side.a, b = side.b;
+            for (const LineSegment* it = std::partition_point(
+                     begin, run_end, [a](const LineSegment& s) { return s.b <= a; });
+                 it != run_end && it->a < b; ++it) {
+                if (it->a > a) out.push_back(it->a);
+                if (it->b < b) out.push_back(it->b);
+            }
+        }
+        begin = run_end;
+    }
+    std::sort(out.begin() + first, out.end());
+    out.erase(std::unique(out.begin() + first, out.end()), out.end());
+}
+
+VertexKey vertex_key(const BoundaryMatch& m, int patch, int s, int t) {
+    const int N = kParamOne;
+    int corner = -1;
+    if (s == 0 && t == 0)
+        corner = 0;
+    else if (s == N && t == 0)
+        corner = 1;
+    else if (s == N && t == N)
+        corner = 2;
+    else if (s == 0 && t == N)
+        corner = 3;
+    if (corner >= 0) return {0, m.corner_root[4 * patch + corner], 0, 0};
+    int e = -1, x = 0;
+    if (t == 0)
+        e = 0, x = s;
+    else if (s == N)
+        e = 1, x = t;
+    else if (t == N)
+        e = 2, x = s;
+    else if (s == 0)
+        e = 3, x = t;
+    if (e < 0) return {2, patch, s, t};
+    const int pe = 4 * patch + e;
+    if (m.collapsed[pe]) return {0, m.corner_root[4 * patch + kEdgeCorners[e][0]], 0, 0};
+    return {1, m.edge_group[pe], m.edge_reversed[pe] ? N - x : x, 0};
+}
+
+int vertex_at(VertexRegistry& vr, int patch, int s, int t) {
+    const VertexKey key = vertex_key(*vr.match, patch, s, t);
+    auto [it, fresh] = vr.index.try_emplace(key, static_cast<int>(vr.positions.size()));
+    const int id = it->second;
+    if (!fresh) {
+        assert(vr.placed[id] && "crack-free placement must not be cyclic");
+        return id;
+    }
+    vr.positions.emplace_back();
+    vr.placed.push_back(0);
+    const std::vector<BezierPatch>& patches = *vr.patches;
+    Vec3 p;
+    if (key.kind == 0) {
+        p = patches[key.id / 4].corner(key.id % 4);
+    } else if (key.kind == 1) {
+        // A point of global edge g: on the straight segment of the subpatch
+        // side holding it (Fig. 3, Q0 = (Q1 + Q2) / 2 recursively), else the
+        // curve point of the reference patch.
+        const int ref = vr.match->group_ref[key.id];
+        const LineSegment* seg = vr.crack_free ? containing(*vr.edges, key.id, key.a) : nullptr;
+        int gs = 0, gt = 0;
+        if (seg) {
+            edge_grid_point(ref % 4, seg->a, gs, gt);
+            const int ia = vertex_at(vr, ref / 4, gs, gt);
+            edge_grid_point(ref % 4, seg->b, gs, gt);
+            const int ib = vertex_at(vr, ref / 4, gs, gt);
+            p = lerp(vr.positions[ia], vr.positions[ib],
+                     static_cast<double>(key.a - seg->a) / (seg->b - seg->a));
+        } else {
+            edge_grid_point(ref % 4, key.a, gs, gt);
+            p = evaluate(patches[ref / 4], param_of(gs), param_of(gt)).point;
+        }
+    } else {
+        const LineSegment* seg = nullptr;
+        bool along_s = true;
+        if (vr.crack_free) {
+            // At most one subpatch side holds a grid point strictly inside.
+            const int h = find_interior_line(*vr.edges, patch, 0, t);
+            if (h >= 0) seg = containing(*vr.edges, h, s);
+            if (!seg) {
+                const int v = find_interior_line(*vr.edges, patch, 1, s);
+                if (v >= 0) seg = containing(*vr.edges, v, t), along_s = false;
+            }
+        }
+        if (seg) {
+            const int ia =
+                along_s ? vertex_at(vr, patch, seg->a, t) : vertex_at(vr, patch, s, seg->a);
+            const int ib =
+                along_s ? vertex_at(vr, patch, seg->b, t) : vertex_at(vr, patch, s, seg->b);
+            const int x = along_s ? s : t;
+            p = lerp(vr.positions[ia], vr.positions[ib],
+                     static_cast<double>(x - seg->a) / (seg->b - seg->a));
+        } else {
+            p = evaluate(patches[patch], param_of(s), param_of(t)).point;
+        }
+    }
+    vr.positions[id] = p;
+    vr.placed[id] = 1;
+    return id;
+}
+
+} // namespace seamless

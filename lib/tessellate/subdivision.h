@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// Adaptive subdivision of a Bezier patch into planar subpatches (paper section
+// 6): de Casteljau halving at the parameter midpoint until the planarity test
+// holds. Only the split structure is decided here, by planarity alone; the
+// crack-free vertices are placed afterwards (shared_edges.h), once the
+// neighbours' splits are known.
+#pragma once
+
+#include <seamless/spline/bezier_patch.h>
+#include <seamless/tessellate/patch_tree.h>
+
+#include <array>
+#include <vector>
+
+namespace seamless {
+
+// Subpatch parameters are dyadic: integers on a 2^30 grid over the patch's
+// local [0,1]^2, so split points are exact and comparable across patches.
+inline constexpr int kParamBits = 30;
+inline constexpr int kParamOne = 1 << kParamBits;
+inline double param_of(int i) {
+    return static_cast<double>(i) / kParamOne;
+}
+
+// [s0, s1] x [t0, t1] on the grid: s along u, t along v.
+struct ParamRect {
+    int s0 = 0, s1 = kParamOne, t0 = 0, t1 = kParamOne;
+};
+
+struct SubdivisionOptions {
+    double eps1 = 0, eps2 = 0; // planarity tolerances, model units (section 8)
+    int max_depth = 24;        // safeguard: at most this many halvings per patch
+};
+
+// A leaf of the split tree: a planar subpatch (or one stopped by max_depth).
+struct Subpatch {
+    int patch = -1; // index into bezier_patches(model)
+    int node = -1;  // its node in PatchTrees
+    ParamRect rect;
+    int depth = 0;
+    bool planar = true; // false when max_depth stopped the subdivision
+    // Bound on |S - B| over the subpatch, B the bilinear interpolant of
+    // `corners` (error_bound.h), and those corners: the subpatch's corner
+    // control points, in the order of BezierPatch::corner.
+    double bilinear_error = 0;
+    std::array<Vec3, 4> corners{};
+    // Filled by the triangulation: its fan triangles and their error bound.
+    int first_triangle = 0, triangle_count = 0;
+    double error_bound = 0;
+};
+
+// Splits `patch` (index `patch_index`) recursively, appending its tree's nodes
+// to `trees.nodes` (root first) and its planar subpatches to `out`; returns the
+// root node. The direction split is the less flat one (flatness_u/v); on a tie
+// (within a factor 2) the one whose corner edges are longer.
+int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
+              PatchTrees& trees, std::vector<Subpatch>& out);
+
+} // namespace seamless

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/shared_edges.h>
+#include <seamless/tessellate/tessellation.h>
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+
+namespace seamless {
+namespace {
+
+// A ring vertex of a subpatch: grid point on its patch and mesh vertex.
+struct RingVertex {
+    int s = 0, t = 0;
+    int vertex = -1;
+};
+
+// The subpatch's boundary, counterclockwise in (s, t) from corner (s0, t0):
+// the four corners and, crack-free, every vertex a finer neighbour put on a side.
+void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, int patch,
+                  const ParamRect& r, bool crack_free, std::vector<int>& scratch,
+                  std::vector<RingVertex>& ring) {
+    ring.clear();
+    const int cs[4] = {r.s0, r.s1, r.s1, r.s0}, ct[4] = {r.t0, r.t0, r.t1, r.t1};
+    for (int k = 0; k < 4; ++k) {
+        ring.push_back({cs[k], ct[k], -1});
+        if (!crack_free) continue;
+        const SideOnLine side = side_on_line(reg, match, patch, r, k);
+        scratch.clear();
+        points_inside(reg, side, scratch);
+        if (scratch.empty()) continue;
+        for (int& x : scratch)
+            if (side.reversed) x = kParamOne - x;
+        // Sides 0, 1 run with increasing parameter, sides 2, 3 against it.
+        if ((k < 2) == side.reversed) std::reverse(scratch.begin(), scratch.end());
+        for (int x : scratch) {
+            switch (k) {
+            case 0:
+                ring.push_back({x, r.t0, -1});
+                break;
+            case 1:
+                ring.push_back({r.s1, x, -1});
+                break;
+            case 2:
+                ring.push_back({x, r.t1, -1});
+                break;
+            default:
+                ring.push_back({r.s0, x, -1});
+                break;
+            }
+        }
+    }
+}
+
+} // namespace
+
+Vec3 unit_normal(const BezierPatch& b, double s, double t, double toward_s, double toward_t) {
+    SurfacePoint sp = evaluate(b, s, t);
+    Vec3 n = sp.normal();
+    for (double d : {1e-7, 1e-5, 1e-3, 1e-1, 0.5}) {
+        if (is_finite(n) && norm(n) > 1e-12 * norm(sp.du) * norm(sp.dv) && norm(n) > 0) break;
+        sp = evaluate(b, s + d * (toward_s - s), t + d * (toward_t - t));
+        n = sp.normal();
+    }
+    return normalize(n);
+}
+
+Tessellation tessellate(const Model& model, const TessellationOptions& options) {
+    return tessellate(model, bezier_patches(model), options);
+}
+
+Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patches,
+                        const TessellationOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    Tessellation out;
+    TessellationStats& st = out.stats;
+    const Box3 box = control_box(model);
+    st.d_max = box.max_extent();
+    // Section 8: eps1 = 0.001 d_max, eps2 = 0.02 d_max.
+    st.eps1 = options.eps1 >= 0 ? options.eps1 : 0.001 * st.d_max;
+    st.eps2 = options.eps2 >= 0 ? options.eps2 : 0.02 * st.d_max;
+    st.surfaces = static_cast<int>(model.surfaces.size());
+    st.patches = static_cast<int>(patches.size());
+    const double scale =
+        box.empty() ? 0.0
+                    : std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z),
+                                std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)});
+
+    // (a) Split trees by the planarity test alone (section 6).
+    const SubdivisionOptions sub{st.eps1, st.eps2, options.max_depth};
+    out.trees.roots.reserve(patches.size());
+    for (size_t i = 0; i < patches.size(); ++i)
+        out.trees.roots.push_back(
+            subdivide(patches[i], static_cast<int>(i), sub, out.trees, out.subpatches));
+
+    // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
+    const BoundaryMatch match = match_boundaries(patches, options.match_tolerance * st.d_max);
+    st.shared_edges = match.shared_edges;
+    st.collapsed_edges = match.collapsed_edges;
+    const EdgeRegistry reg = build_edge_registry(match, out.subpatches);
+    VertexRegistry vr;
+    vr.patches = &patches;
+    vr.match = &match;
+    vr.edges = &reg;
+    vr.crack_free = options.crack_free;
+
+    // (d) Fans: each planar subpatch from its centre over its ring.
+    TriangleMesh& mesh = out.mesh;
+    for (const BSplineSurface& s : model.surfaces) mesh.surface_names.push_back(s.name);
+    std::vector<int> scratch;
+    std::vector<RingVertex> ring;
+    std::vector<FanVertex> fan;
+    std::vector<Vec3> ring_normals;
+    for (Subpatch& sp : out.subpatches) {
+        const BezierPatch& b = patches[sp.patch];
+        const ParamRect& r = sp.rect;
+        collect_ring(reg, match, sp.patch, r, options.crack_free, scratch, ring);
+        for (RingVertex& v : ring) v.vertex = vertex_at(vr, sp.patch, v.s, v.t);
+
+        const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+        const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+        const SurfacePoint centre_point = evaluate(b, sc, tc);
+        const int centre = static_cast<int>(vr.positions.size());
+        vr.positions.push_back(centre_point.point);
+        vr.placed.push_back(1);
+        const Vec3 centre_normal = unit_normal(b, sc, tc, sc, tc);
+
+        // Error bound (error_bound.h): |S - B_C| + |B_C - B_V| + |B_V - F|.
+        const double ws = param_of(r.s1) - param_of(r.s0), wt = param_of(r.t1) - param_of(r.t0);
+        fan.clear();
+        std::array<Vec3, 4> V{};
+        int corner = 0;
+        double corner_shift = 0;
+        for (const RingVertex& v : ring) {
+            const Vec3 pos = vr.positions[v.vertex];
+            const bool is_corner = (v.s == r.s0 || v.s == r.s1) && (v.t == r.t0 || v.t == r.t1);
+            if (is_corner) {
+                V[corner] = pos;
+                corner_shift = std::max(corner_shift, distance(pos, sp.corners[corner]));
+                ++corner;
+            }
+            fan.push_back({(param_of(v.s) - param_of(r.s0)) / ws,
+                           (param_of(v.t) - param_of(r.t0)) / wt, pos});
+        }
+        assert(corner == 4);
+        sp.error_bound = sp.bilinear_error + corner_shift +
+                         fan_deviation(V, centre_point.point, fan) +
+                         rounding_allowance(sp.depth, scale);
+        st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
+
+        ring_normals.clear();
+        for (const RingVertex& v : ring)
+            ring_normals.push_back(unit_normal(b, param_of(v.s), param_of(v.t), sc, tc));
+
+        // Fan triangles; none where two ring vertices are one (a pole).
+        sp.first_triangle = mesh.triangle_count();
+        const size_t n = ring.size();
+        for (size_t k = 0; k < n; ++k) {
+            const RingVertex &a = ring[k], &c = ring[(k + 1) % n];
+            if (a.vertex == c.vertex) continue;
+            mesh.triangles.push_back({centre, a.vertex, c.vertex});
+            mesh.triangle_surface.push_back(b.surface);
+            mesh.corner_normals.push_back(
+                {centre_normal, ring_normals[k], ring_normals[(k + 1) % n]});
+            mesh.corner_uvs.push_back(
+                {std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
+                 std::array<double, 2>{b.u_at(param_of(a.s)), b.v_at(param_of(a.t))},
+                 std::array<double, 2>{b.u_at(param_of(c.s)), b.v_at(param_of(c.t))}});
+        }
+        sp.triangle_count = mesh.triangle_count() - sp.first_triangle;
+
+        // Proposition 11, remark 2: the triangles become the leaves below the subpatch.
+        const int added =
+            attach_triangles(out.trees, sp.node, sp.first_triangle, sp.triangle_count);
+        out.trees.depth = std::max(out.trees.depth, sp.depth + added);
+        st.max_depth = std::max(st.max_depth, sp.depth);
+        if (!sp.planar) ++st.nonplanar_subpatches;
+    }
+    mesh.positions = std::move(vr.positions);
+    update_triangle_hulls(out.trees, [&mesh](int f) {
+        Box3 bb;
+        for (int v : mesh.triangles[f]) bb.extend(mesh.positions[v]);
+        return bb;
+    });
+
+    st.subpatches = static_cast<int>(out.subpatches.size());
+    st.triangles = mesh.triangle_count();
+    st.vertices = mesh.vertex_count();
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+} // namespace seamless

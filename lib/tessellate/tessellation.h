@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// Crack-free adaptive tessellation of a model (paper section 6): every Bezier
+// patch is split by the planarity test (subdivision.h), shared boundaries are
+// matched across patches and surfaces (shared_edges.h), vertices follow the
+// straight-midpoint rule of Fig. 3, each planar subpatch becomes a fan from
+// its centre over every vertex on its sides, and the binary patch trees of
+// Proposition 11, remark 2 are built in the same pass.
+#pragma once
+
+#include <seamless/model/model.h>
+#include <seamless/tessellate/patch_tree.h>
+#include <seamless/tessellate/subdivision.h>
+#include <seamless/tessellate/triangle_mesh.h>
+
+#include <vector>
+
+namespace seamless {
+
+struct TessellationOptions {
+    // Planarity tolerances in model units; < 0 selects the paper's defaults
+    // (section 8): eps1 = 0.001 * d_max, eps2 = 0.02 * d_max, d_max the largest
+    // extent of the bounding box of the model's control points.
+    double eps1 = -1, eps2 = -1;
+    // Safeguard against subpatches that never become planar: at most this many
+    // halvings below a Bezier patch (such subpatches are counted in the stats).
+    int max_depth = 24;
+    // false: the naive rule (every vertex the exact surface point, four
+    // triangles per subpatch whatever the neighbours did), which leaves cracks;
+    // kept so tests can show the difference.
+    bool crack_free = true;
+    // Shared boundaries: control polygons equal within this factor of d_max.
+    double match_tolerance = 1e-12;
+};
+
+struct TessellationStats {
+    int surfaces = 0, patches = 0, subpatches = 0, triangles = 0, vertices = 0;
+    int shared_edges = 0, collapsed_edges = 0;
+    int nonplanar_subpatches = 0; // stopped by max_depth
+    int max_depth = 0;            // deepest subpatch
+    double d_max = 0, eps1 = 0, eps2 = 0;
+    double max_error_bound = 0; // largest Subpatch::error_bound, model units
+    double seconds = 0;
+};
+
+struct Tessellation {
+    TriangleMesh mesh;
+    PatchTrees trees;
+    // Planar subpatches in tree order, with their triangle ranges and error bounds.
+    std::vector<Subpatch> subpatches;
+    TessellationStats stats;
+};
+
+Tessellation tessellate(const Model& model, const TessellationOptions& options = {});
+
+// Same, from Bezier patches already extracted (bezier_patches(model)); the
+// patch indices of the result refer to `patches`.
+Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patches,
+                        const TessellationOptions& options);
+
+// Unit normal dP/du x dP/dv at local (s, t) of `b`; where it vanishes (a pole,
+// a collapsed edge) the limit normal, approached from (toward_s, toward_t).
+Vec3 unit_normal(const BezierPatch& b, double s, double t, double toward_s, double toward_t);
+
+} // namespace seamless

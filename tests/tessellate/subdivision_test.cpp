@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+// Adaptive subdivision (paper section 6): subpatches tile the patch, are
+// planar, and get finer with the tolerance.
+#include "test_util.h"
+
+#include <seamless/model/model.h>
+#include <seamless/tessellate/planarity.h>
+#include <seamless/tessellate/subdivision.h>
+
+#include <catch2/catch.hpp>
+
+using namespace seamless;
+
+namespace {
+
+// Re-splits `b` down to the rectangle r (dyadic halvings).
+BezierPatch subpatch_of(BezierPatch b, ParamRect r) {
+    ParamRect cur;
+    while (cur.s0 != r.s0 || cur.s1 != r.s1) {
+        BezierPatch lo, hi;
+        split_u(b, 0.5, lo, hi);
+        const int m = cur.s0 + (cur.s1 - cur.s0) / 2;
+        if (r.s0 >= m)
+            b = hi, cur.s0 = m;
+        else
+            b = lo, cur.s1 = m;
+    }
+    while (cur.t0 != r.t0 || cur.t1 != r.t1) {
+        BezierPatch lo, hi;
+        split_v(b, 0.5, lo, hi);
+        const int m = cur.t0 + (cur.t1 - cur.t0) / 2;
+        if (r.t0 >= m)
+            b = hi, cur.t0 = m;
+        else
+            b = lo, cur.t1 = m;
+    }
+    return b;
+}
+
+} // namespace
+
+TEST_CASE("subpatches tile each patch and pass the planarity test", "[subdivision]") {
+    const Model m = load_model(test::model_path("teapot.json"));
+    const auto patches = bezier_patches(m);
+    const double dm = d_max(m);
+    for (double factor : {1.0, 10.0}) {
+        SubdivisionOptions opt{0.001 * dm / factor, 0.02 * dm / factor, 24};
+        PatchTrees trees;
+        std::vector<Subpatch> subs;
+        std::vector<double> area(patches.size(), 0);
+        for (size_t i = 0; i < patches.size(); ++i)
+            subdivide(patches[i], static_cast<int>(i), opt, trees, subs);
+        for (const Subpatch& sp : subs) {
+            REQUIRE(sp.planar);
+            area[sp.patch] += param_of(sp.rect.s1 - sp.rect.s0) * param_of(sp.rect.t1 - sp.rect.t0);
+            const BezierPatch b = subpatch_of(patches[sp.patch], sp.rect);
+            CHECK(is_planar(b, opt.eps1 * (1 + 1e-9), opt.eps2 * (1 + 1e-9)));
+            CHECK(distance(b.corner(2), sp.corners[2]) < 1e-12 * dm);
+        }
+        for (double a : area) CHECK(a == 1.0); // dyadic areas add up exactly
+    }
+}
+
+TEST_CASE("finer tolerances split more; max_depth bounds the splitting", "[subdivision]") {
+    const Model m = load_model(test::model_path("teacup.json"));
+    const auto patches = bezier_patches(m);
+    const double dm = d_max(m);
+    auto count = [&](double factor, int depth) {
+        PatchTrees trees;
+        std::vector<Subpatch> subs;
+        SubdivisionOptions opt{0.001 * dm / factor, 0.02 * dm / factor, depth};
+        for (size_t i = 0; i < patches.size(); ++i)
+            subdivide(patches[i], static_cast<int>(i), opt, trees, subs);
+        for (const Subpatch& sp : subs) REQUIRE(sp.depth <= depth);
+        return subs.size();
+    };
+    CHECK(count(1, 24) < count(10, 24));
+    CHECK(count(10, 24) < count(30, 24));
+    CHECK(count(30, 0) == patches.size());
+    CHECK(count(30, 2) <= 4 * patches.size());
+}
