@@ -17,5 +17,6 @@ void add_info(CLI::App& app, Action& action);
 void add_tessellate(CLI::App& app, Action& action);
 void add_check(CLI::App& app, Action& action);
 void add_render(CLI::App& app, Action& action);
+void add_sweep(CLI::App& app, Action& action);
 
 } // namespace seamless::cli

@@ -73,7 +73,8 @@ void add_render(CLI::App& app, Action& action) {
             if (!a->size.empty()) {
                 std::smatch m;
                 if (!std::regex_match(a->size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
-                    throw InputError("", "--size", "expected WxH, e.g. 640x480, got '" + a->size + "'");
+                    throw InputError("", "--size",
+                                     "expected WxH, e.g. 640x480, got '" + a->size + "'");
                 opt.width = std::stoi(m[1]);
                 opt.height = std::stoi(m[2]);
                 if (opt.width < 1 || opt.height < 1 || opt.width > 16384 || opt.height > 16384)
@@ -89,8 +90,8 @@ void add_render(CLI::App& app, Action& action) {
             if (!a->stats.empty()) write_text_atomically(a->stats, stats_json(st).dump(2) + "\n");
             std::cout << st.method << ": " << st.width << "x" << st.height << ", " << st.levels
                       << " levels, " << st.seconds << " s, single-pixel fraction "
-                      << st.single_pixel_fraction() << ", " << st.primary_rays << " primary rays -> "
-                      << a->out << "\n";
+                      << st.single_pixel_fraction() << ", " << st.primary_rays
+                      << " primary rays -> " << a->out << "\n";
             return 0;
         };
     });

@@ -20,9 +20,15 @@ struct Image {
         : width(w), height(h), levels(lv), level(static_cast<size_t>(w) * h * 3, 0),
           surface(static_cast<size_t>(w) * h, 0) {}
     std::uint8_t& surface_at(int x, int y) { return surface[static_cast<size_t>(y) * width + x]; }
-    std::uint8_t surface_at(int x, int y) const { return surface[static_cast<size_t>(y) * width + x]; }
-    std::uint16_t& at(int x, int y, int c) { return level[(static_cast<size_t>(y) * width + x) * 3 + c]; }
-    std::uint16_t at(int x, int y, int c) const { return level[(static_cast<size_t>(y) * width + x) * 3 + c]; }
+    std::uint8_t surface_at(int x, int y) const {
+        return surface[static_cast<size_t>(y) * width + x];
+    }
+    std::uint16_t& at(int x, int y, int c) {
+        return level[(static_cast<size_t>(y) * width + x) * 3 + c];
+    }
+    std::uint16_t at(int x, int y, int c) const {
+        return level[(static_cast<size_t>(y) * width + x) * 3 + c];
+    }
 };
 
 // Level k of `levels` as an 8-bit value: round(255 k / (levels - 1)).

@@ -50,7 +50,7 @@ struct Mark {
 };
 
 struct SubScreen {
-    int x0, y0, x1, y1; // inclusive pixel range
+    int x0, y0, x1, y1;   // inclusive pixel range
     size_t offset, count; // its marks in the arena
 };
 
@@ -160,27 +160,38 @@ int separate(const ClusterSystem& sys, const ParamBox& box, ParamBox out[2]) {
 
 // Theorem 6 iii over the whole cluster: if the Hansen-Sengupta operator with
 // the interval coefficients [a], [b] maps the box into its interior, every ray
-// of the cluster has exactly one zero in the box. Contracts `box` meanwhile.
+// of the cluster has exactly one zero in the box (H is inclusion monotone, so
+// H for one ray lies inside H for the cluster). Narrowing leaves the box tight
+// around the cluster's solution set, where H cannot land strictly inside; so
+// the box is first widened a little (Rump's epsilon inflation), within the
+// patch's domain [0,1]^2. On success `box` is the contracted box.
 bool certify_cluster(const ClusterSystem& sys, ParamBox& box) {
+    const Interval unit(0.0, 1.0);
+    auto inflate = [&](Interval x) {
+        const double d = 0.1 * x.width() + 1e-12;
+        return intersect(Interval(next_down(x.lo() - d), next_up(x.hi() + d)), unit);
+    };
+    IVec<2> x;
+    x[0] = inflate(box.s);
+    x[1] = inflate(box.t);
     for (int iter = 0; iter < 6; ++iter) {
         IMat<2> A;
-        IVec<2> F, x;
+        IVec<2> F;
+        const ParamBox xb{x[0], x[1]};
         for (int k = 0; k < 2; ++k) {
-            A(k, 0) = horner(sys.Gs, k, box);
-            A(k, 1) = horner(sys.Gt, k, box);
+            A(k, 0) = horner(sys.Gs, k, xb);
+            A(k, 1) = horner(sys.Gt, k, xb);
         }
-        const double cs = box.s.mid(), ct = box.t.mid();
+        const double cs = x[0].mid(), ct = x[1].mid();
         for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, ParamBox{Interval(cs), Interval(ct)});
-        x[0] = box.s;
-        x[1] = box.t;
         const HansenSenguptaStep<2> step = hansen_sengupta<2>(A, F, x, RVec<2>{cs, ct});
         if (step.box.is_empty()) return false;
         if (step.unique) {
             box = {step.box[0], step.box[1]};
             return true;
         }
-        if (step.box[0] == x[0] && step.box[1] == x[1]) return false;
-        box = {step.box[0], step.box[1]};
+        x[0] = inflate(step.box[0]);
+        x[1] = inflate(step.box[1]);
     }
     return false;
 }
@@ -220,14 +231,16 @@ std::array<double, 3> shade_hit(const ProjectedScene& ps, const Hit& h) {
     Vec3 P, N;
     const ProjectedPatch& pp = ps.patches[h.patch];
     surface_frame(pp.patch, h.s, h.t, P, N);
-    return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N), Vec3{});
+    return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N),
+                         Vec3{});
 }
 
 // Deterministic dither in [-0.5, 0.5) per pixel and channel (remark 2), so
 // that sequential and parallel runs paint the same image.
 double dither(int x, int y, int c) {
-    std::uint64_t z = (static_cast<std::uint64_t>(x) << 40) ^ (static_cast<std::uint64_t>(y) << 16) ^
-                      static_cast<std::uint64_t>(c) ^ 0x9E3779B97F4A7C15ull;
+    std::uint64_t z = (static_cast<std::uint64_t>(x) << 40) ^
+                      (static_cast<std::uint64_t>(y) << 16) ^ static_cast<std::uint64_t>(c) ^
+                      0x9E3779B97F4A7C15ull;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     z ^= z >> 31;
@@ -280,24 +293,57 @@ class PartRenderer {
         const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
         // Step 3: hull comparison and Theorem 10 for every marked patch.
         const size_t first = arena_.size();
+        const double pitch_a = 2.0 * ps_.frame.tan_half * ps_.frame.aspect / ps_.frame.width;
+        const double pitch_b = 2.0 * ps_.frame.tan_half / ps_.frame.height;
         for (size_t k = B.offset; k < B.offset + B.count; ++k) {
-            Mark m = arena_[k];
-            const ProjectedPatch& pp = ps_.patches[m.patch];
-            const IVec3 P = enclose_point(pp.forms, m.box);
-            if (!(P[2].hi() > 0)) continue; // behind the eye
-            if (!(P[0] - a * P[2]).contains(0.0) || !(P[1] - b * P[2]).contains(0.0)) continue;
-            if (thin) {
-                arena_.push_back(m);
-                continue;
+            // Covering method (section 5, remark 2 after Theorem 10): where Theorem 10
+            // cannot narrow a box (its derivative hull holds 0, near a silhouette) and
+            // the box still projects far beyond B, it is bisected and both halves go on.
+            work_.clear();
+            work_.push_back(arena_[k]);
+            int budget = kMaxBisections;
+            while (!work_.empty()) {
+                Mark m = work_.back();
+                work_.pop_back();
+                const ProjectedPatch& pp = ps_.patches[m.patch];
+                const IVec3 P = enclose_point(pp.forms, m.box);
+                if (!(P[2].hi() > 0)) continue; // behind the eye
+                if (!(P[0] - a * P[2]).contains(0.0) || !(P[1] - b * P[2]).contains(0.0)) continue;
+                if (thin) {
+                    arena_.push_back(m);
+                    continue;
+                }
+                cluster_system(pp.forms, a, b, sys_);
+                if (!narrow(sys_, m.box)) continue;
+                const IVec3 Q = enclose_point(pp.forms, m.box);
+                const bool wide = !(Q[2].lo() > 0) ||
+                                  (Q[0] / Q[2]).width() > 2 * (a.width() + pitch_a) ||
+                                  (Q[1] / Q[2]).width() > 2 * (b.width() + pitch_b);
+                if (wide && budget > 0 && std::max(m.box.s.width(), m.box.t.width()) > 1e-9) {
+                    --budget;
+                    Mark lo = m, hi = m;
+                    if (m.box.s.width() >= m.box.t.width()) {
+                        const double sm = m.box.s.mid();
+                        lo.box.s = {m.box.s.lo(), sm};
+                        hi.box.s = {sm, m.box.s.hi()};
+                    } else {
+                        const double tm = m.box.t.mid();
+                        lo.box.t = {m.box.t.lo(), tm};
+                        hi.box.t = {tm, m.box.t.hi()};
+                    }
+                    work_.push_back(hi);
+                    work_.push_back(lo);
+                    continue;
+                }
+                // Remark 3: a possible silhouette (normal . view contains 0) is separated.
+                const PatchEnclosure e = enclose(pp.forms, m.box);
+                const Interval nv =
+                    e.normal[0] * e.point[0] + e.normal[1] * e.point[1] + e.normal[2] * e.point[2];
+                ParamBox parts[2];
+                const int n =
+                    nv.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);
+                for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i]});
             }
-            cluster_system(pp.forms, a, b, sys_);
-            if (!narrow(sys_, m.box)) continue;
-            // Remark 3: a possible silhouette (normal . view contains 0) is separated.
-            const PatchEnclosure e = enclose(pp.forms, m.box);
-            const Interval nv = e.normal[0] * e.point[0] + e.normal[1] * e.point[1] + e.normal[2] * e.point[2];
-            ParamBox parts[2];
-            const int n = nv.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);
-            for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i]});
         }
         const size_t nmarks = arena_.size() - first;
         if (nmarks == 0) { // step 4: nothing marked
@@ -382,8 +428,8 @@ class PartRenderer {
         B.y1 = ny1;
         if (B.x0 == B.x1 && B.y0 == B.y1) { // down to one pixel: solve it now
             ++st.single_pixels;
-            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
-                                      &arena_[first], n, st, hits_);
+            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5),
+                                      ps_.frame.screen_b(B.y0 + 0.5), &arena_[first], n, st, hits_);
             if (h.patch < 0) {
                 paint_background(B.x0, B.y0, B.x0, B.y0, st);
             } else {
@@ -400,35 +446,44 @@ class PartRenderer {
 
     // Steps 7 to 9. Returns true if B was painted.
     bool try_paint(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
-        // Depth (q) intervals; the nearest mark must be separated from all others.
-        size_t best = first;
-        Interval qbest;
+        // Depth (q) intervals. The marks of one patch (halves of bisections,
+        // separated pieces) are taken together: their hull box holds every hit
+        // of that patch in B. The nearest patch must be q-separated from all
+        // other marks (a nearest q-connected set of one patch).
+        int best_patch = -1;
         double best_lo = std::numeric_limits<double>::infinity();
         for (size_t k = first; k < first + n; ++k) {
             const Interval q = enclose_point(ps_.patches[arena_[k].patch].forms, arena_[k].box)[2];
             if (q.lo() < best_lo) {
                 best_lo = q.lo();
-                best = k;
-                qbest = q;
+                best_patch = arena_[k].patch;
             }
         }
+        if (best_patch < 0) return false;
+        ParamBox box{Interval::empty(), Interval::empty()};
+        for (size_t k = first; k < first + n; ++k)
+            if (arena_[k].patch == best_patch) {
+                box.s = hull(box.s, arena_[k].box.s);
+                box.t = hull(box.t, arena_[k].box.t);
+            }
+        const ProjectedPatch& pp = ps_.patches[best_patch];
+        const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
+        cluster_system(pp.forms, a, b, sys_);
+        if (!certify_cluster(sys_, box)) return false;
+        const Interval qbest = enclose_point(pp.forms, box)[2];
         if (!(qbest.lo() > 0)) return false;
         for (size_t k = first; k < first + n; ++k) {
-            if (k == best) continue;
+            if (arena_[k].patch == best_patch) continue;
             const Interval q = enclose_point(ps_.patches[arena_[k].patch].forms, arena_[k].box)[2];
             if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
         }
-        const Mark m = arena_[best];
-        const ProjectedPatch& pp = ps_.patches[m.patch];
-        const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
-        cluster_system(pp.forms, a, b, sys_);
-        ParamBox box = m.box;
-        if (!certify_cluster(sys_, box)) return false;
+        const Mark m{best_patch, box};
         // Step 8: SHADE over the hulls of the intersection points and normals.
         const PatchEnclosure e = enclose(pp.forms, box);
         const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
         const V3<Interval> N{e.normal[0], e.normal[1], e.normal[2]};
-        const auto I = shade<Interval>(ps_.lighting, ps_.lighting.materials[pp.material], P, N, Vec3{});
+        const auto I =
+            shade<Interval>(ps_.lighting, ps_.lighting.materials[pp.material], P, N, Vec3{});
         int lo[3], hi[3];
         bool two = false;
         for (int c = 0; c < 3; ++c) {
@@ -441,7 +496,8 @@ class PartRenderer {
         if (!two) {
             for (int y = B.y0; y <= B.y1; ++y)
                 for (int x = B.x0; x <= B.x1; ++x) {
-                    for (int c = 0; c < 3; ++c) image_.at(x, y, c) = static_cast<std::uint16_t>(lo[c]);
+                    for (int c = 0; c < 3; ++c)
+                        image_.at(x, y, c) = static_cast<std::uint16_t>(lo[c]);
                     image_.surface_at(x, y) = 1;
                 }
             count(B, st);
@@ -452,8 +508,8 @@ class PartRenderer {
         const int cx[4] = {B.x0, B.x1, B.x0, B.x1}, cy[4] = {B.y0, B.y0, B.y1, B.y1};
         const Mark only{m.patch, box};
         for (int k = 0; k < 4; ++k) {
-            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5), ps_.frame.screen_b(cy[k] + 0.5),
-                                      &only, 1, st, hits_);
+            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5),
+                                      ps_.frame.screen_b(cy[k] + 0.5), &only, 1, st, hits_);
             if (h.patch < 0) {
                 for (int c = 0; c < 3; ++c) corner[k][c] = I[c].mid();
             } else {
@@ -484,7 +540,8 @@ class PartRenderer {
     Image& image_;
     int levels_;
     std::uint16_t bg_[3];
-    std::vector<Mark> arena_;
+    static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
+    std::vector<Mark> arena_, work_;
     std::vector<SubScreen> stack_;
     std::vector<RayPatchHit> hits_;
     ClusterSystem sys_;
@@ -498,7 +555,8 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     const int L = opt.levels > 0 ? opt.levels : scene.levels;
     const auto t0 = std::chrono::steady_clock::now();
     const ProjectedScene ps = project_scene(scene, W, H); // step 1
-    st.precalc_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    st.precalc_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     st.patches = static_cast<long long>(ps.patches.size());
     Image image(W, H, L);
 
@@ -520,9 +578,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
         for (int p = 0; p < parts; ++p) work(p);
     } else {
         tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
-        arena.execute([&] {
-            tbb::parallel_for(0, parts, [&](int p) { work(p); });
-        });
+        arena.execute([&] { tbb::parallel_for(0, parts, [&](int p) { work(p); }); });
     }
     for (const RenderStats& s : part_stats) st.merge(s);
     return image;

@@ -35,7 +35,8 @@ void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& 
     point = sp.point;
     normal = sp.normal();
     // At a collapsed edge the normal vanishes; take it a little way inside.
-    for (double h = 1e-7; norm(normal) <= 1e-14 * (norm(sp.du) + norm(sp.dv) + 1e-300) && h < 0.1; h *= 10) {
+    for (double h = 1e-7; norm(normal) <= 1e-14 * (norm(sp.du) + norm(sp.dv) + 1e-300) && h < 0.1;
+         h *= 10) {
         SurfacePoint q = evaluate(b, s + (s < 0.5 ? h : -h), t + (t < 0.5 ? h : -h));
         normal = q.normal();
     }

@@ -66,7 +66,8 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
     for (const ProjectedPatch& pp : ps.patches) {
         const IVec3 P = enclose_point(pp.forms, ParamBox{});
         const bool valid = P[2].lo() > 0;
-        rects.push_back({valid ? P[0] / P[2] : Interval::entire(), valid ? P[1] / P[2] : Interval::entire(), valid});
+        rects.push_back({valid ? P[0] / P[2] : Interval::entire(),
+                         valid ? P[1] / P[2] : Interval::entire(), valid});
     }
     std::vector<RenderStats> row_stats(H);
     std::atomic<int> done{0};
@@ -83,7 +84,8 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
             int best = -1;
             double bs = 0, bt = 0;
             for (size_t k = 0; k < ps.patches.size(); ++k) {
-                if (rects[k].valid && (!rects[k].a.contains(a) || !rects[k].b.contains(b))) continue;
+                if (rects[k].valid && (!rects[k].a.contains(a) || !rects[k].b.contains(b)))
+                    continue;
                 hits.clear();
                 RayPatchStats hs;
                 intersect(ps.patches[k].forms, ray, hits, RayPatchOptions{}, &hs);
@@ -105,10 +107,11 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
             } else {
                 Vec3 P, N;
                 surface_frame(ps.patches[best].patch, bs, bt, P, N);
-                I = shade<double>(ps.lighting, ps.lighting.materials[ps.patches[best].material], to_v3(P),
-                                  to_v3(N), Vec3{});
+                I = shade<double>(ps.lighting, ps.lighting.materials[ps.patches[best].material],
+                                  to_v3(P), to_v3(N), Vec3{});
             }
-            for (int c = 0; c < 3; ++c) image.at(x, y, c) = static_cast<std::uint16_t>(quantise(I[c], L));
+            for (int c = 0; c < 3; ++c)
+                image.at(x, y, c) = static_cast<std::uint16_t>(quantise(I[c], L));
             image.surface_at(x, y) = best >= 0;
         }
         const int d = ++done;

@@ -42,7 +42,9 @@ struct RenderStats {
     long long patches = 0, triangles = 0;
 
     double single_pixel_fraction() const {
-        return width > 0 && height > 0 ? static_cast<double>(single_pixels) / (static_cast<double>(width) * height) : 0;
+        return width > 0 && height > 0
+                   ? static_cast<double>(single_pixels) / (static_cast<double>(width) * height)
+                   : 0;
     }
     double hs_iterations_per_patch() const {
         return pixel_patch_solves ? static_cast<double>(hs_iterations) / pixel_patch_solves : 0;

@@ -29,8 +29,8 @@ struct Reader {
         if (!std::isfinite(x)) fail(f, "not a finite number");
         return x;
     }
-    double number_in(const json& obj, const char* key, const std::string& f, double dflt,
-                     double lo, double hi) const {
+    double number_in(const json& obj, const char* key, const std::string& f, double dflt, double lo,
+                     double hi) const {
         auto it = obj.find(key);
         if (it == obj.end()) return dflt;
         double x = number(*it, f + "." + key);
@@ -69,7 +69,8 @@ struct Reader {
 json parse_file(const std::filesystem::path& path) {
     const std::string file = path.string();
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(file, "", "cannot open file (" + std::string(std::strerror(errno)) + ")");
+    if (!in)
+        throw InputError(file, "", "cannot open file (" + std::string(std::strerror(errno)) + ")");
     std::stringstream ss;
     ss << in.rdbuf();
     try {
@@ -93,8 +94,10 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
     Scene sc;
     sc.source = r.file;
     if (r.integer_in(root, "version", "", -1, 0, 1000000) != 1)
-        r.fail("version", root.contains("version") ? "unsupported version " + root["version"].dump() + " (this reader knows 1)"
-                                                   : "missing");
+        r.fail("version",
+               root.contains("version")
+                   ? "unsupported version " + root["version"].dump() + " (this reader knows 1)"
+                   : "missing");
 
     // Camera.
     auto cam = root.find("camera");
@@ -122,7 +125,8 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
     if (root.contains("lights")) {
         const json& L = root["lights"];
         if (!L.is_array()) r.fail("lights", "expected an array");
-        if (L.size() > lim.max_lights) r.fail("lights", "more than " + std::to_string(lim.max_lights) + " lights");
+        if (L.size() > lim.max_lights)
+            r.fail("lights", "more than " + std::to_string(lim.max_lights) + " lights");
         for (size_t k = 0; k < L.size(); ++k) {
             const std::string f = "lights[" + std::to_string(k) + "]";
             if (!L[k].is_object()) r.fail(f, "expected an object");
@@ -179,14 +183,17 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
             if (!o["material"].is_string()) r.fail(f + ".material", "expected a material name");
             auto mi = material_index.find(o["material"].get<std::string>());
             if (mi == material_index.end())
-                r.fail(f + ".material", "no material named '" + o["material"].get<std::string>() + "'");
+                r.fail(f + ".material",
+                       "no material named '" + o["material"].get<std::string>() + "'");
             so.material = mi->second;
         }
         double T[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
         if (o.contains("transform")) {
             const json& t = o["transform"];
-            if (!t.is_array() || t.size() != 16) r.fail(f + ".transform", "expected 16 numbers (4x4, row-major)");
-            for (int i = 0; i < 16; ++i) T[i] = r.number(t[i], f + ".transform[" + std::to_string(i) + "]");
+            if (!t.is_array() || t.size() != 16)
+                r.fail(f + ".transform", "expected 16 numbers (4x4, row-major)");
+            for (int i = 0; i < 16; ++i)
+                T[i] = r.number(t[i], f + ".transform[" + std::to_string(i) + "]");
             if (T[12] != 0 || T[13] != 0 || T[14] != 0 || T[15] != 1)
                 r.fail(f + ".transform", "the last row must be 0 0 0 1 (affine transforms only)");
         }

@@ -14,39 +14,73 @@
 
 namespace seamless {
 
-template <class T> struct V3 {
-    T x, y, z;
-};
-template <class T> V3<T> operator-(const V3<T>& a, const V3<T>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-template <class T> V3<T> operator+(const V3<T>& a, const V3<T>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-template <class T> T dot3(const V3<T>& a, const V3<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-template <class T> V3<T> scale3(const V3<T>& a, const T& s) { return {a.x * s, a.y * s, a.z * s}; }
+template <class T> struct V3 { T x, y, z; };
+template <class T> V3<T> operator-(const V3<T>& a, const V3<T>& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class T> V3<T> operator+(const V3<T>& a, const V3<T>& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class T> T dot3(const V3<T>& a, const V3<T>& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <class T> V3<T> scale3(const V3<T>& a, const T& s) {
+    return {a.x * s, a.y * s, a.z * s};
+}
 
-inline V3<Interval> to_v3i(Vec3 p) { return {Interval(p.x), Interval(p.y), Interval(p.z)}; }
-inline V3<double> to_v3(Vec3 p) { return {p.x, p.y, p.z}; }
+inline V3<Interval> to_v3i(Vec3 p) {
+    return {Interval(p.x), Interval(p.y), Interval(p.z)};
+}
+inline V3<double> to_v3(Vec3 p) {
+    return {p.x, p.y, p.z};
+}
 
 // max(0, x), sqrt and x^s for x >= 0, for both number types.
-inline double clamp0(double x) { return x > 0 ? x : 0.0; }
-inline Interval clamp0(Interval x) { return {std::max(0.0, x.lo()), std::max(0.0, x.hi())}; }
-inline double clamp01(double x) { return x < 0 ? 0.0 : (x > 1 ? 1.0 : x); }
+inline double clamp0(double x) {
+    return x > 0 ? x : 0.0;
+}
+inline Interval clamp0(Interval x) {
+    return {std::max(0.0, x.lo()), std::max(0.0, x.hi())};
+}
+inline double clamp01(double x) {
+    return x < 0 ? 0.0 : (x > 1 ? 1.0 : x);
+}
 inline Interval clamp01(Interval x) {
     return {std::clamp(x.lo(), 0.0, 1.0), std::clamp(x.hi(), 0.0, 1.0)};
 }
-inline double root(double x) { return std::sqrt(x); }
-inline Interval root(Interval x) { return sqrt(x); }
-inline double power(double x, double s) { return std::pow(x, s); }
+inline double root(double x) {
+    return std::sqrt(x);
+}
+inline Interval root(Interval x) {
+    return sqrt(x);
+}
+inline double power(double x, double s) {
+    return std::pow(x, s);
+}
 // x^s is monotone for x >= 0; std::pow is within 1 ulp in glibc, so two ulps
 // outward enclose the true value.
 inline Interval power(Interval x, double s) {
     double lo = std::pow(std::max(0.0, x.lo()), s), hi = std::pow(std::max(0.0, x.hi()), s);
     return {std::max(0.0, next_down(next_down(lo))), next_up(next_up(hi))};
 }
-inline Interval cosine_range(Interval c) { return intersect(c, Interval(-1.0, 1.0)); }
-inline double cosine_range(double c) { return std::clamp(c, -1.0, 1.0); }
-inline bool surely_negative(double x) { return x < 0; }
-inline bool surely_negative(Interval x) { return x.hi() < 0; }
-inline bool possibly_zero_crossing(double) { return false; }
-inline bool possibly_zero_crossing(Interval x) { return x.lo() <= 0 && x.hi() >= 0; }
+inline Interval cosine_range(Interval c) {
+    return intersect(c, Interval(-1.0, 1.0));
+}
+inline double cosine_range(double c) {
+    return std::clamp(c, -1.0, 1.0);
+}
+inline bool surely_negative(double x) {
+    return x < 0;
+}
+inline bool surely_negative(Interval x) {
+    return x.hi() < 0;
+}
+inline bool possibly_zero_crossing(double) {
+    return false;
+}
+inline bool possibly_zero_crossing(Interval x) {
+    return x.lo() <= 0 && x.hi() >= 0;
+}
 
 // Intensity in [0, 1] per channel at surface point P with (not necessarily unit)
 // normal N, seen from `eye`. The normal is turned towards the viewer (open
@@ -60,9 +94,11 @@ std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3
     std::array<T, 3> I{T(scene.ambient * m.color.x), T(scene.ambient * m.color.y),
                        T(scene.ambient * m.color.z)};
     if constexpr (std::is_same_v<T, Interval>) {
-        I = {Interval(scene.ambient) * Interval(m.color.x), Interval(scene.ambient) * Interval(m.color.y),
+        I = {Interval(scene.ambient) * Interval(m.color.x),
+             Interval(scene.ambient) * Interval(m.color.y),
              Interval(scene.ambient) * Interval(m.color.z)};
-        if (possibly_zero_crossing(nv)) return {Interval(0.0, 1.0), Interval(0.0, 1.0), Interval(0.0, 1.0)};
+        if (possibly_zero_crossing(nv))
+            return {Interval(0.0, 1.0), Interval(0.0, 1.0), Interval(0.0, 1.0)};
     }
     if (surely_negative(nv)) N = {-N.x, -N.y, -N.z};
     if (m.diffuse == 0 && m.specular == 0) return {clamp01(I[0]), clamp01(I[1]), clamp01(I[2])};
@@ -84,8 +120,10 @@ std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3
             if constexpr (std::is_same_v<T, double>) {
                 if (cos_nl <= 0) spec = 0; // light behind the surface: no highlight
             } else {
-                if (cos_nl.hi() <= 0) spec = zero;
-                else if (cos_nl.lo() <= 0) spec = hull(spec, zero);
+                if (cos_nl.hi() <= 0)
+                    spec = zero;
+                else if (cos_nl.lo() <= 0)
+                    spec = hull(spec, zero);
             }
         }
         const double lc[3] = {light.color.x, light.color.y, light.color.z};

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// One ray against boxes and triangles, for TRAY (paper section 8) and the
+// single-ray case of Proposition 11: a slab test for the hull comparison of
+// remark 1 (conservative, so a hull never drops a triangle the ray hits) and
+// the watertight ray-triangle test of Woop, Benthin and Wald (JCGT 2013): the
+// edge functions of an edge are computed from the same sheared vertex
+// coordinates in both triangles that share it, and zero counts as inside, so a
+// ray through a shared edge or vertex hits at least one of the triangles.
+#pragma once
+
+#include <seamless/base/vec.h>
+
+namespace seamless {
+
+// A ray o + t d (t > 0), prepared for many box and triangle tests.
+struct TriangleRay {
+    Vec3 origin, dir;
+    Vec3 inv_dir; // 1 / d per axis (+-inf where d is 0)
+    // Woop et al.: kz the axis of largest |d|, kx and ky the others (swapped so
+    // the winding is kept), and the shear that maps d onto the kz axis.
+    int kx = 0, ky = 1, kz = 2;
+    double sx = 0, sy = 0, sz = 1;
+
+    TriangleRay(Vec3 o, Vec3 d);
+};
+
+// Parameter interval [t0, t1] of the ray inside `box` intersected with
+// [0, t_max]; false when empty. Robust for axis-parallel rays (a zero direction
+// component tests the origin against the slab) and widened by a few ulps
+// (pbrt's 1 + 2 gamma(3)), so rounding never loses a grazing hit.
+bool ray_hits_box(const TriangleRay& ray, const Box3& box, double t_max);
+
+struct RayTriangleHit {
+    double t = 0;
+    double b0 = 0, b1 = 0, b2 = 0; // barycentric weights of the corners p0, p1, p2
+};
+
+// Watertight test; true and `hit` when the ray meets the triangle at t in
+// (0, t_max). Degenerate (zero-area as seen along the ray) triangles are missed.
+bool intersect_triangle(const TriangleRay& ray, Vec3 p0, Vec3 p1, Vec3 p2, double t_max,
+                        RayTriangleHit& hit);
+
+} // namespace seamless
