@@ -35,7 +35,9 @@ inline double next_up(double x) {
     return std::bit_cast<double>(b);
 }
 // The next representable double below x (x itself for -inf and NaN).
-inline double next_down(double x) { return -next_up(-x); }
+inline double next_down(double x) {
+    return -next_up(-x);
+}
 
 class Interval {
   public:
@@ -53,7 +55,9 @@ class Interval {
         return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     }
     // Hull of two reals that need not be ordered.
-    static constexpr Interval hull(double a, double b) { return a <= b ? Interval(a, b) : Interval(b, a); }
+    static constexpr Interval hull(double a, double b) {
+        return a <= b ? Interval(a, b) : Interval(b, a);
+    }
 
     constexpr double lo() const { return lo_; }
     constexpr double hi() const { return hi_; }
@@ -75,10 +79,14 @@ class Interval {
     double width() const { return next_up(hi_ - lo_); }
     // Magnitude max |x| and mignitude min |x| (paper section 2).
     double mag() const { return std::max(std::abs(lo_), std::abs(hi_)); }
-    double mig() const { return (lo_ <= 0 && hi_ >= 0) ? 0.0 : std::min(std::abs(lo_), std::abs(hi_)); }
+    double mig() const {
+        return (lo_ <= 0 && hi_ >= 0) ? 0.0 : std::min(std::abs(lo_), std::abs(hi_));
+    }
 
     constexpr bool contains(double x) const { return lo_ <= x && x <= hi_; }
-    constexpr bool contains(Interval b) const { return b.is_empty() || (lo_ <= b.lo_ && b.hi_ <= hi_); }
+    constexpr bool contains(Interval b) const {
+        return b.is_empty() || (lo_ <= b.lo_ && b.hi_ <= hi_);
+    }
     // b lies in the interior of this interval (Theorem 6 iii). A thin bound of
     // this interval counts as interior in its own coordinate, as in the paper's int(A).
     constexpr bool contains_in_interior(Interval b) const {
@@ -99,6 +107,25 @@ class Interval {
     }
     friend constexpr Interval operator-(Interval a) { return {-a.hi_, -a.lo_}; }
     friend Interval operator*(Interval a, Interval b) {
+        // Sign cases (paper section 2, remark 2: most products need two real
+        // multiplications); bounds with infinities take the general path below.
+        constexpr double big = std::numeric_limits<double>::max();
+        if (a.lo_ >= -big && a.hi_ <= big && b.lo_ >= -big && b.hi_ <= big) {
+            if (a.lo_ >= 0) {
+                if (b.lo_ >= 0) return {next_down(a.lo_ * b.lo_), next_up(a.hi_ * b.hi_)};
+                if (b.hi_ <= 0) return {next_down(a.hi_ * b.lo_), next_up(a.lo_ * b.hi_)};
+                return {next_down(a.hi_ * b.lo_), next_up(a.hi_ * b.hi_)};
+            }
+            if (a.hi_ <= 0) {
+                if (b.lo_ >= 0) return {next_down(a.lo_ * b.hi_), next_up(a.hi_ * b.lo_)};
+                if (b.hi_ <= 0) return {next_down(a.hi_ * b.hi_), next_up(a.lo_ * b.lo_)};
+                return {next_down(a.lo_ * b.hi_), next_up(a.lo_ * b.lo_)};
+            }
+            if (b.lo_ >= 0) return {next_down(a.lo_ * b.hi_), next_up(a.hi_ * b.hi_)};
+            if (b.hi_ <= 0) return {next_down(a.hi_ * b.lo_), next_up(a.lo_ * b.lo_)};
+            return {next_down(std::min(a.lo_ * b.hi_, a.hi_ * b.lo_)),
+                    next_up(std::max(a.lo_ * b.lo_, a.hi_ * b.hi_))};
+        }
         if (a.is_thin() && a.lo_ == 0) return Interval(0); // 0 * anything finite or not
         if (b.is_thin() && b.lo_ == 0) return Interval(0);
         double p1 = a.lo_ * b.lo_, p2 = a.lo_ * b.hi_, p3 = a.hi_ * b.lo_, p4 = a.hi_ * b.hi_;

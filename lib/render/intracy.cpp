@@ -47,6 +47,7 @@ namespace {
 struct Mark {
     int patch;
     ParamBox box;
+    IVec3 hull; // camera-space enclosure of the patch over box (or a superset)
 };
 
 struct SubScreen {
@@ -259,7 +260,7 @@ class PartRenderer {
         arena_.clear();
         stack_.clear();
         for (size_t k = 0; k < ps_.patches.size(); ++k)
-            arena_.push_back({static_cast<int>(k), ParamBox{}});
+            arena_.push_back({static_cast<int>(k), ParamBox{}, ps_.patches[k].hull});
         stack_.push_back({x0, y0, x1, y1, 0, arena_.size()});
         while (!stack_.empty()) {
             SubScreen B = stack_.back();
@@ -306,7 +307,8 @@ class PartRenderer {
                 Mark m = work_.back();
                 work_.pop_back();
                 const ProjectedPatch& pp = ps_.patches[m.patch];
-                const IVec3 P = enclose_point(pp.forms, m.box);
+                // Hull comparison with the hull the mark brought from its parent.
+                const IVec3& P = m.hull;
                 if (!(P[2].hi() > 0)) continue; // behind the eye
                 if (!(P[0] - a * P[2]).contains(0.0) || !(P[1] - b * P[2]).contains(0.0)) continue;
                 if (thin) {
@@ -316,6 +318,7 @@ class PartRenderer {
                 cluster_system(pp.forms, a, b, sys_);
                 if (!narrow(sys_, m.box)) continue;
                 const IVec3 Q = enclose_point(pp.forms, m.box);
+                m.hull = Q;
                 const bool wide = !(Q[2].lo() > 0) ||
                                   (Q[0] / Q[2]).width() > 2 * (a.width() + pitch_a) ||
                                   (Q[1] / Q[2]).width() > 2 * (b.width() + pitch_b);
@@ -342,7 +345,7 @@ class PartRenderer {
                 ParamBox parts[2];
                 const int n =
                     nv.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);
-                for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i]});
+                for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i], Q});
             }
         }
         const size_t nmarks = arena_.size() - first;
@@ -401,7 +404,7 @@ class PartRenderer {
     bool improve(SubScreen& B, size_t first, size_t n, RenderStats& st) {
         Interval ha = Interval::empty(), hb = Interval::empty();
         for (size_t k = first; k < first + n; ++k) {
-            const IVec3 P = enclose_point(ps_.patches[arena_[k].patch].forms, arena_[k].box);
+            const IVec3& P = arena_[k].hull;
             if (!(P[2].lo() > 0)) return false; // crosses the eye plane: no projection hull
             ha = hull(ha, P[0] / P[2]);
             hb = hull(hb, P[1] / P[2]);
@@ -453,7 +456,7 @@ class PartRenderer {
         int best_patch = -1;
         double best_lo = std::numeric_limits<double>::infinity();
         for (size_t k = first; k < first + n; ++k) {
-            const Interval q = enclose_point(ps_.patches[arena_[k].patch].forms, arena_[k].box)[2];
+            const Interval q = arena_[k].hull[2];
             if (q.lo() < best_lo) {
                 best_lo = q.lo();
                 best_patch = arena_[k].patch;
@@ -474,10 +477,10 @@ class PartRenderer {
         if (!(qbest.lo() > 0)) return false;
         for (size_t k = first; k < first + n; ++k) {
             if (arena_[k].patch == best_patch) continue;
-            const Interval q = enclose_point(ps_.patches[arena_[k].patch].forms, arena_[k].box)[2];
+            const Interval q = arena_[k].hull[2];
             if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
         }
-        const Mark m{best_patch, box};
+        const Mark m{best_patch, box, {}};
         // Step 8: SHADE over the hulls of the intersection points and normals.
         const PatchEnclosure e = enclose(pp.forms, box);
         const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
@@ -506,7 +509,7 @@ class PartRenderer {
         // Step 9 with remark 2: corner rays, bilinear form, dither.
         std::array<double, 3> corner[4];
         const int cx[4] = {B.x0, B.x1, B.x0, B.x1}, cy[4] = {B.y0, B.y0, B.y1, B.y1};
-        const Mark only{m.patch, box};
+        const Mark only{m.patch, box, {}};
         for (int k = 0; k < 4; ++k) {
             const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5),
                                       ps_.frame.screen_b(cy[k] + 0.5), &only, 1, st, hits_);

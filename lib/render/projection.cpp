@@ -23,6 +23,7 @@ ProjectedScene project_scene(const Scene& scene, int width, int height) {
             ProjectedPatch pp;
             pp.patch = b;
             pp.forms = patch_forms(b);
+            pp.hull = enclose_point(pp.forms, ParamBox{});
             pp.material = scene.surface_material[k];
             ps.patches.push_back(std::move(pp));
         }

@@ -16,6 +16,7 @@ namespace seamless {
 struct ProjectedPatch {
     BezierPatch patch; // homogeneous control points in camera coordinates
     PatchForms forms;  // power forms of `patch` (section 4)
+    IVec3 hull;        // enclosure of the whole patch, camera coordinates
     int material = 0;
 };
 
