@@ -81,7 +81,11 @@ Image render_tray(const Scene& scene, const RenderOptions& opt, RenderStats& st)
                 const RayTriangleHit& w = best_hit;
                 const Vec3 P = w.b0 * mesh.positions[tri[0]] + w.b1 * mesh.positions[tri[1]] +
                                w.b2 * mesh.positions[tri[2]];
-                const Vec3 N = w.b0 * n[0] + w.b1 * n[1] + w.b2 * n[2];
+                Vec3 N = w.b0 * n[0] + w.b1 * n[1] + w.b2 * n[2];
+                // Corner normals that cancel (never seen, but possible): the facet's own.
+                if (!(dot(N, N) > 0))
+                    N = cross(mesh.positions[tri[1]] - mesh.positions[tri[0]],
+                              mesh.positions[tri[2]] - mesh.positions[tri[0]]);
                 const int surface = mesh.triangle_surface[best];
                 I = shade<double>(scene, scene.materials[scene.surface_material[surface]], to_v3(P),
                                   to_v3(N), frame.eye);

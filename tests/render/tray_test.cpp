@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: MIT
+// TRAY (paper section 8) against INTRACY: the same pictures up to the planar
+// approximation of the tessellation (99% of pixels within one level, the same
+// surface pixels off the silhouettes), on the default scene and on single
+// patches (face-on, grazing, a pole in view); the same image sequentially and in
+// parallel. Also the ray-box and watertight ray-triangle tests it is built on.
+#include "render_compare.h"
+#include "test_util.h"
+
+#include <seamless/model/model.h>
+#include <seamless/render/ray_triangle.h>
+#include <seamless/render/render.h>
+
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <limits>
+
+using namespace seamless;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+void check_tray_against_intracy(const Scene& scene, int w, int h) {
+    RenderOptions o;
+    o.width = w;
+    o.height = h;
+    o.levels = 16;
+    RenderStats si, st;
+    o.method = RenderMethod::intracy;
+    const Image intracy = render(scene, o, &si);
+    o.method = RenderMethod::tray;
+    const Image tray = render(scene, o, &st);
+    const test::ImageComparison c = test::compare(tray, intracy);
+    INFO("within one level " << c.fraction_within_one() << ", max difference " << c.max_difference
+                             << ", surface mismatches " << c.surface_mismatch << " ("
+                             << c.surface_mismatch_off_silhouette
+                             << " off the silhouette), triangles " << st.triangles);
+    CHECK(c.fraction_within_one() >= 0.99);
+    CHECK(c.surface_mismatch_off_silhouette == 0);
+    // TRAY's statistics: every pixel a one-pixel sub-screen with one primary ray.
+    const long long pixels = static_cast<long long>(w) * h;
+    CHECK(st.primary_rays == pixels);
+    CHECK(st.single_pixels == pixels);
+    CHECK(st.subscreens_by_size == std::map<long long, long long>{{1, pixels}});
+    CHECK(st.triangles > 0);
+    CHECK(st.background_pixels == pixels - std::count(tray.surface.begin(), tray.surface.end(), 1));
+}
+
+// A scene of one model seen from `eye` towards `look_at`, written to `dir`
+// (as in intracy_test.cpp).
+Scene one_model_scene(const std::filesystem::path& dir, const std::string& model_json, Vec3 eye,
+                      Vec3 look_at, Vec3 up = {0, 0, 1}) {
+    test::write_file(dir / "model.json", model_json);
+    nlohmann::json s = {
+        {"version", 1},
+        {"camera",
+         {{"eye", {eye.x, eye.y, eye.z}},
+          {"look_at", {look_at.x, look_at.y, look_at.z}},
+          {"up", {up.x, up.y, up.z}},
+          {"fov_deg", 40},
+          {"width", 64},
+          {"height", 48}}},
+        {"levels", 16},
+        {"background", {0.0, 0.0, 0.0}},
+        {"ambient", 0.1},
+        {"lights", {{{"position", {eye.x + 1, eye.y + 2, eye.z + 3}}, {"color", {1, 1, 1}}}}},
+        {"materials",
+         {{"m",
+           {{"color", {0.9, 0.6, 0.3}}, {"diffuse", 0.8}, {"specular", 0.4}, {"shininess", 25}}}}},
+        {"objects", {{{"model", "model.json"}, {"material", "m"}}}}};
+    test::write_file(dir / "scene.json", s.dump());
+    return load_scene(dir / "scene.json");
+}
+
+// One bicubic patch: a gentle dome over [-1,1]^2 in the plane z = 0.
+std::string dome() {
+    nlohmann::json pts = nlohmann::json::array();
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            double x = -1 + 2.0 * i / 3, y = -1 + 2.0 * j / 3;
+            pts.push_back({x, y, (i == 1 || i == 2) && (j == 1 || j == 2) ? 0.3 : 0.0});
+        }
+    nlohmann::json m = {{"version", 1},
+                        {"surfaces",
+                         {{{"name", "dome"},
+                           {"degree", {3, 3}},
+                           {"size", {4, 4}},
+                           {"knots_u", {0, 0, 0, 0, 1, 1, 1, 1}},
+                           {"knots_v", {0, 0, 0, 0, 1, 1, 1, 1}},
+                           {"control_points", pts}}}}};
+    return m.dump();
+}
+
+} // namespace
+
+TEST_CASE("Ray-box slab test", "[tray]") {
+    Box3 box;
+    box.extend(Vec3{0, 0, 0});
+    box.extend(Vec3{1, 1, 1});
+    // Axis-parallel rays, also with the origin on a slab plane (0 * inf).
+    CHECK(ray_hits_box(TriangleRay({0.5, 0.5, -1}, {0, 0, 1}), box, kInf));
+    CHECK(ray_hits_box(TriangleRay({0, 0.5, -1}, {0, 0, 1}), box, kInf));
+    CHECK(ray_hits_box(TriangleRay({1, 1, -1}, {0, 0, 1}), box, kInf));
+    CHECK_FALSE(ray_hits_box(TriangleRay({1.5, 0.5, -1}, {0, 0, 1}), box, kInf));
+    CHECK_FALSE(ray_hits_box(TriangleRay({0.5, 0.5, -1}, {0, 0, -1}), box, kInf));
+    // Beyond t_max (the nearest hit so far) the box is pruned.
+    CHECK_FALSE(ray_hits_box(TriangleRay({0.5, 0.5, -1}, {0, 0, 1}), box, 0.5));
+    CHECK(ray_hits_box(TriangleRay({0.5, 0.5, -1}, {0, 0, 1}), box, 1.0));
+    // A flat box (a triangle in z = 0) hit at a slant.
+    Box3 flat;
+    flat.extend(Vec3{0, 0, 0});
+    flat.extend(Vec3{1, 1, 0});
+    CHECK(ray_hits_box(TriangleRay({-0.3, 0.1, 1}, {1.3, 0.9, -1}), flat, kInf));
+}
+
+TEST_CASE("Watertight ray-triangle test", "[tray]") {
+    const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{1, 1, 0};
+    RayTriangleHit h;
+    REQUIRE(intersect_triangle(TriangleRay({0.2, 0.3, 2}, {0, 0, -1}), a, b, c, kInf, h));
+    CHECK(h.t == Approx(2));
+    CHECK(h.b0 == Approx(0.5));
+    CHECK(h.b1 == Approx(0.2));
+    CHECK(h.b2 == Approx(0.3));
+    // Both windings; behind the origin and beyond t_max there is no hit.
+    CHECK(intersect_triangle(TriangleRay({0.2, 0.3, 2}, {0, 0, -1}), a, c, b, kInf, h));
+    CHECK_FALSE(intersect_triangle(TriangleRay({0.2, 0.3, 2}, {0, 0, 1}), a, b, c, kInf, h));
+    CHECK_FALSE(intersect_triangle(TriangleRay({0.2, 0.3, 2}, {0, 0, -1}), a, b, c, 1.5, h));
+    CHECK_FALSE(intersect_triangle(TriangleRay({0.8, 0.8, 2}, {0, 0, -1}), a, b, c, kInf, h));
+    // Rays through the shared edge b-c of the quad (a, b, c) + (b, d, c), at
+    // awkward slants: each hits at least one of the two triangles.
+    int missed = 0;
+    for (int k = 1; k < 1000; ++k) {
+        const double s = k / 1000.0;
+        const Vec3 on_edge = lerp(b, c, s);
+        const Vec3 o{0.37 + 0.001 * k, -0.61, 1.7};
+        const TriangleRay ray(o, on_edge - o);
+        const bool hit1 = intersect_triangle(ray, a, b, c, kInf, h);
+        const bool hit2 = intersect_triangle(ray, b, d, c, kInf, h);
+        missed += !hit1 && !hit2;
+    }
+    CHECK(missed == 0);
+}
+
+TEST_CASE("TRAY agrees with INTRACY on the default scene", "[tray]") {
+    check_tray_against_intracy(load_scene(test::data_dir() / "scenes" / "teapot.json"), 96, 72);
+}
+
+TEST_CASE("TRAY agrees with INTRACY on single patches: face-on, grazing", "[tray]") {
+    auto dir = test::scratch_dir("tray-patch");
+    SECTION("face-on") {
+        check_tray_against_intracy(
+            one_model_scene(dir, dome(), {0.1, 0.2, 4}, {0, 0, 0}, {0, 1, 0}), 64, 48);
+    }
+    SECTION("grazing") {
+        check_tray_against_intracy(one_model_scene(dir, dome(), {5, 0.5, 0.35}, {0, 0, 0}), 64, 48);
+    }
+}
+
+TEST_CASE("TRAY agrees with INTRACY with a pole of the teapot in view", "[tray]") {
+    auto dir = test::scratch_dir("tray-pole");
+    const Model teapot = load_model(test::model_path("teapot.json"));
+    Model lid;
+    for (int k = 20; k < 28; ++k) lid.surfaces.push_back(teapot.surfaces[k]); // knob and lid
+    check_tray_against_intracy(one_model_scene(dir, to_json(lid), {0.3, -0.4, 5}, {0, 0, 3}), 64,
+                               48);
+}
+
+TEST_CASE("TRAY gives the same image sequentially and in parallel", "[tray]") {
+    const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
+    RenderOptions o;
+    o.method = RenderMethod::tray;
+    o.width = 80;
+    o.height = 60;
+    o.threads = 1;
+    RenderStats s1, s2;
+    const Image a = render(scene, o, &s1);
+    o.threads = 2;
+    const Image b = render(scene, o, &s2);
+    CHECK(a.level == b.level);
+    CHECK(a.surface == b.surface);
+    CHECK(s1.pixel_patch_solves == s2.pixel_patch_solves);
+}
