@@ -38,6 +38,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 
@@ -205,12 +206,19 @@ struct Hit {
 // Nearest intersection of one primary ray with the marked patches (step 6,
 // remark 1), each searched in its box with Hansen-Sengupta and the covering method.
 Hit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                RenderStats& st, std::vector<RayPatchHit>& hits) {
+                RenderStats& st, std::vector<RayPatchHit>& hits,
+                std::vector<std::pair<double, int>>& order) {
     Hit best;
-    double best_q = std::numeric_limits<double>::infinity();
+    double best_q = std::numeric_limits<double>::infinity(); // upper bound of the nearest depth
     const Ray ray = ProjectedScene::primary_ray(a, b);
     ++st.primary_rays;
-    for (size_t k = 0; k < n; ++k) {
+    // Nearest first; once a hit is found, marks that lie entirely beyond it are
+    // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
+    order.clear();
+    for (size_t k = 0; k < n; ++k) order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
+    std::sort(order.begin(), order.end());
+    for (const auto& [zlo, k] : order) {
+        if (zlo > best_q) break;
         const ProjectedPatch& pp = ps.patches[marks[k].patch];
         hits.clear();
         RayPatchStats rs;
@@ -219,11 +227,9 @@ Hit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks,
         st.hs_iterations += rs.iterations;
         auto h = nearest_hit(hits, 0.0);
         if (!h || !(h->q.hi() > 0)) continue;
-        const double q = std::max(h->q.lo(), 0.0);
-        if (q < best_q) {
-            best_q = q;
+        if (best.patch < 0 || h->q.mid() < best.q)
             best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid()};
-        }
+        best_q = std::min(best_q, h->q.hi());
     }
     return best;
 }
@@ -356,7 +362,8 @@ class PartRenderer {
         }
         if (thin) {
             ++st.single_pixels;
-            const Hit h = solve_pixel(ps_, a.lo(), b.lo(), &arena_[first], nmarks, st, hits_);
+            const Hit h =
+                solve_pixel(ps_, a.lo(), b.lo(), &arena_[first], nmarks, st, hits_, order_);
             if (h.patch < 0) {
                 paint_background(B.x0, B.y0, B.x0, B.y0, st);
             } else {
@@ -431,8 +438,9 @@ class PartRenderer {
         B.y1 = ny1;
         if (B.x0 == B.x1 && B.y0 == B.y1) { // down to one pixel: solve it now
             ++st.single_pixels;
-            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5),
-                                      ps_.frame.screen_b(B.y0 + 0.5), &arena_[first], n, st, hits_);
+            const Hit h =
+                solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
+                            &arena_[first], n, st, hits_, order_);
             if (h.patch < 0) {
                 paint_background(B.x0, B.y0, B.x0, B.y0, st);
             } else {
@@ -512,7 +520,7 @@ class PartRenderer {
         const Mark only{m.patch, box, {}};
         for (int k = 0; k < 4; ++k) {
             const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5),
-                                      ps_.frame.screen_b(cy[k] + 0.5), &only, 1, st, hits_);
+                                      ps_.frame.screen_b(cy[k] + 0.5), &only, 1, st, hits_, order_);
             if (h.patch < 0) {
                 for (int c = 0; c < 3; ++c) corner[k][c] = I[c].mid();
             } else {
@@ -547,6 +555,7 @@ class PartRenderer {
     std::vector<Mark> arena_, work_;
     std::vector<SubScreen> stack_;
     std::vector<RayPatchHit> hits_;
+    std::vector<std::pair<double, int>> order_;
     ClusterSystem sys_;
 };
 
