@@ -344,13 +344,14 @@ class PartRenderer {
                     work_.push_back(lo);
                     continue;
                 }
-                // Remark 3: a possible silhouette (normal . view contains 0) is separated.
-                const PatchEnclosure e = enclose(pp.forms, m.box);
-                const Interval nv =
-                    e.normal[0] * e.point[0] + e.normal[1] * e.point[1] + e.normal[2] * e.point[2];
+                // Remark 3: where a silhouette is possible the patch is separated. In
+                // the projected problem the silhouette is where the Jacobian of G
+                // (the projected normal's z component) vanishes.
+                const Interval J = horner(sys_.Gs, 0, m.box) * horner(sys_.Gt, 1, m.box) -
+                                   horner(sys_.Gs, 1, m.box) * horner(sys_.Gt, 0, m.box);
                 ParamBox parts[2];
                 const int n =
-                    nv.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);
+                    J.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);
                 for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i], Q});
             }
         }
