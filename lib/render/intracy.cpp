@@ -234,6 +234,30 @@ Hit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks,
     return best;
 }
 
+// A corner ray of a certified cluster hits the patch exactly once in `box`.
+// Its intensity only steers the bilinear form of step 9, whose levels are then
+// clamped to the certified enclosure, so plain Newton in doubles suffices here;
+// it falls back to Hansen-Sengupta (remark 2) when it does not converge.
+bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,
+                   double& t) {
+    s = box.s.mid();
+    t = box.t.mid();
+    for (int it = 0; it < 12; ++it) {
+        const SurfacePoint p = evaluate(b, s, t);
+        const double f0 = p.point.x - a * p.point.z, f1 = p.point.y - bb * p.point.z;
+        const double j00 = p.du.x - a * p.du.z, j01 = p.dv.x - a * p.dv.z;
+        const double j10 = p.du.y - bb * p.du.z, j11 = p.dv.y - bb * p.dv.z;
+        const double det = j00 * j11 - j01 * j10;
+        if (!(std::abs(det) > 0)) return false;
+        const double ds = (f0 * j11 - f1 * j01) / det, dt = (j00 * f1 - j10 * f0) / det;
+        s -= ds;
+        t -= dt;
+        if (!box.s.contains(s) || !box.t.contains(t)) return false;
+        if (std::abs(ds) + std::abs(dt) < 1e-12) return true;
+    }
+    return false;
+}
+
 std::array<double, 3> shade_hit(const ProjectedScene& ps, const Hit& h) {
     Vec3 P, N;
     const ProjectedPatch& pp = ps.patches[h.patch];
@@ -520,6 +544,13 @@ class PartRenderer {
         const int cx[4] = {B.x0, B.x1, B.x0, B.x1}, cy[4] = {B.y0, B.y0, B.y1, B.y1};
         const Mark only{m.patch, box, {}};
         for (int k = 0; k < 4; ++k) {
+            double cs, ct;
+            const double ca = ps_.frame.screen_a(cx[k] + 0.5), cb = ps_.frame.screen_b(cy[k] + 0.5);
+            if (newton_corner(pp.patch, ca, cb, box, cs, ct)) {
+                ++st.primary_rays;
+                corner[k] = shade_hit(ps_, Hit{m.patch, cs, ct, 0});
+                continue;
+            }
             const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5),
                                       ps_.frame.screen_b(cy[k] + 0.5), &only, 1, st, hits_, order_);
             if (h.patch < 0) {
