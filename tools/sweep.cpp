@@ -76,7 +76,8 @@ std::string markdown(const std::vector<ModelSweep>& sweeps, const std::vector<Th
        << "**not a Release build** (assertions on)"
 #endif
        << ". Tessellation is single-threaded; the deviation measurement used " << threads
-       << " thread(s).\n\n";
+       << " thread(s). Times are wall-clock seconds on a machine shared with other jobs: "
+          "expect a few tens of percent of noise.\n\n";
     os << "Tolerances (paper section 8, scaled together): eps1 = f * 0.001 d_max, eps2 = f * "
           "0.02 d_max. Columns:\n\n"
           "- **bound**: `max_error_bound`, the largest a-priori bound of a subpatch "
@@ -292,7 +293,10 @@ void add_sweep(CLI::App& app, Action& action) {
             }
             std::string cmdline = "seamless sweep";
             for (const std::string& p : args->models) cmdline += " " + p;
-            cmdline += " --decades " + std::to_string(args->decades) + " --steps-per-decade " +
+            std::ostringstream first;
+            first << args->first;
+            cmdline += " --first-decade " + first.str() + " --decades " +
+                       std::to_string(args->decades) + " --steps-per-decade " +
                        std::to_string(args->steps);
             const int threads = args->threads > 0
                                     ? args->threads

@@ -108,6 +108,19 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     // (d) Fans: each planar subpatch from its centre over its ring.
     TriangleMesh& mesh = out.mesh;
     for (const BSplineSurface& s : model.surfaces) mesh.surface_names.push_back(s.name);
+    // A fan has four triangles plus one per finer neighbour's vertex on its
+    // sides, rarely more than eight on average. Reserving avoids the copies
+    // (and page faults) of growing these large arrays; untouched reserve costs
+    // no memory.
+    const size_t expected = 8 * out.subpatches.size();
+    mesh.triangles.reserve(expected);
+    mesh.triangle_surface.reserve(expected);
+    mesh.corner_normals.reserve(expected);
+    mesh.corner_uvs.reserve(expected);
+    out.trees.nodes.reserve(out.trees.nodes.size() + 2 * expected);
+    vr.positions.reserve(2 * out.subpatches.size() + expected / 4);
+    vr.placed.reserve(2 * out.subpatches.size() + expected / 4);
+    vr.index.reserve(out.subpatches.size() + expected / 8);
     std::vector<int> scratch;
     std::vector<RingVertex> ring;
     std::vector<FanVertex> fan;

@@ -107,7 +107,7 @@ TEST_CASE("enclosures of teapot patches contain sampled values", "[enclosure]") 
     const auto patches = bezier_patches(load_model(test::model_path("teapot.json")));
     for (const auto& b : patches) {
         const PatchForms f = patch_forms(b);
-        for (const ParamBox& box : test_boxes(rng)) check_box(b, f, box, rng, 2000);
+        for (const ParamBox& box : test_boxes(rng)) check_box(b, f, box, rng, 10000);
     }
 }
 
@@ -121,7 +121,7 @@ TEST_CASE("enclosures of random patches of degree 1 to 5 contain sampled values"
                 REQUIRE(f.rational == rational);
                 const auto boxes = test_boxes(rng);
                 for (size_t i = 0; i < boxes.size(); ++i)
-                    check_box(b, f, boxes[i], rng, i == 0 ? 10000 : 1000);
+                    check_box(b, f, boxes[i], rng, 10000);
             }
 }
 

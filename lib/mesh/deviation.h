@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// Measured two-way deviation between a model's exact surfaces and its
+// tessellation (paper section 8: accuracy against run time), to set beside the
+// a-priori bound Subpatch::error_bound (tessellate/error_bound.h).
+//   surface -> mesh: exact points S(s,t) on a grid of every Bezier patch and of
+//     every planar subpatch, to the closest point of the mesh (CGAL AABB tree);
+//   mesh -> surface: barycentric samples of every triangle, projected onto the
+//     triangle's Bezier patch by Newton's method from the parameter the
+//     corner_uvs interpolate (a local minimum distance), and the plain
+//     same-parameter distance |S(uv(x)) - x| (an upper estimate, which the
+//     parametric bound of error_bound.h bounds directly).
+// Both are lower estimates of the Hausdorff distance (finite samples) and must
+// stay below max_error_bound.
+#pragma once
+
+#include <seamless/model/model.h>
+#include <seamless/tessellate/tessellation.h>
+
+#include <vector>
+
+namespace seamless {
+
+struct DeviationOptions {
+    // Surface -> mesh: patch_grid x patch_grid points (boundary included) per
+    // Bezier patch and subpatch_grid x subpatch_grid points at the cell centres
+    // ((i + 1/2) / subpatch_grid) of every planar subpatch.
+    int patch_grid = 33;
+    int subpatch_grid = 2;
+    // Mesh -> surface: barycentric points (i, j, k) / triangle_level with
+    // i + j + k = triangle_level per triangle (2: corners and edge midpoints),
+    // plus the centroid.
+    int triangle_level = 2;
+    int newton_iterations = 12;
+    // 0: std::thread::hardware_concurrency(). The result does not depend on it.
+    int threads = 0;
+};
+
+struct DeviationStats {
+    double max = 0, rms = 0; // model units
+    long long samples = 0;
+};
+
+struct Deviation {
+    DeviationStats surface_to_mesh;     // exact surface points to the closest mesh point
+    DeviationStats mesh_to_surface;     // mesh points to their Newton projection
+    DeviationStats mesh_same_parameter; // mesh points to S at their interpolated (u,v)
+    double seconds = 0;
+    // Largest of the three maxima; <= the tessellation's max_error_bound.
+    double max() const;
+};
+
+// `t` must be tessellate(model, ...) of this model (its subpatches and the
+// mesh's corner_uvs are used).
+Deviation measure_deviation(const Model& model, const Tessellation& t,
+                            const DeviationOptions& options = {});
+
+// One row of an accuracy-against-run-time sweep.
+struct SweepRow {
+    double factor = 0;      // eps1 = factor * 0.001 d_max, eps2 = factor * 0.02 d_max
+    TessellationStats tess; // triangles, seconds, max_error_bound, ...
+    Deviation deviation;
+    bool within_bound() const { return deviation.max() <= tess.max_error_bound; }
+};
+
+struct SweepOptions {
+    // factor = 10^(first_decade - k / steps_per_decade), k = 0 .. decades * steps_per_decade.
+    double first_decade = 1; // start at factor 10
+    int decades = 5;
+    int steps_per_decade = 2;
+    // Stop before a step whose predicted triangle count (the last count times
+    // the last growth ratio) exceeds this.
+    long long max_triangles = 2'000'000;
+    DeviationOptions deviation;
+};
+
+// Section 8's tolerances scaled together by factor over the decades.
+std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& options = {});
+
+} // namespace seamless
