@@ -41,6 +41,10 @@ struct CameraFrame {
         Vec3 d = h.xyz() - h.w * eye;
         return {dot(d, right), -dot(d, up), dot(d, forward), h.w};
     }
+    // Camera coordinates back to world space (the frame is orthonormal and
+    // right-handed, so normals map like directions).
+    Vec3 to_world_direction(Vec3 c) const { return c.x * right - c.y * up + c.z * forward; }
+    Vec3 to_world(Vec3 c) const { return eye + to_world_direction(c); }
     // World-space direction of the primary ray through screen point (a, b).
     Vec3 ray_direction(double a, double b) const { return forward + a * right - b * up; }
 };

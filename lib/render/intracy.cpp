@@ -29,8 +29,10 @@
 // (the enclosure holds the true intensity), and background is never painted
 // where a patch is hit.
 #include <seamless/render/projection.h>
+#include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
+#include <seamless/render/trace.h>
 
 #include <seamless/interval/hansen_sengupta.h>
 
@@ -41,6 +43,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <memory>
 
 namespace seamless {
 namespace {
@@ -258,12 +261,21 @@ bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& bo
     return false;
 }
 
-std::array<double, 3> shade_hit(const ProjectedScene& ps, const Hit& h) {
+// SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
+// secondary rays in play (a triangle scene), shadows, reflection and refraction
+// are traced against the triangles (section 7, SHADE); the local illumination
+// model is the same either way.
+std::array<double, 3> shade_hit(const ProjectedScene& ps, const Scene& scene,
+                                const TriangleScene* ts, const Hit& h) {
     Vec3 P, N;
     const ProjectedPatch& pp = ps.patches[h.patch];
     surface_frame(pp.patch, h.s, h.t, P, N);
-    return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N),
-                         Vec3{});
+    if (!ts)
+        return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N),
+                             Vec3{});
+    const Vec3 Pw = ps.frame.to_world(P);
+    return shade_ray(scene, *ts, Pw, normalize(ps.frame.to_world_direction(N)), pp.material,
+                     h.patch, normalize(ps.frame.eye - Pw), 0);
 }
 
 // Deterministic dither in [-0.5, 0.5) per pixel and channel (remark 2), so
@@ -280,8 +292,9 @@ double dither(int x, int y, int c) {
 
 class PartRenderer {
   public:
-    PartRenderer(const ProjectedScene& ps, const RenderOptions& opt, Image& image, int levels)
-        : ps_(ps), opt_(opt), image_(image), levels_(levels) {
+    PartRenderer(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
+                 const RenderOptions& opt, Image& image, int levels)
+        : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels) {
         const Vec3 bg = ps.lighting.background;
         for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
     }
@@ -392,7 +405,7 @@ class PartRenderer {
             if (h.patch < 0) {
                 paint_background(B.x0, B.y0, B.x0, B.y0, st);
             } else {
-                const auto I = shade_hit(ps_, h);
+                const auto I = shade_hit(ps_, scene_, ts_, h);
                 for (int c = 0; c < 3; ++c)
                     image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
                 image_.surface_at(B.x0, B.y0) = 1;
@@ -469,7 +482,7 @@ class PartRenderer {
             if (h.patch < 0) {
                 paint_background(B.x0, B.y0, B.x0, B.y0, st);
             } else {
-                const auto I = shade_hit(ps_, h);
+                const auto I = shade_hit(ps_, scene_, ts_, h);
                 for (int c = 0; c < 3; ++c)
                     image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
                 image_.surface_at(B.x0, B.y0) = 1;
@@ -478,6 +491,42 @@ class PartRenderer {
             return true;
         }
         return false;
+    }
+
+    // SHADE step 2 for a cluster: the cluster of rays from each light to the
+    // hull of the intersection points meets no triangle but those of the
+    // patch itself (step 1 marks them; Proposition 11 with remarks 1-2).
+    bool lights_unblocked(const ProjectedPatch& pp, int patch, const ParamBox& box) {
+        const Material& mat = ps_.lighting.materials[pp.material];
+        if (mat.reflect > 0 || mat.transmit > 0) return false;
+        if (mat.diffuse == 0 && mat.specular == 0) return true;
+        const IVec3 Pc = enclose_point(pp.forms, box);
+        IVec<3> Pw;
+        const CameraFrame& f = ps_.frame;
+        for (int i = 0; i < 3; ++i)
+            Pw[i] = Interval(f.eye[i]) + Pc[0] * Interval(f.right[i]) - Pc[1] * Interval(f.up[i]) +
+                    Pc[2] * Interval(f.forward[i]);
+        for (const Light& light : scene_.lights) {
+            if (!light.on()) continue;
+            RayCluster rc;
+            for (int i = 0; i < 3; ++i) {
+                rc.origin[i] = Interval(light.position[i]);
+                rc.direction[i] = Pw[i] - Interval(light.position[i]);
+            }
+            rc.q = Interval(0.0, 1.0);
+            const Box3 cb = cluster_box(rc);
+            bool blocked = false;
+            visit_candidate_triangles(
+                ts_->tess.trees, [&](const Box3& b) { return !blocked && b.overlaps(cb); },
+                [&](int t) {
+                    if (blocked || ts_->triangle_patch[t] == patch) return;
+                    const auto& tri = ts_->tess.mesh.triangles[t];
+                    const auto& V = ts_->tess.mesh.positions;
+                    if (may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])) blocked = true;
+                });
+            if (blocked) return false;
+        }
+        return true;
     }
 
     // Steps 7 to 9. Returns true if B was painted.
@@ -514,6 +563,10 @@ class PartRenderer {
             if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
         }
         const Mark m{best_patch, box, {}};
+        // SHADE steps 2-4 for the cluster: mirrors and glass are traced pixel by
+        // pixel (their clusters return the infinite interval: B is split), and
+        // every light must be certainly unblocked for the whole cluster.
+        if (ts_ && !lights_unblocked(pp, m.patch, box)) return false;
         // Step 8: SHADE over the hulls of the intersection points and normals.
         const PatchEnclosure e = enclose(pp.forms, box);
         const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
@@ -548,7 +601,7 @@ class PartRenderer {
             const double ca = ps_.frame.screen_a(cx[k] + 0.5), cb = ps_.frame.screen_b(cy[k] + 0.5);
             if (newton_corner(pp.patch, ca, cb, box, cs, ct)) {
                 ++st.primary_rays;
-                corner[k] = shade_hit(ps_, Hit{m.patch, cs, ct, 0});
+                corner[k] = shade_hit(ps_, scene_, ts_, Hit{m.patch, cs, ct, 0});
                 continue;
             }
             const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5),
@@ -556,7 +609,7 @@ class PartRenderer {
             if (h.patch < 0) {
                 for (int c = 0; c < 3; ++c) corner[k][c] = I[c].mid();
             } else {
-                corner[k] = shade_hit(ps_, h);
+                corner[k] = shade_hit(ps_, scene_, ts_, h);
             }
         }
         const double wx = std::max(1, B.x1 - B.x0), wy = std::max(1, B.y1 - B.y0);
@@ -579,6 +632,8 @@ class PartRenderer {
     }
 
     const ProjectedScene& ps_;
+    const Scene& scene_;
+    const TriangleScene* ts_; // null: no secondary rays in play
     const RenderOptions& opt_;
     Image& image_;
     int levels_;
@@ -599,6 +654,14 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     const int L = opt.levels > 0 ? opt.levels : scene.levels;
     const auto t0 = std::chrono::steady_clock::now();
     const ProjectedScene ps = project_scene(scene, W, H); // step 1
+    // Secondary rays (SHADE steps 2-4) need the triangles and patch trees; a
+    // scene without lit diffuse or specular surfaces and without mirrors or
+    // glass needs none, and gets none.
+    std::unique_ptr<TriangleScene> ts;
+    if (needs_secondary_rays(scene)) {
+        ts = std::make_unique<TriangleScene>(build_triangle_scene(scene));
+        st.triangles = ts->tess.mesh.triangle_count();
+    }
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     st.patches = static_cast<long long>(ps.patches.size());
@@ -613,7 +676,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
         const int i = p % px, j = p / px;
         const int x0 = i * W / px, x1 = (i + 1) * W / px - 1;
         const int y0 = j * H / py, y1 = (j + 1) * H / py - 1;
-        PartRenderer r(ps, opt, image, L);
+        PartRenderer r(ps, scene, ts.get(), opt, image, L);
         r.run(x0, y0, x1, y1, part_stats[p]);
         const int d = ++done;
         if (opt.progress) opt.progress(static_cast<double>(d) / parts);

@@ -3,12 +3,14 @@
 
 #include <seamless/render/projection.h>
 #include <seamless/render/shading.h>
+#include <seamless/render/trace.h>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 
 namespace seamless {
 
@@ -56,6 +58,12 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
     const int L = opt.levels > 0 ? opt.levels : scene.levels;
     const ProjectedScene ps = project_scene(scene, W, H);
     st.patches = static_cast<long long>(ps.patches.size());
+    // Secondary rays go against the triangles, as in INTRACY and TRAY.
+    std::unique_ptr<TriangleScene> ts;
+    if (needs_secondary_rays(scene)) {
+        ts = std::make_unique<TriangleScene>(build_triangle_scene(scene));
+        st.triangles = ts->tess.mesh.triangle_count();
+    }
     Image image(W, H, L);
     // Whole-patch screen rectangles for the hull comparison.
     struct Rect {
@@ -107,8 +115,14 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
             } else {
                 Vec3 P, N;
                 surface_frame(ps.patches[best].patch, bs, bt, P, N);
-                I = shade<double>(ps.lighting, ps.lighting.materials[ps.patches[best].material],
-                                  to_v3(P), to_v3(N), Vec3{});
+                if (ts) {
+                    const Vec3 Pw = ps.frame.to_world(P);
+                    I = shade_ray(scene, *ts, Pw, normalize(ps.frame.to_world_direction(N)),
+                                  ps.patches[best].material, best, normalize(ps.frame.eye - Pw), 0);
+                } else {
+                    I = shade<double>(ps.lighting, ps.lighting.materials[ps.patches[best].material],
+                                      to_v3(P), to_v3(N), Vec3{});
+                }
             }
             for (int c = 0; c < 3; ++c)
                 image.at(x, y, c) = static_cast<std::uint16_t>(quantise(I[c], L));

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Clusters of secondary rays against triangles (paper section 5, Proposition 11).
+// A cluster is {O + q D : O in [O], D in [D], q in [q]}; a ray of it meets the
+// triangle T(beta, delta) = T1 + beta (T2 - T1) + delta (T3 - T1) iff
+//   0 = b + A w,  w = (beta, delta, q - q~),  b = T1 - (O + q~ D),  A = (T2 - T1, T3 - T1, -D),
+// with beta, delta >= 0, beta + delta <= 1 and q in [q]. The interval system is
+// contracted by the Hansen-Sengupta operator (Theorem 6): an empty result
+// proves that no ray of the cluster meets the triangle.
+#pragma once
+
+#include <seamless/base/vec.h>
+#include <seamless/interval/interval_matrix.h>
+
+namespace seamless {
+
+struct RayCluster {
+    IVec<3> origin, direction;
+    Interval q{0.0, 1.0};
+};
+
+// Axis-aligned box holding every point of every ray of the cluster.
+Box3 cluster_box(const RayCluster& c);
+
+// false: certainly no ray of the cluster meets the triangle (Proposition 11);
+// true: some ray may meet it.
+bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3);
+
+} // namespace seamless

@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/render/trace.h>
+
+#include <seamless/render/ray_triangle.h>
+#include <seamless/render/shading.h>
+
+#include <cassert>
+#include <limits>
+
+namespace seamless {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Proposition 11, remark 2 for one ray: descends from every root but the
+// marked patch's into the nodes whose triangle hull the ray meets before
+// t_max (which the visitor may shrink); visit(triangle) returns true to stop.
+template <class Visit>
+bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const double& t_max,
+                     int skip_patch, Visit&& visit) {
+    const PatchTrees& trees = ts.tess.trees;
+    constexpr int kStack = 256;
+    assert(trees.depth < kStack - 2);
+    int stack[kStack];
+    const int roots = static_cast<int>(trees.roots.size());
+    for (int r = 0; r < roots; ++r) {
+        if (r == skip_patch) continue;
+        int top = 0;
+        stack[top++] = trees.roots[r];
+        while (top > 0) {
+            const PatchNode& n = trees.nodes[stack[--top]];
+            if (n.triangle_hull.empty() || !ray_hits_box(ray, n.triangle_hull, t_max)) continue;
+            if (n.triangle >= 0 && visit(n.triangle)) return true;
+            for (int c : n.child)
+                if (c >= 0) stack[top++] = c;
+        }
+    }
+    return false;
+}
+
+// Shadow ray, reflected or refracted ray from P (step 3.2): the intensity of
+// what it meets, or the background.
+std::array<double, 3> trace_secondary(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 dir,
+                                      int patch, int depth, long long* tests) {
+    TraceHit h;
+    if (!nearest_hit(ts, P, dir, ts.ray_epsilon, kInf, patch, h, tests))
+        return {scene.background.x, scene.background.y, scene.background.z};
+    return shade_ray(scene, ts, h.point, h.normal, h.material, h.patch, -dir, depth, tests);
+}
+
+} // namespace
+
+bool needs_secondary_rays(const Scene& scene) {
+    bool light_on = false;
+    for (const Light& l : scene.lights) light_on |= l.on();
+    std::vector<char> used(scene.materials.size(), 0);
+    for (int m : scene.surface_material) used[m] = 1;
+    for (size_t m = 0; m < scene.materials.size(); ++m) {
+        if (!used[m]) continue;
+        const Material& mat = scene.materials[m];
+        if (mat.reflect > 0 || mat.transmit > 0) return true;
+        if (light_on && (mat.diffuse > 0 || mat.specular > 0)) return true;
+    }
+    return false;
+}
+
+TriangleScene build_triangle_scene(const Scene& scene) {
+    TriangleScene ts;
+    ts.tess = tessellate(scene.model);
+    const TriangleMesh& mesh = ts.tess.mesh;
+    const int F = mesh.triangle_count();
+    ts.triangle_material.resize(F);
+    for (int f = 0; f < F; ++f)
+        ts.triangle_material[f] = scene.surface_material[mesh.triangle_surface[f]];
+    ts.triangle_patch.assign(F, -1);
+    for (const Subpatch& sp : ts.tess.subpatches)
+        for (int f = sp.first_triangle; f < sp.first_triangle + sp.triangle_count; ++f)
+            ts.triangle_patch[f] = sp.patch;
+    ts.ray_epsilon = 1e-6 * ts.tess.stats.d_max;
+    return ts;
+}
+
+bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
+                 int skip_patch, TraceHit& hit, long long* tests) {
+    const TriangleMesh& mesh = ts.tess.mesh;
+    const TriangleRay ray(origin, dir);
+    double best_t = t_max;
+    int best = -1;
+    RayTriangleHit best_hit, h;
+    long long n = 0;
+    visit_triangles(ts, ray, best_t, skip_patch, [&](int f) {
+        ++n;
+        const auto& tri = mesh.triangles[f];
+        if (intersect_triangle(ray, mesh.positions[tri[0]], mesh.positions[tri[1]],
+                               mesh.positions[tri[2]], best_t, h) &&
+            h.t > t_min) {
+            best_t = h.t;
+            best = f;
+            best_hit = h;
+        }
+        return false;
+    });
+    if (tests) *tests += n;
+    if (best < 0) return false;
+    const auto& tri = mesh.triangles[best];
+    const auto& cn = mesh.corner_normals[best];
+    const RayTriangleHit& w = best_hit;
+    hit.triangle = best;
+    hit.t = w.t;
+    hit.point = w.b0 * mesh.positions[tri[0]] + w.b1 * mesh.positions[tri[1]] +
+                w.b2 * mesh.positions[tri[2]];
+    Vec3 N = w.b0 * cn[0] + w.b1 * cn[1] + w.b2 * cn[2];
+    // Corner normals that cancel (never seen, but possible): the facet's own.
+    if (!(dot(N, N) > 0))
+        N = cross(mesh.positions[tri[1]] - mesh.positions[tri[0]],
+                  mesh.positions[tri[2]] - mesh.positions[tri[0]]);
+    hit.normal = normalize(N);
+    hit.material = ts.triangle_material[best];
+    hit.patch = ts.triangle_patch[best];
+    return true;
+}
+
+bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
+             int skip_patch, long long* tests) {
+    const TriangleMesh& mesh = ts.tess.mesh;
+    const TriangleRay ray(origin, dir);
+    RayTriangleHit h;
+    long long n = 0;
+    const bool found = visit_triangles(ts, ray, t_max, skip_patch, [&](int f) {
+        ++n;
+        const auto& tri = mesh.triangles[f];
+        return intersect_triangle(ray, mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                  mesh.positions[tri[2]], t_max, h) &&
+               h.t > t_min;
+    });
+    if (tests) *tests += n;
+    return found;
+}
+
+std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 N,
+                                int material, int patch, Vec3 view, int depth, long long* tests) {
+    const Material& m = scene.materials[material];
+    const double cos_v = dot(N, view);
+    const Vec3 Nf = cos_v < 0 ? -N : N; // towards the viewer (surfaces have two sides)
+
+    // Step 2: the lights that reach P. A light behind the surface adds nothing
+    // to shade() and needs no shadow ray; neither does any light when the
+    // material has no diffuse or specular term. The lighting scene is a
+    // per-thread scratch, so the hot loop does not allocate, and it is done
+    // with before the recursion below reuses it.
+    thread_local Scene lighting;
+    lighting.ambient = scene.ambient;
+    lighting.lights.clear();
+    if (m.diffuse != 0 || m.specular != 0)
+        for (const Light& light : scene.lights) {
+            if (!light.on()) continue;
+            const Vec3 L = light.position - P;
+            if (!(dot(Nf, L) > 0)) continue;
+            const double dist = norm(L);
+            if (!any_hit(ts, P, L / dist, ts.ray_epsilon, dist, patch, tests))
+                lighting.lights.push_back(light);
+        }
+    std::array<double, 3> I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);
+
+    // Steps 3-4: reflected and refracted rays, up to the maximum recursion level.
+    if (depth < scene.max_depth && (m.reflect > 0 || m.transmit > 0)) {
+        const double cos_i = std::abs(cos_v);
+        const Vec3 R = 2 * cos_i * Nf - view;
+        if (m.reflect > 0) {
+            const auto Ir = trace_secondary(scene, ts, P, normalize(R), patch, depth + 1, tests);
+            for (int c = 0; c < 3; ++c) I[c] += m.reflect * Ir[c];
+        }
+        if (m.transmit > 0) {
+            // Snell: entering when the ray comes from the side N points to.
+            const double eta = cos_v > 0 ? 1 / m.ior : m.ior;
+            const double k = 1 - eta * eta * (1 - cos_i * cos_i);
+            const Vec3 T = k < 0 ? R // total internal reflection
+                                 : -eta * view + (eta * cos_i - std::sqrt(k)) * Nf;
+            const auto It = trace_secondary(scene, ts, P, normalize(T), patch, depth + 1, tests);
+            for (int c = 0; c < 3; ++c) I[c] += m.transmit * It[c];
+        }
+    }
+    return {clamp01(I[0]), clamp01(I[1]), clamp01(I[2])};
+}
+
+} // namespace seamless

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// Single rays against the triangles of the crack-free tessellation, and the
+// recursive SHADE of paper section 7 for one ray: shadow rays to the lights,
+// reflected and refracted rays (Whitted 1980), found through the binary patch
+// trees (Proposition 11, remarks 1-2). Used by TRAY (section 8) for every ray
+// and by INTRACY for single pixels and corner rays. Everything in world space.
+#pragma once
+
+#include <seamless/base/vec.h>
+#include <seamless/render/scene.h>
+#include <seamless/tessellate/tessellation.h>
+
+#include <array>
+#include <vector>
+
+namespace seamless {
+
+// The crack-free tessellation of a scene with its binary patch trees
+// (Proposition 11, remark 2) and per-triangle material and Bezier patch, for
+// secondary rays.
+struct TriangleScene {
+    Tessellation tess;
+    // triangle_material: #F index into Scene::materials.
+    std::vector<int> triangle_material;
+    // triangle_patch: #F index of the Bezier patch = tree root index, in the
+    // order of bezier_patches(scene.model).
+    std::vector<int> triangle_patch;
+    // Secondary rays start this far (model units) from their surface point, so
+    // that rounding never lets a ray meet the triangles it leaves from.
+    // build_triangle_scene sets 1e-6 d_max.
+    double ray_epsilon = 0;
+};
+
+// Whether SHADE needs secondary rays for this scene: a light that is on and a
+// used material with a diffuse or specular term (shadow rays), or a used
+// material that reflects or transmits. Without them no triangles are built.
+bool needs_secondary_rays(const Scene& scene);
+
+// tessellate(scene.model) with the default tolerances (section 8).
+TriangleScene build_triangle_scene(const Scene& scene);
+
+struct TraceHit {
+    int triangle = -1;
+    double t = 0;
+    Vec3 point;
+    Vec3 normal; // interpolated exact corner normals, unit, oriented as the surface's (u,v)
+    int material = -1;
+    int patch = -1;
+};
+
+// Nearest hit with t in (t_min, t_max) of origin + t dir; the triangles of
+// patch `skip_patch` (>= 0) are not tested (SHADE step 1: the marked patch,
+// which keeps a point from shadowing itself). Ties keep the first triangle in
+// the fixed traversal order. `tests` (optional) counts ray-triangle tests.
+bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
+                 int skip_patch, TraceHit& hit, long long* tests = nullptr);
+
+// Any hit with t in (t_min, t_max) (shadow rays; stops at the first).
+bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
+             int skip_patch, long long* tests = nullptr);
+
+// SHADE for one ray (section 7): intensity per channel in [0, 1] at surface
+// point P with unit normal N of material `material` on Bezier patch `patch`,
+// seen from unit direction `view` (from P towards the viewer), at recursion
+// depth `depth` (0 at the primary hit). Ambient; per light that is on and in
+// front of the surface, a shadow ray (step 2); the local terms by shade<double>
+// with the visible lights (the illumination model of INTRACY); then
+// reflect * the reflected ray and transmit * the refracted ray (steps 3-4, up
+// to scene.max_depth; the background where they hit nothing).
+std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 N,
+                                int material, int patch, Vec3 view, int depth,
+                                long long* tests = nullptr);
+
+} // namespace seamless

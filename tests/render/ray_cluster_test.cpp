@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+// Proposition 11: a cluster declared to miss a triangle never has a ray that hits it.
+#include <seamless/render/ray_cluster.h>
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace seamless;
+
+namespace {
+
+// Does the segment O + q D, q in [q0, q1], meet the triangle? (Moller-Trumbore in doubles.)
+bool segment_hits(Vec3 O, Vec3 D, double q0, double q1, Vec3 a, Vec3 b, Vec3 c) {
+    const Vec3 e1 = b - a, e2 = c - a, p = cross(D, e2);
+    const double det = dot(e1, p);
+    if (std::abs(det) < 1e-14) return false;
+    const Vec3 s = O - a;
+    const double u = dot(s, p) / det;
+    const Vec3 qv = cross(s, e1);
+    const double v = dot(D, qv) / det, t = dot(e2, qv) / det;
+    return u >= 0 && v >= 0 && u + v <= 1 && t >= q0 && t <= q1;
+}
+
+} // namespace
+
+TEST_CASE("Clusters declared to miss a triangle have no ray that hits it", "[ray_cluster]") {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.2);
+    int misses = 0, hits_seen = 0;
+    for (int n = 0; n < 2000; ++n) {
+        const Vec3 a{U(rng), U(rng), U(rng)}, b{U(rng), U(rng), U(rng)}, c{U(rng), U(rng), U(rng)};
+        const Vec3 O{U(rng) * 2, U(rng) * 2, 2 + U(rng)};
+        const Vec3 target{U(rng), U(rng), U(rng)};
+        const Vec3 D = target - O;
+        const double wo = W(rng), wd = W(rng);
+        RayCluster cl;
+        for (int i = 0; i < 3; ++i) {
+            cl.origin[i] = Interval(O[i] - wo, O[i] + wo);
+            cl.direction[i] = Interval(D[i] - wd, D[i] + wd);
+        }
+        cl.q = Interval(0.0, 1.5);
+        const bool may = may_hit_triangle(cl, a, b, c);
+        misses += !may;
+        // Sample rays of the cluster.
+        bool any = false;
+        for (int k = 0; k < 200 && !any; ++k) {
+            Vec3 o, d;
+            for (int i = 0; i < 3; ++i) {
+                std::uniform_real_distribution<double> po(cl.origin[i].lo(), cl.origin[i].hi());
+                std::uniform_real_distribution<double> pd(cl.direction[i].lo(),
+                                                          cl.direction[i].hi());
+                o[i] = po(rng);
+                d[i] = pd(rng);
+            }
+            any = segment_hits(o, d, 0.0, 1.5, a, b, c);
+        }
+        hits_seen += any;
+        if (any) CHECK(may);
+    }
+    // The test exercises both outcomes.
+    CHECK(misses > 100);
+    CHECK(hits_seen > 100);
+}
+
+TEST_CASE("A thin cluster is decided exactly away from the triangle's edges", "[ray_cluster]") {
+    RayCluster cl;
+    for (int i = 0; i < 3; ++i) cl.origin[i] = Interval(i == 2 ? 5.0 : 0.2);
+    cl.direction[0] = Interval(0.0);
+    cl.direction[1] = Interval(0.0);
+    cl.direction[2] = Interval(-1.0);
+    cl.q = Interval(0.0, 10.0);
+    CHECK(may_hit_triangle(cl, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+    cl.origin[0] = Interval(0.8);
+    cl.origin[1] = Interval(0.8);
+    CHECK_FALSE(may_hit_triangle(cl, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+    cl.q = Interval(0.0, 4.0); // stops short of the plane
+    cl.origin[0] = Interval(0.2);
+    cl.origin[1] = Interval(0.2);
+    CHECK_FALSE(may_hit_triangle(cl, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+}
