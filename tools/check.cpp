@@ -38,7 +38,7 @@ void print_report(std::ostream& os, const CheckReport& r) {
     else
         os << "no welding (--no-weld): " << r.input_vertices << " vertices as indexed\n";
     os << "vertices " << r.vertices << ", triangles " << r.triangles << ", edges " << r.edges
-       << ", components " << r.components.size();
+       << ", components (shells) " << r.components.size();
     if (r.unreferenced_vertices) os << ", unreferenced vertices " << r.unreferenced_vertices;
     os << "\n";
     os << "d_max " << r.d_max << ", gap tolerance " << r.gap << "\n";
@@ -54,7 +54,9 @@ void print_report(std::ostream& os, const CheckReport& r) {
         return point(e.p0) + " - " + point(e.p1) + ", " + std::to_string(e.triangles) +
                " triangles";
     });
-    print_list(os, "non-manifold vertices", r.non_manifold_vertices,
+    print_list(os, "non-manifold vertices (a shell pinched)", r.non_manifold_vertices,
+               [](const VertexDefect& v) { return point(v.position); });
+    print_list(os, "shell contacts (shells touching at a vertex, not a defect)", r.shell_contacts,
                [](const VertexDefect& v) { return point(v.position); });
     print_list(os, "T-junctions", r.t_junctions, [](const TJunction& t) {
         std::ostringstream s;
@@ -79,15 +81,15 @@ void print_report(std::ostream& os, const CheckReport& r) {
     print_list(os, "degenerate triangles", r.degenerate_triangles, tri);
     print_list(os, "duplicated triangles", r.duplicated_triangles, pair);
     print_list(os, "inconsistently oriented neighbours", r.inconsistent_orientation, pair);
-    print_list(os, "self-intersections within a component", r.self_intersections, pair);
-    print_list(os, "overlaps between components (not a defect)", r.overlaps, pair, 5);
+    print_list(os, "self-intersections within a shell", r.self_intersections, pair);
+    print_list(os, "overlaps between shells (not a defect)", r.overlaps, pair, 5);
     for (size_t c = 0; c < r.components.size(); ++c) {
         const auto& C = r.components[c];
         if (c >= 20) {
-            os << "... " << r.components.size() - 20 << " more components\n";
+            os << "... " << r.components.size() - 20 << " more shells\n";
             break;
         }
-        os << "component " << c << ": " << C.triangles << " triangles, "
+        os << "shell " << c << ": " << C.triangles << " triangles, "
            << (C.closed ? "closed" : "open (" + std::to_string(C.border_edges) + " border edges)");
         if (C.euler) os << ", Euler characteristic " << *C.euler;
         if (C.genus) os << ", genus " << *C.genus;

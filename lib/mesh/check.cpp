@@ -2,7 +2,7 @@
 // Watertightness check. The only CGAL-heavy file: exact predicates (Epick) for
 // degeneracy and triangle-triangle intersection, box_intersection_d for the
 // candidate pairs, Surface_mesh + PMP for volume and outward orientation of
-// closed components. Topology, borders, T-junctions and cracks are plain code.
+// closed shells. Topology, borders, T-junctions and cracks are plain code.
 #include <seamless/mesh/check.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -231,62 +231,30 @@ CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options) {
         return std::tie(x.lo, x.hi, x.triangle) < std::tie(y.lo, y.hi, y.triangle);
     });
 
-    // Components: triangles connected through shared vertices.
-    DisjointSets comp(nf);
-    {
-        std::vector<int> first_triangle(nv, -1);
-        for (int t = 0; t < nf; ++t)
-            for (int v : T[t]) {
-                if (first_triangle[v] < 0)
-                    first_triangle[v] = t;
-                else
-                    comp.unite(first_triangle[v], t);
-            }
-    }
-    std::vector<int> comp_id(nf, -1);
-    int ncomp = 0;
-    for (int t = 0; t < nf; ++t) {
-        const int r = comp.find(t);
-        if (comp_id[r] < 0) comp_id[r] = ncomp++;
-        comp_id[t] = comp_id[r];
-    }
-    R.triangle_component = comp_id;
-    R.components.resize(ncomp);
-    for (int t = 0; t < nf; ++t) ++R.components[comp_id[t]].triangles;
-    {
-        std::vector<int> seen(nv, -1);
-        for (int t = 0; t < nf; ++t)
-            for (int v : T[t])
-                if (seen[v] != comp_id[t]) {
-                    // A vertex belongs to one component; count it once.
-                    if (seen[v] < 0) ++R.components[comp_id[t]].vertices;
-                    seen[v] = comp_id[t];
-                }
-    }
-
-    // Edge groups: borders, non-manifold edges, orientation; corner fans for
-    // non-manifold vertices (corners of one vertex joined across shared edges).
+    // Edge groups: borders, non-manifold edges, orientation. Shells (triangles
+    // connected through shared edges, manifold or not) and corner fans (corners
+    // of one vertex) are joined across the same edges.
     auto corner = [&](int t, int v) {
         for (int c = 0; c < 3; ++c)
             if (T[t][c] == v) return 3 * t + c;
         assert(false);
         return 3 * t;
     };
+    DisjointSets shells(nf);
     DisjointSets fans(3 * static_cast<size_t>(nf));
-    std::vector<EdgeUse> border; // directed as in its triangle via `forward`
-    std::vector<int> manifold_bad_comp(ncomp, 0);
+    std::vector<EdgeUse> border;             // directed as in its triangle via `forward`
+    std::vector<std::pair<int, int>> groups; // first use and number of uses of each edge
+    std::vector<int> bad_triangles;          // on non-manifold or misoriented edges
     for (size_t i = 0; i < uses.size();) {
         size_t j = i;
         while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
         const int k = static_cast<int>(j - i);
-        const int c = comp_id[uses[i].triangle];
-        ++R.edges;
-        ++R.components[c].edges;
+        groups.push_back({static_cast<int>(i), k});
         if (k == 1) {
             border.push_back(uses[i]);
-            ++R.components[c].border_edges;
         } else {
             for (size_t m = i + 1; m < j; ++m) {
+                shells.unite(uses[i].triangle, uses[m].triangle);
                 fans.unite(corner(uses[i].triangle, uses[i].lo),
                            corner(uses[m].triangle, uses[i].lo));
                 fans.unite(corner(uses[i].triangle, uses[i].hi),
@@ -296,15 +264,16 @@ CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options) {
         if (k >= 3) {
             R.non_manifold_edges.push_back(
                 {uses[i].lo, uses[i].hi, P[uses[i].lo], P[uses[i].hi], k});
-            manifold_bad_comp[c] = 1;
+            bad_triangles.push_back(uses[i].triangle);
         }
         if (k == 2 && uses[i].forward == uses[i + 1].forward) {
             R.inconsistent_orientation.push_back(
                 {uses[i].triangle, uses[i + 1].triangle, (P[uses[i].lo] + P[uses[i].hi]) / 2.0});
-            manifold_bad_comp[c] = 1;
+            bad_triangles.push_back(uses[i].triangle);
         }
         i = j;
     }
+    R.edges = static_cast<int>(groups.size());
     R.border_edges = static_cast<int>(border.size());
     R.closed = border.empty();
     // T-junctions and cracks: border vertices and edges near border edges.
@@ -348,8 +317,9 @@ CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options) {
             return true;
         };
         // Border edges sharing one vertex s and lying along each other (the two
-        // sides of a T-junction or of a crack that closes at s) join their fans at
-        // s: such a vertex is reported as a T-junction or crack, not as non-manifold.
+        // sides of a T-junction or of a crack that closes at s) count as one edge:
+        // they join their fans at s and their shells, so the defect reported is the
+        // T-junction or crack, not a non-manifold vertex or a shell contact.
         auto overlapping = [&](const EdgeUse& f, const EdgeUse& e, int s) {
             const int fo = f.lo == s ? f.hi : f.lo, eo = e.lo == s ? e.hi : e.lo;
             return segment_distance(P[fo], P[e.lo], P[e.hi]) <= gap ||
@@ -363,8 +333,10 @@ CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options) {
                 for (int ei : *cands) {
                     const EdgeUse& e = border[ei];
                     if (ei == fi || !shares(e, s) || (shares(e, f.lo) && shares(e, f.hi))) continue;
-                    if (overlapping(f, e, s))
+                    if (overlapping(f, e, s)) {
                         fans.unite(corner(f.triangle, s), corner(e.triangle, s));
+                        shells.unite(f.triangle, e.triangle);
+                    }
                 }
             }
         }
@@ -394,21 +366,56 @@ CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options) {
         }
     }
 
+    // Shells, numbered in the order of their first triangle.
+    std::vector<int> comp_id(nf, -1);
+    int ncomp = 0;
+    for (int t = 0; t < nf; ++t) {
+        const int r = shells.find(t);
+        if (comp_id[r] < 0) comp_id[r] = ncomp++;
+        comp_id[t] = comp_id[r];
+    }
+    R.triangle_component = comp_id;
+    R.components.resize(ncomp);
+    for (int t = 0; t < nf; ++t) ++R.components[comp_id[t]].triangles;
+    for (auto [first, k] : groups) {
+        ComponentReport& C = R.components[comp_id[uses[first].triangle]];
+        ++C.edges;
+        C.border_edges += k == 1;
+    }
+    std::vector<int> manifold_bad_comp(ncomp, 0);
+    for (int t : bad_triangles) manifold_bad_comp[comp_id[t]] = 1;
+
+    // Fans at each vertex, by shell. Two fans of one shell pinch it there (a
+    // non-manifold vertex); fans of different shells make a shell contact. A
+    // vertex counts once in each shell it belongs to.
     {
-        std::vector<int> root_of(nv, -1), bad(nv, 0);
+        std::vector<std::array<int, 3>> vsf; // vertex, shell, fan root
+        vsf.reserve(3 * static_cast<size_t>(nf));
         for (int t = 0; t < nf; ++t)
             for (int c = 0; c < 3; ++c) {
                 const int v = T[t][c];
                 if (c > 0 && (T[t][0] == v || (c == 2 && T[t][1] == v))) continue;
-                const int r = fans.find(3 * t + c);
-                if (root_of[v] < 0)
-                    root_of[v] = r;
-                else if (root_of[v] != r && !bad[v]) {
-                    bad[v] = 1;
-                    R.non_manifold_vertices.push_back({v, P[v]});
-                    manifold_bad_comp[comp_id[t]] = 1;
-                }
+                vsf.push_back({v, comp_id[t], fans.find(3 * t + c)});
             }
+        std::sort(vsf.begin(), vsf.end());
+        vsf.erase(std::unique(vsf.begin(), vsf.end()), vsf.end());
+        for (size_t i = 0; i < vsf.size();) {
+            const int v = vsf[i][0];
+            int nshells = 0;
+            bool pinched = false;
+            size_t j = i;
+            for (; j < vsf.size() && vsf[j][0] == v; ++j)
+                if (j == i || vsf[j][1] != vsf[j - 1][1]) {
+                    ++nshells;
+                    ++R.components[vsf[j][1]].vertices;
+                } else {
+                    pinched = true;
+                    manifold_bad_comp[vsf[j][1]] = 1;
+                }
+            if (pinched) R.non_manifold_vertices.push_back({v, P[v]});
+            if (nshells > 1) R.shell_contacts.push_back({v, P[v]});
+            i = j;
+        }
     }
 
     // Degenerate (zero-area, exactly) and duplicated triangles.
@@ -474,7 +481,7 @@ CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options) {
         }
     }
 
-    // Self-intersections (same component) and overlaps (different components).
+    // Self-intersections (same shell) and overlaps (different shells).
     {
         using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
         std::unordered_map<int, std::vector<int>> tverts; // triangle -> T-junction vertices
@@ -512,8 +519,8 @@ CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options) {
         std::sort(R.overlaps.begin(), R.overlaps.end(), by_index);
     }
 
-    // Closed components: Euler characteristic, genus; volume and outward
-    // orientation through CGAL when the component is a valid closed surface.
+    // Closed shells: Euler characteristic, genus; volume and outward
+    // orientation through CGAL when the shell is a valid closed surface.
     std::vector<std::vector<int>> comp_tris(ncomp);
     for (int t = 0; t < nf; ++t) comp_tris[comp_id[t]].push_back(t);
     for (int c = 0; c < ncomp; ++c) {
@@ -595,9 +602,11 @@ std::string to_json(const CheckReport& r, int max_listed) {
                     {"to", pt(e.p1)},
                     {"triangles", e.triangles}};
     });
-    j["non_manifold_vertices"] = list(r.non_manifold_vertices, [&](const VertexDefect& v) {
+    auto vertex = [&](const VertexDefect& v) {
         return json{{"vertex", v.vertex}, {"location", pt(v.position)}};
-    });
+    };
+    j["non_manifold_vertices"] = list(r.non_manifold_vertices, vertex);
+    j["shell_contacts"] = list(r.shell_contacts, vertex);
     j["t_junctions"] = list(r.t_junctions, [&](const TJunction& t) {
         return json{{"vertex", t.vertex},
                     {"location", pt(t.position)},

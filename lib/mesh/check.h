@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Watertightness verification of a triangle mesh (issue 4): welding of
 // bit-identical positions, topology (borders, non-manifold elements,
-// orientation, components), geometric defects (T-junctions, cracks, degenerate
-// and duplicated triangles, self-intersections) and per closed component
-// Euler characteristic, genus, volume and outward orientation.
+// orientation, shells and where they touch), geometric defects (T-junctions,
+// cracks, degenerate and duplicated triangles, self-intersections) and per closed
+// shell Euler characteristic, genus, volume and outward orientation.
 // docs/check.md explains every item.
 #pragma once
 
@@ -22,7 +22,7 @@ struct CheckOptions {
     // weld: first merge vertices whose positions are bit-identical; false judges
     // the mesh's own indices.
     bool weld = true;
-    // require_closed: every component must be closed for check_passed().
+    // require_closed: every component (shell) must be closed for check_passed().
     bool require_closed = false;
 };
 
@@ -75,7 +75,10 @@ struct TriangleDefect {
     Vec3 location; // centroid
 };
 
-// One connected component (triangles connected through shared vertices).
+// One component, a shell: triangles connected through shared edges (manifold or
+// not, or border edges lying along each other from a shared vertex: the sides of
+// a T-junction or crack). Shells touching only at vertices stay apart; such a
+// vertex counts in each.
 struct ComponentReport {
     int vertices = 0, triangles = 0, edges = 0, border_edges = 0;
     bool closed = false;
@@ -99,25 +102,26 @@ struct CheckReport {
     bool closed = false; // no border edges
 
     std::vector<EdgeDefect> non_manifold_edges;
-    std::vector<VertexDefect> non_manifold_vertices;
+    std::vector<VertexDefect> non_manifold_vertices; // one shell pinched: two fans of it
+    std::vector<VertexDefect> shell_contacts;        // different shells touch (not a defect)
     std::vector<TJunction> t_junctions;
     std::vector<Crack> cracks;
     double widest_crack = 0;
     std::vector<TriangleDefect> degenerate_triangles;
     std::vector<TrianglePair> duplicated_triangles; // t1 repeats t0's vertex set
     std::vector<TrianglePair> inconsistent_orientation;
-    std::vector<TrianglePair> self_intersections; // within one component
-    std::vector<TrianglePair> overlaps;           // between components (not a defect)
+    std::vector<TrianglePair> self_intersections; // within one shell
+    std::vector<TrianglePair> overlaps;           // between shells (not a defect)
 
     std::vector<ComponentReport> components;
-    std::vector<int> triangle_component; // #F component index of each triangle
+    std::vector<int> triangle_component; // #F shell index of each triangle
 };
 
 CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options = {});
 
 // Number of defects: cracks, T-junctions, non-manifold edges and vertices,
 // degenerate and duplicated triangles, inconsistent orientation pairs and
-// self-intersections (overlaps between components do not count).
+// self-intersections (shell contacts and overlaps between shells do not count).
 int defect_count(const CheckReport& report);
 
 // No defects and, when options.require_closed, every component closed.

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <set>
 
 using namespace seamless;
 
@@ -125,36 +126,33 @@ TEST_CASE("bundled models tessellate into meshes check passes, through .glb and 
         }
 }
 
-TEST_CASE("teapot and teacup: only the handles' ends, as the data has them", "[check][bundled]") {
+TEST_CASE("teapot and teacup pass: the handles are shells touching the body", "[check][bundled]") {
     // shared/models/README.md: one handle end is a body corner (one welded
-    // vertex joining two fans: a non-manifold vertex), the other end (the
-    // teapot: both) pokes into the body. Those are the only defects; as one
-    // component with the body they count as self-intersections. The teapot's
-    // spout pierces the body too, but is a component of its own (overlaps).
+    // vertex where the handle's and the body's shells touch: a shell contact),
+    // the other end (the teapot: both) pokes into the body. Shells touch only
+    // through edges, so the handle is a shell of its own like the spout and its
+    // crossings are overlaps, not self-intersections.
     struct Handle {
         const char* name;
         Vec3 touch;
         size_t components;
         int border_edges;
     };
-    for (const Handle& h : {Handle{"teapot", {-2, 0, 0.9}, 3, 208},
-                            Handle{"teacup", {-0.454545, 0.772727, 0}, 1, 128}})
+    for (const Handle& h : {Handle{"teapot", {-2, 0, 0.9}, 4, 208},
+                            Handle{"teacup", {-0.454545, 0.772727, 0}, 2, 128}})
         for (const std::string ext : {".glb", ".off"}) {
             const Model m = load_model(test::model_path(std::string(h.name) + ".json"));
             CgalCounts cg;
             const CheckReport r = check_round_trip(m, {h.name}, ext, &cg);
             INFO(h.name << ext << ": " << to_json(r, 3));
-            REQUIRE(r.non_manifold_vertices.size() == 1);
-            if (ext == ".off") CHECK(r.non_manifold_vertices[0].position == h.touch);
-            CHECK(distance(r.non_manifold_vertices[0].position, h.touch) < 1e-6);
-            CHECK(!r.self_intersections.empty());
-            CHECK(defect_count(r) == 1 + static_cast<int>(r.self_intersections.size()));
-            CHECK(r.t_junctions.empty());
-            CHECK(r.cracks.empty());
-            CHECK(r.non_manifold_edges.empty());
-            CHECK(r.degenerate_triangles.empty());
-            CHECK(r.duplicated_triangles.empty());
-            CHECK(r.inconsistent_orientation.empty());
+            CHECK(defect_count(r) == 0);
+            CHECK(check_passed(r, {}));
+            CHECK(r.non_manifold_vertices.empty());
+            CHECK(r.self_intersections.empty());
+            REQUIRE(r.shell_contacts.size() == 1);
+            if (ext == ".off") CHECK(r.shell_contacts[0].position == h.touch);
+            CHECK(distance(r.shell_contacts[0].position, h.touch) < 1e-6);
+            CHECK(!r.overlaps.empty());
             CHECK(r.components.size() == h.components);
             CHECK(r.border_edges == h.border_edges);
             // CGAL splits the touching vertex and agrees on the borders.
@@ -163,20 +161,32 @@ TEST_CASE("teapot and teacup: only the handles' ends, as the data has them", "[c
             CHECK(cg.closed == r.closed);
             CHECK(cg.border_halfedges == r.border_edges);
         }
-    // Which surfaces intersect: handle (12-15) against body (4-11), nothing else.
-    for (const char* name : {"teapot", "teacup"}) {
+    // The handle (teapot: surfaces 12-15, teacup: 12-13) is one shell of its
+    // own; its crossings with the body (4-11) are overlaps, as are the teapot
+    // spout's (16-19), and nothing else overlaps.
+    for (const auto& [name, last] : {std::pair{"teapot", 15}, std::pair{"teacup", 13}}) {
         const Model m = load_model(test::model_path(std::string(name) + ".json"));
         const Tessellation t = tessellate(m, {});
         const CheckReport r = check_mesh(t.mesh, {});
         INFO(name);
-        for (const TrianglePair& p : r.self_intersections) {
-            int a = t.mesh.triangle_surface[p.t0], b = t.mesh.triangle_surface[p.t1];
+        auto surface = [&](int tri) { return t.mesh.triangle_surface[tri]; };
+        auto handle = [&](int tri) { return surface(tri) >= 12 && surface(tri) <= last; };
+        std::set<int> handle_shells, other_shells;
+        for (int tri = 0; tri < t.mesh.triangle_count(); ++tri)
+            (handle(tri) ? handle_shells : other_shells).insert(r.triangle_component[tri]);
+        CHECK(handle_shells.size() == 1);
+        CHECK(other_shells.count(*handle_shells.begin()) == 0);
+        int handle_overlaps = 0;
+        for (const TrianglePair& p : r.overlaps) {
+            int a = surface(p.t0), b = surface(p.t1);
             if (a > b) std::swap(a, b);
             CHECK(a >= 4);
             CHECK(a <= 11);
             CHECK(b >= 12);
-            CHECK(b <= 15);
+            CHECK(b <= (std::string(name) == "teapot" ? 19 : last));
+            handle_overlaps += handle(p.t0) || handle(p.t1);
         }
+        CHECK(handle_overlaps > 0);
     }
 }
 

@@ -265,13 +265,49 @@ TEST_CASE("check: a non-manifold edge") {
     CHECK(r.non_manifold_edges[0].triangles == 3);
 }
 
-TEST_CASE("check: a non-manifold vertex (two fans)") {
+TEST_CASE("check: two shells touching at a vertex (a bowtie) are a shell contact") {
     TriangleMesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0.5}};
     m.triangles = {{0, 1, 2}, {0, 3, 4}};
     const CheckReport r = check_mesh(m);
+    CHECK(defects(r) == Names{});
+    CHECK(r.components.size() == 2);
+    REQUIRE(r.shell_contacts.size() == 1);
+    CHECK(r.shell_contacts[0].vertex == 0);
+    CHECK(r.shell_contacts[0].position == Vec3{0, 0, 0});
+    CHECK(r.overlaps.empty());                                 // touching at the shared vertex only
+    for (const auto& c : r.components) CHECK(c.vertices == 3); // the contact counts in each
+    const auto j = nlohmann::json::parse(to_json(r));
+    CHECK(j["shell_contacts"]["count"] == 1);
+    CHECK(j["defects"] == 0);
+}
+
+TEST_CASE("check: a shell pinched at a vertex is non-manifold") {
+    // A planar ring of quads around the hole [-1, 1]^2, one quad (x in [1, 2],
+    // y in [-1, 1]) replaced by two triangles meeting at its centre O: the ring,
+    // one shell through its edges, touches itself at O and nowhere else.
+    TriangleMesh m;
+    const double xs[4] = {-2, -1, 1, 2};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) m.positions.push_back({xs[i], xs[j], 0});
+    auto id = [](int i, int j) { return 4 * i + j; };
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            if (j == 1 && i >= 1) continue; // the hole and the pinched quad
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    const int o = m.vertex_count();
+    m.positions.push_back({1.5, 0, 0});
+    m.triangles.push_back({id(2, 1), id(3, 1), o});
+    m.triangles.push_back({id(3, 2), id(2, 2), o});
+    const CheckReport r = check_mesh(m);
     CHECK(defects(r) == Names{"non_manifold_vertices"});
-    CHECK(r.non_manifold_vertices.size() == 1);
+    REQUIRE(r.non_manifold_vertices.size() == 1);
+    CHECK(r.non_manifold_vertices[0].position == Vec3{1.5, 0, 0});
+    CHECK(r.shell_contacts.empty());
+    CHECK(r.components.size() == 1);
+    CHECK(r.overlaps.empty());
 }
 
 TEST_CASE("check: a zero-area triangle") {
@@ -437,7 +473,8 @@ TEST_CASE("check: JSON report") {
     CHECK(j["t_junctions"]["listed"].size() == 2);
     CHECK(j["t_junctions"]["listed"][0]["location"].size() == 3);
     CHECK(j["defects"] == 2);
-    CHECK(j["components"] == 1);
+    CHECK(j["components"] == 1); // the T-junction's two sides join the pieces into one shell
+    CHECK(j["shell_contacts"]["count"] == 0);
     CHECK(j["closed"] == false);
 }
 
