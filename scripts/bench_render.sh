@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # INTRACY against TRAY (paper section 8, Table 2): renders the default scene at
-# 640x480 with 16 levels and at 1280x1024 with 256 levels with both methods, one
-# after the other on this machine, and writes docs/results/render.md. Builds
+# 640x480 with 16 levels and at 1280x1024 with 256 levels, and the paper's
+# scenes (data/scenes/scene*.json) at 640x480 with 16 levels, with both methods,
+# one after the other on this machine, and writes docs/results/render.md and
+# the scene images to docs/results/images/. Builds
 # nothing: expects a Release build. Usage:
 #   scripts/bench_render.sh [SEAMLESS_BINARY] [OUT_MD]
 # (defaults: build/bin/seamless, docs/results/render.md; THREADS=n in the
@@ -25,6 +27,18 @@ for run in "${runs[@]}"; do
     echo "bench_render: $tag" >&2
     "$seamless" render "$scene" -o "$work/$tag.png" --method "$method" --size "$size" \
       --levels "$levels" --threads "$threads" --stats "$work/$tag.json" >/dev/null 2>"$work/$tag.log"
+  done
+done
+
+scenes=(scene1 scene2 scene2a scene3)
+images=$here/docs/results/images
+mkdir -p "$images"
+for sc in "${scenes[@]}"; do
+  for method in intracy tray; do
+    tag="$sc-$method"
+    echo "bench_render: $tag" >&2
+    "$seamless" render "$here/data/scenes/$sc.json" -o "$images/$tag.png" --method "$method" \
+      --threads "$threads" --stats "$work/$tag.json" >/dev/null 2>"$work/$tag.log"
   done
 done
 
@@ -107,6 +121,35 @@ for label, (lo, hi) in sorted(allb.items(), key=lambda kv: kv[1][0]):
         cells.append(f"{n} | {100.0 * px / (w * h):.1f}")
     L.append(f"| {label} | " + " | ".join(cells) + " |")
 L.append("")
+L.append("## The paper's scenes (section 8, Tables 2 and 3)\n")
+L.append("`data/scenes/generate.py` builds them from B-spline surfaces (docs/scenes.md); "
+         "640x480, 16 levels, max_depth 2, shadows, mirror and glass. Images: "
+         "`docs/results/images/SCENE-METHOD.png`. Paper Table 2 ratios: 2.5, 2.6, 3.1, 2.6.\n")
+L.append("| scene | patches | triangles | INTRACY s | TRAY s | ratio TRAY/INTRACY | INTRACY single-pixel fraction |")
+L.append("|---|---|---|---|---|---|---|")
+scene_stats = {}
+for sc in ["scene1", "scene2", "scene2a", "scene3"]:
+    with open(f"{work}/{sc}-intracy.json") as f:
+        i = json.load(f)
+    with open(f"{work}/{sc}-tray.json") as f:
+        t = json.load(f)
+    scene_stats[sc] = i
+    L.append(f"| {sc} | {i['patches']} | {t['triangles']} | {i['seconds']:.2f} | {t['seconds']:.2f} | "
+             f"**{t['seconds'] / i['seconds']:.2f}** | {i['single_pixel_fraction']:.3f} |")
+L.append("")
+L.append("Sub-screen sizes painted at once by INTRACY (Nops: count / pixels %):\n")
+L.append("| Nops | " + " | ".join(scene_stats) + " |")
+L.append("|---|" + "---|" * len(scene_stats))
+for label, (lo, hi) in sorted(allb.items(), key=lambda kv: kv[1][0]):
+    cells = []
+    for s in scene_stats.values():
+        n = sum(v for k, v in s["subscreens_by_size"].items() if lo <= int(k) <= hi)
+        px = sum(int(k) * v for k, v in s["subscreens_by_size"].items() if lo <= int(k) <= hi)
+        cells.append(f"{n} / {100.0 * px / (640 * 480):.1f}")
+    L.append(f"| {label} | " + " | ".join(cells) + " |")
+L.append("")
+for sc in scene_stats:
+    L.append(f"![{sc} INTRACY](images/{sc}-intracy.png) ![{sc} TRAY](images/{sc}-tray.png)\n")
 with open(out_md, "w") as f:
     f.write("\n".join(L))
 print(f"bench_render: wrote {out_md}", file=sys.stderr)

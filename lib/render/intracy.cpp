@@ -294,7 +294,8 @@ class PartRenderer {
   public:
     PartRenderer(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
                  const RenderOptions& opt, Image& image, int levels)
-        : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels) {
+        : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels),
+          scene_diagonal_(next_up(norm(control_box(scene.model).extent()))) {
         const Vec3 bg = ps.lighting.background;
         for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
     }
@@ -496,16 +497,60 @@ class PartRenderer {
     // SHADE step 2 for a cluster: the cluster of rays from each light to the
     // hull of the intersection points meets no triangle but those of the
     // patch itself (step 1 marks them; Proposition 11 with remarks 1-2).
+    // Camera-space interval vector to world space (outward rounded).
+    IVec<3> to_world(const IVec3& c, bool point) const {
+        const CameraFrame& f = ps_.frame;
+        IVec<3> w;
+        for (int i = 0; i < 3; ++i)
+            w[i] = (point ? Interval(f.eye[i]) : Interval(0.0)) + c[0] * Interval(f.right[i]) -
+                   c[1] * Interval(f.up[i]) + c[2] * Interval(f.forward[i]);
+        return w;
+    }
+
+    // Whether some ray of the cluster may meet a triangle other than those of
+    // `patch` (Proposition 11 after the hull comparison on the patch trees).
+    bool cluster_may_hit(const RayCluster& rc, int patch) const {
+        const Box3 cb = cluster_box(rc);
+        bool hit = false;
+        visit_candidate_triangles(
+            ts_->tess.trees, [&](const Box3& b) { return !hit && b.overlaps(cb); },
+            [&](int t) {
+                if (hit || ts_->triangle_patch[t] == patch) return;
+                const auto& tri = ts_->tess.mesh.triangles[t];
+                const auto& V = ts_->tess.mesh.positions;
+                if (may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])) hit = true;
+            });
+        return hit;
+    }
+
+    // SHADE step 3 for a mirror cluster: the cluster of reflected rays. When it
+    // certainly meets no triangle (step 3.3) the reflection is the background;
+    // otherwise (a nearest q-connected set of triangles, step 3.4, is not
+    // attempted) B is split and its pixels trace single rays.
+    bool reflection_misses(const PatchEnclosure& e, int patch) const {
+        const IVec<3> Pw = to_world(e.point, true), Nw = to_world(e.normal, false);
+        IVec<3> D, R;
+        for (int i = 0; i < 3; ++i) D[i] = Pw[i] - Interval(ps_.frame.eye[i]);
+        const Interval dn = D[0] * Nw[0] + D[1] * Nw[1] + D[2] * Nw[2];
+        const Interval nn = sqr(Nw[0]) + sqr(Nw[1]) + sqr(Nw[2]);
+        if (!(nn.lo() > 0)) return false;
+        const Interval k = Interval(2.0) * dn / nn;
+        for (int i = 0; i < 3; ++i) R[i] = D[i] - k * Nw[i];
+        // |R| = |D|: q up to diag / |D| carries every ray across the whole scene.
+        const double dmin = sqrt(sqr(D[0]) + sqr(D[1]) + sqr(D[2])).lo();
+        if (!(dmin > 0)) return false;
+        RayCluster rc;
+        rc.origin = Pw;
+        rc.direction = R;
+        rc.q = Interval(0.0, next_up(next_up(scene_diagonal_ / dmin) * 1.001));
+        return !cluster_may_hit(rc, patch);
+    }
+
     bool lights_unblocked(const ProjectedPatch& pp, int patch, const ParamBox& box) {
         const Material& mat = ps_.lighting.materials[pp.material];
-        if (mat.reflect > 0 || mat.transmit > 0) return false;
+        if (mat.transmit > 0 && scene_.max_depth > 0) return false; // refraction: per pixel
         if (mat.diffuse == 0 && mat.specular == 0) return true;
-        const IVec3 Pc = enclose_point(pp.forms, box);
-        IVec<3> Pw;
-        const CameraFrame& f = ps_.frame;
-        for (int i = 0; i < 3; ++i)
-            Pw[i] = Interval(f.eye[i]) + Pc[0] * Interval(f.right[i]) - Pc[1] * Interval(f.up[i]) +
-                    Pc[2] * Interval(f.forward[i]);
+        const IVec<3> Pw = to_world(enclose_point(pp.forms, box), true);
         for (const Light& light : scene_.lights) {
             if (!light.on()) continue;
             RayCluster rc;
@@ -514,17 +559,7 @@ class PartRenderer {
                 rc.direction[i] = Pw[i] - Interval(light.position[i]);
             }
             rc.q = Interval(0.0, 1.0);
-            const Box3 cb = cluster_box(rc);
-            bool blocked = false;
-            visit_candidate_triangles(
-                ts_->tess.trees, [&](const Box3& b) { return !blocked && b.overlaps(cb); },
-                [&](int t) {
-                    if (blocked || ts_->triangle_patch[t] == patch) return;
-                    const auto& tri = ts_->tess.mesh.triangles[t];
-                    const auto& V = ts_->tess.mesh.positions;
-                    if (may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])) blocked = true;
-                });
-            if (blocked) return false;
+            if (cluster_may_hit(rc, patch)) return false;
         }
         return true;
     }
@@ -563,16 +598,22 @@ class PartRenderer {
             if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
         }
         const Mark m{best_patch, box, {}};
-        // SHADE steps 2-4 for the cluster: mirrors and glass are traced pixel by
-        // pixel (their clusters return the infinite interval: B is split), and
-        // every light must be certainly unblocked for the whole cluster.
+        // SHADE steps 2-4 for the cluster: every light must be certainly
+        // unblocked for the whole cluster; glass is traced pixel by pixel (its
+        // clusters return the infinite interval: B is split); mirrors below.
         if (ts_ && !lights_unblocked(pp, m.patch, box)) return false;
         // Step 8: SHADE over the hulls of the intersection points and normals.
         const PatchEnclosure e = enclose(pp.forms, box);
         const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
         const V3<Interval> N{e.normal[0], e.normal[1], e.normal[2]};
-        const auto I =
-            shade<Interval>(ps_.lighting, ps_.lighting.materials[pp.material], P, N, Vec3{});
+        const Material& mat = ps_.lighting.materials[pp.material];
+        auto I = shade<Interval>(ps_.lighting, mat, P, N, Vec3{});
+        if (ts_ && mat.reflect > 0 && scene_.max_depth > 0) {
+            if (!reflection_misses(e, m.patch)) return false;
+            const Vec3 bg = scene_.background;
+            for (int c = 0; c < 3; ++c)
+                I[c] = clamp01(I[c] + Interval(mat.reflect) * Interval(bg[c]));
+        }
         int lo[3], hi[3];
         bool two = false;
         for (int c = 0; c < 3; ++c) {
@@ -637,6 +678,7 @@ class PartRenderer {
     const RenderOptions& opt_;
     Image& image_;
     int levels_;
+    double scene_diagonal_; // bounds every segment inside the scene (convex hull property)
     std::uint16_t bg_[3];
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     std::vector<Mark> arena_, work_;
