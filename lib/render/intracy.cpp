@@ -510,10 +510,10 @@ class PartRenderer {
     // Whether some ray of the cluster may meet a triangle other than those of
     // `patch` (Proposition 11 after the hull comparison on the patch trees).
     bool cluster_may_hit(const RayCluster& rc, int patch) const {
-        const Box3 cb = cluster_box(rc);
+        const ClusterHull ch(rc);
         bool hit = false;
         visit_candidate_triangles(
-            ts_->tess.trees, [&](const Box3& b) { return !hit && b.overlaps(cb); },
+            ts_->tess.trees, [&](const Box3& b) { return !hit && ch.may_meet(b); },
             [&](int t) {
                 if (hit || ts_->triangle_patch[t] == patch) return;
                 const auto& tri = ts_->tess.mesh.triangles[t];
@@ -598,18 +598,17 @@ class PartRenderer {
             if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
         }
         const Mark m{best_patch, box, {}};
-        // SHADE steps 2-4 for the cluster: every light must be certainly
-        // unblocked for the whole cluster; glass is traced pixel by pixel (its
-        // clusters return the infinite interval: B is split); mirrors below.
-        if (ts_ && !lights_unblocked(pp, m.patch, box)) return false;
-        // Step 8: SHADE over the hulls of the intersection points and normals.
+        // Step 8: SHADE over the hulls of the intersection points and normals,
+        // first as if every light were visible and the mirror showed the
+        // background: when that enclosure is already too wide, B is split
+        // without paying for the secondary-ray clusters.
         const PatchEnclosure e = enclose(pp.forms, box);
         const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
         const V3<Interval> N{e.normal[0], e.normal[1], e.normal[2]};
         const Material& mat = ps_.lighting.materials[pp.material];
         auto I = shade<Interval>(ps_.lighting, mat, P, N, Vec3{});
-        if (ts_ && mat.reflect > 0 && scene_.max_depth > 0) {
-            if (!reflection_misses(e, m.patch)) return false;
+        const bool mirror = ts_ && mat.reflect > 0 && scene_.max_depth > 0;
+        if (mirror) {
             const Vec3 bg = scene_.background;
             for (int c = 0; c < 3; ++c)
                 I[c] = clamp01(I[c] + Interval(mat.reflect) * Interval(bg[c]));
@@ -623,6 +622,12 @@ class PartRenderer {
             if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
             two |= hi[c] > lo[c];
         }
+        // SHADE steps 2-4 for the cluster: every light must be certainly
+        // unblocked for the whole cluster, and a mirror's reflected cluster must
+        // certainly meet nothing; glass is traced pixel by pixel (its clusters
+        // return the infinite interval: B is split).
+        if (ts_ && !lights_unblocked(pp, m.patch, box)) return false;
+        if (mirror && !reflection_misses(e, m.patch)) return false;
         if (!two) {
             for (int y = B.y0; y <= B.y1; ++y)
                 for (int x = B.x0; x <= B.x1; ++x) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/ray_cluster.h>
 
+#include <seamless/interval/gauss_seidel.h>
 #include <seamless/interval/hansen_sengupta.h>
 
 namespace seamless {
@@ -20,7 +21,54 @@ Box3 cluster_box(const RayCluster& c) {
     return b;
 }
 
+namespace {
+// Projection of the cluster's points onto axis a (linear in q: extremes at its ends).
+Interval project_cluster(const RayCluster& c, Vec3 a) {
+    Interval r = Interval::empty();
+    for (double q : {c.q.lo(), c.q.hi()}) {
+        Interval d(0.0);
+        for (int i = 0; i < 3; ++i)
+            d += Interval(a[i]) * (c.origin[i] + Interval(q) * c.direction[i]);
+        r = hull(r, d);
+    }
+    return r;
+}
+} // namespace
+
+ClusterHull::ClusterHull(const RayCluster& c) : box_(cluster_box(c)) {
+    Vec3 d{c.direction[0].mid(), c.direction[1].mid(), c.direction[2].mid()};
+    if (norm(d) == 0) d = {0, 0, 1};
+    d = normalize(d);
+    const Vec3 seed = std::abs(d.x) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    axis_[0] = normalize(cross(d, seed));
+    axis_[1] = cross(d, axis_[0]);
+    for (int k = 0; k < 2; ++k) proj_[k] = project_cluster(c, axis_[k]);
+}
+
+bool ClusterHull::may_meet(const Box3& b) const {
+    if (!b.overlaps(box_)) return false;
+    for (int k = 0; k < 2; ++k) {
+        Interval p(0.0);
+        for (int i = 0; i < 3; ++i) p += Interval(axis_[k][i]) * Interval(b.lo[i], b.hi[i]);
+        if (p.hi() < proj_[k].lo() || p.lo() > proj_[k].hi()) return false;
+    }
+    return true;
+}
+
 bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
+    // Hull comparison along the triangle's normal first (a separating axis):
+    // the rays' points lie in the convex hull of their two end boxes, so if
+    // that hull's projection misses the triangle's, no ray meets it. Any axis
+    // is valid, so the rounded normal is as good as the exact one.
+    const Vec3 n = cross(T2 - T1, T3 - T1);
+    auto project = [&](Vec3 p) {
+        return Interval(n.x) * Interval(p.x) + Interval(n.y) * Interval(p.y) +
+               Interval(n.z) * Interval(p.z);
+    };
+    const Interval tri = hull(hull(project(T1), project(T2)), project(T3));
+    const Interval rays = project_cluster(c, n);
+    if (rays.hi() < tri.lo() || rays.lo() > tri.hi()) return false;
+
     IMat<3> A;
     for (int i = 0; i < 3; ++i) {
         A(i, 0) = Interval(T2[i]) - Interval(T1[i]);
@@ -35,15 +83,20 @@ bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
     x[0] = Interval(0.0, 1.0);
     x[1] = Interval(0.0, 1.0);
     x[2] = c.q - Interval(qt);
+    // Hansen-Sengupta on the linear F(w) = b + A w (Definition 5): A is its own
+    // Lipschitz matrix, so the preconditioner C = mid(A)^-1 and C A are formed
+    // once; any real C keeps Theorem 6, so a singular mid(A) falls back to C = I.
+    RMat<3> C;
+    if (!invert<3>(mid(A), C)) C = identity_matrix<3>();
+    const IMat<3> CA = C * A;
     for (int iter = 0; iter < 4; ++iter) {
         const RVec<3> w = mid(x);
-        // F(w~) = b + A w~, enclosed; A is a Lipschitz matrix of the linear F.
-        const IVec<3> Fw = b + A * to_ivec<3>(w);
-        const HansenSenguptaStep<3> step = hansen_sengupta<3>(A, Fw, x, w);
-        if (step.box.is_empty()) return false;
-        IVec<3> y = step.box;
-        // beta + delta <= 1
-        if (y[0].lo() + y[1].lo() > 1.0) return false;
+        const IVec<3> xw = to_ivec<3>(w);
+        const IVec<3> g = gauss_seidel(CA, -(C * (b + A * xw)), x - xw);
+        if (g.is_empty()) return false;
+        IVec<3> y = intersect(xw + g, x);
+        if (y.is_empty()) return false;
+        if (y[0].lo() + y[1].lo() > 1.0) return false; // beta + delta <= 1
         const bool progress = y[0].width() < 0.9 * x[0].width() ||
                               y[1].width() < 0.9 * x[1].width() ||
                               y[2].width() < 0.9 * x[2].width();

@@ -21,6 +21,22 @@ struct RayCluster {
 // Axis-aligned box holding every point of every ray of the cluster.
 Box3 cluster_box(const RayCluster& c);
 
+// Hull comparison of a cluster with the boxes of the patch trees (Proposition 11,
+// remarks 1-2). Besides the axis-aligned hull of the cluster, the cluster and a
+// box are compared along two axes across the cluster's mean direction, which
+// rejects most boxes that a long, thin, diagonal cluster's axis-aligned hull
+// would accept. Conservative: false only when no ray can meet the box.
+class ClusterHull {
+  public:
+    explicit ClusterHull(const RayCluster& c);
+    bool may_meet(const Box3& b) const;
+
+  private:
+    Box3 box_;
+    Vec3 axis_[2];
+    Interval proj_[2];
+};
+
 // false: certainly no ray of the cluster meets the triangle (Proposition 11);
 // true: some ray may meet it.
 bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3);

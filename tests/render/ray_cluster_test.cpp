@@ -79,3 +79,40 @@ TEST_CASE("A thin cluster is decided exactly away from the triangle's edges", "[
     cl.origin[1] = Interval(0.2);
     CHECK_FALSE(may_hit_triangle(cl, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
 }
+
+TEST_CASE("ClusterHull rejects only boxes that no ray of the cluster enters", "[ray_cluster]") {
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.1);
+    int rejected = 0;
+    for (int n = 0; n < 3000; ++n) {
+        RayCluster cl;
+        for (int i = 0; i < 3; ++i) {
+            const double o = 3 * U(rng), d = U(rng), wo = W(rng), wd = W(rng);
+            cl.origin[i] = Interval(o - wo, o + wo);
+            cl.direction[i] = Interval(d - wd, d + wd);
+        }
+        cl.q = Interval(0.0, 4.0);
+        const ClusterHull hull(cl);
+        Box3 b;
+        const Vec3 c{U(rng) * 2, U(rng) * 2, U(rng) * 2};
+        const double h = 0.05 + W(rng) * 3;
+        b.extend(c - Vec3{h, h, h});
+        b.extend(c + Vec3{h, h, h});
+        if (hull.may_meet(b)) continue;
+        ++rejected;
+        // No sampled point of any ray of the cluster lies in a rejected box.
+        for (int k = 0; k < 300; ++k) {
+            Vec3 p;
+            std::uniform_real_distribution<double> Q(0.0, 4.0);
+            const double q = Q(rng);
+            for (int i = 0; i < 3; ++i) {
+                std::uniform_real_distribution<double> po(cl.origin[i].lo(), cl.origin[i].hi());
+                std::uniform_real_distribution<double> pd(cl.direction[i].lo(),
+                                                          cl.direction[i].hi());
+                p[i] = po(rng) + q * pd(rng);
+            }
+            CHECK_FALSE(b.contains(p));
+        }
+    }
+    CHECK(rejected > 500);
+}

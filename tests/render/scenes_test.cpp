@@ -42,8 +42,8 @@ TEST_CASE("INTRACY without dither matches the exact reference on the paper's sce
     for (const char* name : {"scene1.json", "scene3.json"}) {
         INFO(name);
         const Scene scene = load_scene(test::data_dir() / "scenes" / name);
-        const test::ImageComparison c =
-            test::compare(draw(scene, RenderMethod::intracy, false), draw(scene, RenderMethod::reference));
+        const test::ImageComparison c = test::compare(draw(scene, RenderMethod::intracy, false),
+                                                      draw(scene, RenderMethod::reference));
         INFO("max difference " << c.max_difference);
         CHECK(c.max_difference <= 1);
         CHECK(c.surface_mismatch == 0);
