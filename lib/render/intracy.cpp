@@ -28,6 +28,7 @@
 // proof: a pixel painted from a cluster is never wrong by more than one level
 // (the enclosure holds the true intensity), and background is never painted
 // where a patch is hit.
+#include <seamless/render/parallel.h>
 #include <seamless/render/projection.h>
 #include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
@@ -35,10 +36,6 @@
 #include <seamless/render/trace.h>
 
 #include <seamless/interval/hansen_sengupta.h>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
@@ -400,18 +397,7 @@ class PartRenderer {
             return;
         }
         if (thin) {
-            ++st.single_pixels;
-            const Hit h =
-                solve_pixel(ps_, a.lo(), b.lo(), &arena_[first], nmarks, st, hits_, order_);
-            if (h.patch < 0) {
-                paint_background(B.x0, B.y0, B.x0, B.y0, st);
-            } else {
-                const auto I = shade_hit(ps_, scene_, ts_, h);
-                for (int c = 0; c < 3; ++c)
-                    image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
-                image_.surface_at(B.x0, B.y0) = 1;
-            }
-            count(B, st);
+            paint_single_pixel(B, first, nmarks, st);
             return;
         }
         // Step 5: B shrinks to the hull of the projections of the marked patches.
@@ -446,6 +432,23 @@ class PartRenderer {
         for (int i = nk - 1; i >= 0; --i) stack_.push_back(kids[i]);
     }
 
+    // Step 6: a one-pixel B, solved by Hansen-Sengupta on its marked patches.
+    void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
+        ++st.single_pixels;
+        const Hit h =
+            solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
+                        &arena_[first], n, st, hits_, order_);
+        if (h.patch < 0) {
+            paint_background(B.x0, B.y0, B.x0, B.y0, st);
+        } else {
+            const auto I = shade_hit(ps_, scene_, ts_, h);
+            for (int c = 0; c < 3; ++c)
+                image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
+            image_.surface_at(B.x0, B.y0) = 1;
+        }
+        count(B, st);
+    }
+
     // Step 5. Returns true if B was finished (all background).
     bool improve(SubScreen& B, size_t first, size_t n, RenderStats& st) {
         Interval ha = Interval::empty(), hb = Interval::empty();
@@ -476,19 +479,7 @@ class PartRenderer {
         B.y0 = ny0;
         B.y1 = ny1;
         if (B.x0 == B.x1 && B.y0 == B.y1) { // down to one pixel: solve it now
-            ++st.single_pixels;
-            const Hit h =
-                solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
-                            &arena_[first], n, st, hits_, order_);
-            if (h.patch < 0) {
-                paint_background(B.x0, B.y0, B.x0, B.y0, st);
-            } else {
-                const auto I = shade_hit(ps_, scene_, ts_, h);
-                for (int c = 0; c < 3; ++c)
-                    image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
-                image_.surface_at(B.x0, B.y0) = 1;
-            }
-            count(B, st);
+            paint_single_pixel(B, first, n, st);
             return true;
         }
         return false;
@@ -728,12 +719,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
         const int d = ++done;
         if (opt.progress) opt.progress(static_cast<double>(d) / parts);
     };
-    if (opt.threads == 1) {
-        for (int p = 0; p < parts; ++p) work(p);
-    } else {
-        tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
-        arena.execute([&] { tbb::parallel_for(0, parts, [&](int p) { work(p); }); });
-    }
+    for_each_item(parts, opt.threads, work);
     for (const RenderStats& s : part_stats) st.merge(s);
     return image;
 }

@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/render/parallel.h>
 #include <seamless/render/render.h>
 
 #include <seamless/render/projection.h>
 #include <seamless/render/shading.h>
 #include <seamless/render/trace.h>
-
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <atomic>
 #include <chrono>
@@ -131,12 +129,7 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
         const int d = ++done;
         if (opt.progress && d % std::max(1, H / 100) == 0) opt.progress(static_cast<double>(d) / H);
     };
-    if (opt.threads == 1) {
-        for (int y = 0; y < H; ++y) row(y);
-    } else {
-        tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
-        arena.execute([&] { tbb::parallel_for(0, H, row); });
-    }
+    for_each_item(H, opt.threads, row);
     for (const RenderStats& s : row_stats) st.merge(s);
     st.subscreens_by_size[1] = static_cast<long long>(W) * H;
     return image;

@@ -33,28 +33,14 @@ void bernstein(int n, double s, double* B, double* dB) {
     }
 }
 
-} // namespace
-
-HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t) {
+// X(s,t) and its partial derivatives in homogeneous coordinates.
+void homogeneous_derivatives(const BezierPatch& b, double s, double t, HPoint& X, HPoint& Xu,
+                             HPoint& Xv) {
     double Bu[BezierPatch::kMaxOrder], dBu[BezierPatch::kMaxOrder];
     double Bv[BezierPatch::kMaxOrder], dBv[BezierPatch::kMaxOrder];
     bernstein(b.p, s, Bu, dBu);
     bernstein(b.q, t, Bv, dBv);
-    HPoint X{0, 0, 0, 0};
-    for (int i = 0; i <= b.p; ++i) {
-        HPoint row{0, 0, 0, 0};
-        for (int j = 0; j <= b.q; ++j) row = row + Bv[j] * b.at(i, j);
-        X = X + Bu[i] * row;
-    }
-    return X;
-}
-
-SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
-    double Bu[BezierPatch::kMaxOrder], dBu[BezierPatch::kMaxOrder];
-    double Bv[BezierPatch::kMaxOrder], dBv[BezierPatch::kMaxOrder];
-    bernstein(b.p, s, Bu, dBu);
-    bernstein(b.q, t, Bv, dBv);
-    HPoint X{0, 0, 0, 0}, Xu{0, 0, 0, 0}, Xv{0, 0, 0, 0};
+    X = Xu = Xv = HPoint{0, 0, 0, 0};
     for (int i = 0; i <= b.p; ++i) {
         HPoint row{0, 0, 0, 0}, rowv{0, 0, 0, 0};
         for (int j = 0; j <= b.q; ++j) {
@@ -65,6 +51,20 @@ SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
         Xu = Xu + dBu[i] * row;
         Xv = Xv + Bu[i] * rowv;
     }
+}
+
+} // namespace
+
+HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t) {
+    HPoint X, Xu, Xv;
+    homogeneous_derivatives(b, s, t, X, Xu, Xv);
+    return X;
+}
+
+SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
+    HPoint X, Xu, Xv;
+    homogeneous_derivatives(b, s, t, X, Xu, Xv);
+    // Quotient rule: P = X/W, P_s = (X_s - P W_s) / W.
     SurfacePoint r;
     r.point = X.xyz() / X.w;
     r.du = (Xu.xyz() - Xu.w * r.point) / X.w;

@@ -4,6 +4,7 @@
 // 99% within one level with dither; on the default scene and on single-patch
 // scenes chosen to be stiff (face-on, edge-on, grazing, a pole in view).
 #include "render_compare.h"
+#include "scene_fixtures.h"
 #include "test_util.h"
 
 #include <seamless/model/model.h>
@@ -49,50 +50,6 @@ void check_against_reference(const Renders& r) {
     CHECK(d.surface_mismatch == 0);
 }
 
-// A scene of one model seen from `eye` towards `look_at`, written to `dir`.
-Scene one_model_scene(const std::filesystem::path& dir, const std::string& model_json, Vec3 eye,
-                      Vec3 look_at, Vec3 up = {0, 0, 1}) {
-    test::write_file(dir / "model.json", model_json);
-    nlohmann::json s = {
-        {"version", 1},
-        {"camera",
-         {{"eye", {eye.x, eye.y, eye.z}},
-          {"look_at", {look_at.x, look_at.y, look_at.z}},
-          {"up", {up.x, up.y, up.z}},
-          {"fov_deg", 40},
-          {"width", 64},
-          {"height", 48}}},
-        {"levels", 16},
-        {"background", {0.0, 0.0, 0.0}},
-        {"ambient", 0.1},
-        {"lights", {{{"position", {eye.x + 1, eye.y + 2, eye.z + 3}}, {"color", {1, 1, 1}}}}},
-        {"materials",
-         {{"m",
-           {{"color", {0.9, 0.6, 0.3}}, {"diffuse", 0.8}, {"specular", 0.4}, {"shininess", 25}}}}},
-        {"objects", {{{"model", "model.json"}, {"material", "m"}}}}};
-    test::write_file(dir / "scene.json", s.dump());
-    return load_scene(dir / "scene.json");
-}
-
-// One bicubic patch: a gentle dome over [-1,1]^2 in the plane z = 0.
-std::string dome() {
-    nlohmann::json pts = nlohmann::json::array();
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) {
-            double x = -1 + 2.0 * i / 3, y = -1 + 2.0 * j / 3;
-            pts.push_back({x, y, (i == 1 || i == 2) && (j == 1 || j == 2) ? 0.3 : 0.0});
-        }
-    nlohmann::json m = {{"version", 1},
-                        {"surfaces",
-                         {{{"name", "dome"},
-                           {"degree", {3, 3}},
-                           {"size", {4, 4}},
-                           {"knots_u", {0, 0, 0, 0, 1, 1, 1, 1}},
-                           {"knots_v", {0, 0, 0, 0, 1, 1, 1, 1}},
-                           {"control_points", pts}}}}};
-    return m.dump();
-}
-
 } // namespace
 
 TEST_CASE("INTRACY agrees with the per-pixel reference on the default scene", "[intracy]") {
@@ -106,16 +63,16 @@ TEST_CASE("INTRACY agrees with the per-pixel reference on the default scene", "[
 TEST_CASE("INTRACY on single patches: face-on, edge-on, grazing", "[intracy]") {
     auto dir = test::scratch_dir("intracy-patch");
     SECTION("face-on") {
-        check_against_reference(
-            render_all(one_model_scene(dir, dome(), {0.1, 0.2, 4}, {0, 0, 0}, {0, 1, 0}), 64, 48));
+        check_against_reference(render_all(
+            test::one_model_scene(dir, test::dome(), {0.1, 0.2, 4}, {0, 0, 0}, {0, 1, 0}), 64, 48));
     }
     SECTION("edge-on") {
-        check_against_reference(
-            render_all(one_model_scene(dir, dome(), {5, 0.3, 0.0}, {0, 0, 0.0}), 64, 48));
+        check_against_reference(render_all(
+            test::one_model_scene(dir, test::dome(), {5, 0.3, 0.0}, {0, 0, 0.0}), 64, 48));
     }
     SECTION("grazing") {
-        check_against_reference(
-            render_all(one_model_scene(dir, dome(), {5, 0.5, 0.35}, {0, 0, 0}), 64, 48));
+        check_against_reference(render_all(
+            test::one_model_scene(dir, test::dome(), {5, 0.5, 0.35}, {0, 0, 0}), 64, 48));
     }
 }
 
@@ -126,7 +83,7 @@ TEST_CASE("INTRACY with a pole of the teapot in view", "[intracy]") {
     for (int k = 20; k < 28; ++k)
         lid.surfaces.push_back(teapot.surfaces[k]); // knob and lid: poles at the top
     check_against_reference(
-        render_all(one_model_scene(dir, to_json(lid), {0.3, -0.4, 5}, {0, 0, 3}), 64, 48));
+        render_all(test::one_model_scene(dir, to_json(lid), {0.3, -0.4, 5}, {0, 0, 3}), 64, 48));
 }
 
 TEST_CASE("INTRACY gives the same image sequentially and in parallel", "[intracy]") {

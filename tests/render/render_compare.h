@@ -10,11 +10,13 @@ namespace seamless::test {
 
 struct ImageComparison {
     long long pixels = 0;
-    long long within_one = 0;       // every channel within one level
-    int max_difference = 0;         // largest level difference of any channel
-    long long surface_mismatch = 0; // surface in one, background in the other
+    long long within_one = 0;                      // every channel within one level
+    int max_difference = 0;                        // largest level difference of any channel
+    long long surface_mismatch = 0;                // surface in one, background in the other
     long long surface_mismatch_off_silhouette = 0; // ... not next to a surface/background edge
-    double fraction_within_one() const { return pixels ? static_cast<double>(within_one) / pixels : 0; }
+    double fraction_within_one() const {
+        return pixels ? static_cast<double>(within_one) / pixels : 0;
+    }
 };
 
 // A pixel is next to a silhouette when one of its 8 neighbours (or itself) has
@@ -34,7 +36,8 @@ inline ImageComparison compare(const Image& a, const Image& b) {
         for (int x = 0; x < a.width; ++x) {
             ++c.pixels;
             int d = 0;
-            for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(a.at(x, y, ch) - b.at(x, y, ch)));
+            for (int ch = 0; ch < 3; ++ch)
+                d = std::max(d, std::abs(a.at(x, y, ch) - b.at(x, y, ch)));
             c.max_difference = std::max(c.max_difference, d);
             c.within_one += d <= 1;
             if (a.surface_at(x, y) != b.surface_at(x, y)) {
