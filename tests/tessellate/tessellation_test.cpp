@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Crack-free tessellation (paper section 6, Fig. 3) of the bundled and CAD models
-// at the section 8 tolerances, 10x finer and (the teapot) 100x finer: no T-junctions, one vertex
+// at the section 8 tolerances and 100x finer: no T-junctions, one vertex
 // per point, interior edges shared by two oppositely oriented triangles, closed models closed with
 // the right Euler characteristic; the naive rule cracks.
 #include "mesh_properties.h"
@@ -22,6 +22,11 @@ struct Case {
     int euler = 0;              // expected V - E + F when closed
     bool closed = false;        // no border edges expected
     bool free_overlaps = false; // free boundaries that overlap (teaspoon tips)
+    // Stiff: weights 1e-3 .. 1e3 squeeze the surface near each corner into a
+    // parameter region of about 1e-3, so at 100x finer tolerances the corner
+    // subpatches reach max_depth before they are planar. The mesh must still be
+    // crack-free; the error bound (checked elsewhere) still holds.
+    bool may_stop_at_max_depth = false;
 };
 
 std::vector<Case> cases() {
@@ -30,11 +35,27 @@ std::vector<Case> cases() {
                           {test::model_path("teaspoon.json"), 0, false, true},
                           {test::shared_dir() / "models/cad/torus.json", 0, true},
                           {test::shared_dir() / "models/cad/rounded_cube.json", 2, true}};
-    if (std::filesystem::exists(test::model_path("torus.json")))
-        out.push_back({test::model_path("torus.json"), 0, true});
-    if (std::filesystem::exists(test::model_path("sphere.json")))
-        out.push_back({test::model_path("sphere.json"), 2, true});
+    out.push_back({test::model_path("torus.json"), 0, true});
+    out.push_back({test::model_path("sphere.json"), 2, true});
+    out.push_back({test::model_path("torus_exact.json"), 0, true});
+    out.push_back({test::model_path("quarter_cylinder.json")});
+    out.push_back({test::model_path("repeated_knot.json")});
+    out.push_back({test::model_path("bilinear.json")});
+    out.push_back({test::model_path("extreme_weights.json"), 0, false, false, true});
     return out;
+}
+
+// The case whose path ends with `key` ("models/teapot.json", "cad/torus.json").
+const Case& model_case(const std::string& key) {
+    static const std::vector<Case> all = cases();
+    for (const Case& c : all) {
+        const std::string p = c.path.generic_string();
+        if (p.size() >= key.size() && p.compare(p.size() - key.size(), key.size(), key) == 0)
+            return c;
+    }
+    const std::string& file = key;
+    FAIL("no test case for " << file);
+    return all.front();
 }
 
 void check_crack_free(const Case& c, double factor, bool t_junctions) {
@@ -51,7 +72,7 @@ void check_crack_free(const Case& c, double factor, bool t_junctions) {
     REQUIRE(mesh.corner_normals.size() == mesh.triangles.size());
     REQUIRE(mesh.corner_uvs.size() == mesh.triangles.size());
     REQUIRE(mesh.surface_names.size() == m.surfaces.size());
-    CHECK(t.stats.nonplanar_subpatches == 0);
+    if (!c.may_stop_at_max_depth) CHECK(t.stats.nonplanar_subpatches == 0);
 
     const test::MeshReport r =
         test::analyse_mesh(mesh, t.stats.d_max, t_junctions, c.free_overlaps);
@@ -89,18 +110,25 @@ TEST_CASE("crack-free tessellation at the default tolerances", "[tessellation]")
     for (const Case& c : cases()) check_crack_free(c, 1, true);
 }
 
-TEST_CASE("crack-free tessellation at 100x finer tolerances", "[tessellation]") {
-    // About 1.5 million triangles: the teapot (poles, reversed seams) with the
-    // geometric T-junction search and every topology check.
-    check_crack_free(cases().front(), 100, true);
-}
-
-TEST_CASE("crack-free tessellation at 10x finer tolerances", "[tessellation]") {
-    // The other models at 10x (100x adds ~25 s and nothing the teapot and
-    // 10x do not cover): T-junctions searched geometrically too.
-    for (const Case& c : cases())
-        if (c.path.filename() != "teapot.json") check_crack_free(c, 10, true);
-}
+// 100x finer (up to about 1.5 million triangles each), one test case per model
+// so that ctest runs them in parallel; every topology check and the geometric
+// T-junction search.
+#define CRACK_FREE_100X(file)                                                                      \
+    TEST_CASE("crack-free tessellation at 100x finer tolerances: " file, "[tessellation][fine]") { \
+        check_crack_free(model_case(file), 100, true);                                             \
+    }
+CRACK_FREE_100X("models/teapot.json")
+CRACK_FREE_100X("models/teacup.json")
+CRACK_FREE_100X("models/teaspoon.json")
+CRACK_FREE_100X("models/torus.json")
+CRACK_FREE_100X("models/sphere.json")
+CRACK_FREE_100X("cad/rounded_cube.json")
+CRACK_FREE_100X("cad/torus.json")
+CRACK_FREE_100X("models/torus_exact.json")
+CRACK_FREE_100X("models/quarter_cylinder.json")
+CRACK_FREE_100X("models/repeated_knot.json")
+CRACK_FREE_100X("models/bilinear.json")
+CRACK_FREE_100X("models/extreme_weights.json")
 
 TEST_CASE("finer tolerances give more triangles and a smaller error bound", "[tessellation]") {
     const Model m = load_model(test::model_path("teapot.json"));
