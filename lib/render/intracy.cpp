@@ -537,12 +537,23 @@ class PartRenderer {
         return !cluster_may_hit(rc, patch);
     }
 
-    bool lights_unblocked(const ProjectedPatch& pp, int patch, const ParamBox& box) {
+    // SHADE step 2 for a cluster: which lights reach every point of B. The
+    // cluster of rays from a light to the hull of the intersection points is
+    // compared with the triangles but those of the patch itself (step 1 marks
+    // them; Proposition 11 with remarks 1-2). A light is visible when no
+    // triangle may meet the cluster, blocked when one triangle certainly meets
+    // every ray between the light and the points (Theorem 6 iii), and
+    // undecided otherwise (then B is split). Fills `visible` with the lights
+    // that reach B; returns false when some light is undecided.
+    bool lights_for_cluster(const ProjectedPatch& pp, int patch, const ParamBox& box,
+                            std::vector<Light>& visible) {
+        visible.clear();
         const Material& mat = ps_.lighting.materials[pp.material];
         if (mat.transmit > 0 && scene_.max_depth > 0) return false; // refraction: per pixel
         if (mat.diffuse == 0 && mat.specular == 0) return true;
         const IVec<3> Pw = to_world(enclose_point(pp.forms, box), true);
-        for (const Light& light : scene_.lights) {
+        for (size_t l = 0; l < scene_.lights.size(); ++l) {
+            const Light& light = scene_.lights[l];
             if (!light.on()) continue;
             RayCluster rc;
             for (int i = 0; i < 3; ++i) {
@@ -550,7 +561,29 @@ class PartRenderer {
                 rc.direction[i] = Pw[i] - Interval(light.position[i]);
             }
             rc.q = Interval(0.0, 1.0);
-            if (cluster_may_hit(rc, patch)) return false;
+            // A single ray's shadow test starts ray_epsilon from the point: a
+            // certain blocker must meet every ray before that.
+            const Interval dist2 =
+                sqr(rc.direction[0]) + sqr(rc.direction[1]) + sqr(rc.direction[2]);
+            const double q_max = 1 - 2 * ts_->ray_epsilon / std::sqrt(std::max(dist2.lo(), 1e-300));
+            const ClusterHull ch(rc);
+            bool maybe = false, blocked = false;
+            visit_candidate_triangles(
+                ts_->tess.trees, [&](const Box3& b) { return !blocked && ch.may_meet(b); },
+                [&](int t) {
+                    if (blocked || ts_->triangle_patch[t] == patch) return;
+                    const auto& tri = ts_->tess.mesh.triangles[t];
+                    const auto& V = ts_->tess.mesh.positions;
+                    if (!may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])) return;
+                    maybe = true;
+                    Interval q;
+                    if (covers_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q) && q.lo() > 0 &&
+                        q.hi() < q_max)
+                        blocked = true;
+                });
+            if (blocked) continue;
+            if (maybe) return false;
+            visible.push_back(light);
         }
         return true;
     }
@@ -589,15 +622,17 @@ class PartRenderer {
             if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
         }
         const Mark m{best_patch, box, {}};
-        // Step 8: SHADE over the hulls of the intersection points and normals,
-        // first as if every light were visible and the mirror showed the
-        // background: when that enclosure is already too wide, B is split
-        // without paying for the secondary-ray clusters.
+        // Step 8: SHADE over the hulls of the intersection points and normals.
         const PatchEnclosure e = enclose(pp.forms, box);
         const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
         const V3<Interval> N{e.normal[0], e.normal[1], e.normal[2]};
         const Material& mat = ps_.lighting.materials[pp.material];
-        auto I = shade<Interval>(ps_.lighting, mat, P, N, Vec3{});
+        // With secondary rays, only the lights that reach B count (step 2).
+        if (ts_ && !lights_for_cluster(pp, m.patch, box, lighting_.lights)) return false;
+        lighting_.ambient = ps_.lighting.ambient;
+        if (ts_)
+            for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
+        auto I = shade<Interval>(ts_ ? lighting_ : ps_.lighting, mat, P, N, Vec3{});
         const bool mirror = ts_ && mat.reflect > 0 && scene_.max_depth > 0;
         if (mirror) {
             const Vec3 bg = scene_.background;
@@ -613,11 +648,9 @@ class PartRenderer {
             if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
             two |= hi[c] > lo[c];
         }
-        // SHADE steps 2-4 for the cluster: every light must be certainly
-        // unblocked for the whole cluster, and a mirror's reflected cluster must
-        // certainly meet nothing; glass is traced pixel by pixel (its clusters
-        // return the infinite interval: B is split).
-        if (ts_ && !lights_unblocked(pp, m.patch, box)) return false;
+        // SHADE steps 3-4: a mirror's reflected cluster must certainly meet
+        // nothing; glass is traced pixel by pixel (its clusters return the
+        // infinite interval: B is split).
         if (mirror && !reflection_misses(e, m.patch)) return false;
         if (!two) {
             for (int y = B.y0; y <= B.y1; ++y)
@@ -681,6 +714,7 @@ class PartRenderer {
     std::vector<SubScreen> stack_;
     std::vector<RayPatchHit> hits_;
     std::vector<std::pair<double, int>> order_;
+    Scene lighting_; // scratch: ambient and the lights that reach a cluster, camera coordinates
     ClusterSystem sys_;
 };
 

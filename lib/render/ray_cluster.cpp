@@ -106,4 +106,42 @@ bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
     return true;
 }
 
+bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q) {
+    IMat<3> A;
+    for (int i = 0; i < 3; ++i) {
+        A(i, 0) = Interval(T2[i]) - Interval(T1[i]);
+        A(i, 1) = Interval(T3[i]) - Interval(T1[i]);
+        A(i, 2) = -c.direction[i];
+    }
+    const double qt = c.q.mid();
+    IVec<3> b;
+    for (int i = 0; i < 3; ++i)
+        b[i] = Interval(T1[i]) - (c.origin[i] + Interval(qt) * c.direction[i]);
+    // Start from the whole triangle's parameter box widened a little (epsilon
+    // inflation), so that H can land strictly inside it.
+    IVec<3> x;
+    x[0] = Interval(-0.1, 1.1);
+    x[1] = Interval(-0.1, 1.1);
+    x[2] = c.q - Interval(qt);
+    RMat<3> C;
+    if (!invert<3>(mid(A), C)) return false;
+    const IMat<3> CA = C * A;
+    for (int iter = 0; iter < 6; ++iter) {
+        const RVec<3> w = mid(x);
+        const IVec<3> xw = to_ivec<3>(w);
+        const IVec<3> g = gauss_seidel(CA, -(C * (b + A * xw)), x - xw);
+        if (g.is_empty()) return false;
+        const IVec<3> h = xw + g;
+        if (contains_in_interior(x, h)) {
+            // Theorem 6 iii for every ray: one meeting point, with parameters in h.
+            const bool inside = h[0].lo() > 0 && h[1].lo() > 0 && (h[0] + h[1]).hi() < 1;
+            q = h[2] + Interval(qt);
+            return inside;
+        }
+        x = intersect(h, x);
+        if (x.is_empty()) return false;
+    }
+    return false;
+}
+
 } // namespace seamless

@@ -37,6 +37,11 @@ class ClusterHull {
     Interval proj_[2];
 };
 
+// true: every ray of the cluster certainly meets the triangle's interior, once,
+// at a ray parameter inside `q` (Theorem 6 iii on the system of Proposition 11);
+// q receives the enclosure of those parameters.
+bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q);
+
 // false: certainly no ray of the cluster meets the triangle (Proposition 11);
 // true: some ray may meet it.
 bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3);

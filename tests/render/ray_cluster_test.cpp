@@ -116,3 +116,39 @@ TEST_CASE("ClusterHull rejects only boxes that no ray of the cluster enters", "[
     }
     CHECK(rejected > 500);
 }
+
+TEST_CASE("A covered cluster has every ray meeting the triangle", "[ray_cluster]") {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.02);
+    int covered = 0;
+    for (int n = 0; n < 2000; ++n) {
+        const Vec3 a{-1 + U(rng) * 0.2, -1 + U(rng) * 0.2, U(rng) * 0.1},
+            b{1 + U(rng) * 0.2, -1 + U(rng) * 0.2, U(rng) * 0.1},
+            c{U(rng) * 0.2, 1 + U(rng) * 0.2, U(rng) * 0.1};
+        RayCluster cl;
+        const Vec3 O{U(rng) * 0.5, U(rng) * 0.5, 3};
+        const Vec3 target{U(rng) * 0.6, U(rng) * 0.6, -1};
+        for (int i = 0; i < 3; ++i) {
+            const double wo = W(rng), wd = W(rng);
+            cl.origin[i] = Interval(O[i] - wo, O[i] + wo);
+            cl.direction[i] = Interval(target[i] - O[i] - wd, target[i] - O[i] + wd);
+        }
+        cl.q = Interval(0.0, 1.0);
+        Interval q;
+        if (!covers_triangle(cl, a, b, c, q)) continue;
+        ++covered;
+        CHECK(may_hit_triangle(cl, a, b, c));
+        for (int k = 0; k < 50; ++k) {
+            Vec3 o, d;
+            for (int i = 0; i < 3; ++i) {
+                std::uniform_real_distribution<double> po(cl.origin[i].lo(), cl.origin[i].hi());
+                std::uniform_real_distribution<double> pd(cl.direction[i].lo(),
+                                                          cl.direction[i].hi());
+                o[i] = po(rng);
+                d[i] = pd(rng);
+            }
+            CHECK(segment_hits(o, d, q.lo() - 1e-12, q.hi() + 1e-12, a, b, c));
+        }
+    }
+    CHECK(covered > 200);
+}
