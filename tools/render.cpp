@@ -34,7 +34,9 @@ nlohmann::json stats_json(const RenderStats& st) {
             {"hs_iterations_per_patch", st.hs_iterations_per_patch()},
             {"patches_per_pixel", st.patches_per_pixel()},
             {"primary_rays", st.primary_rays},
-            {"background_pixels", st.background_pixels}};
+            {"background_pixels", st.background_pixels},
+            {"reflected_clusters", st.reflected_clusters},
+            {"shadowed_clusters", st.shadowed_clusters}};
 }
 
 void add_render(CLI::App& app, Action& action) {

@@ -498,27 +498,17 @@ class PartRenderer {
         return w;
     }
 
-    // Whether some ray of the cluster may meet a triangle other than those of
-    // `patch` (Proposition 11 after the hull comparison on the patch trees).
-    bool cluster_may_hit(const RayCluster& rc, int patch) const {
-        const ClusterHull ch(rc);
-        bool hit = false;
-        visit_candidate_triangles(
-            ts_->tess.trees, [&](const Box3& b) { return !hit && ch.may_meet(b); },
-            [&](int t) {
-                if (hit || ts_->triangle_patch[t] == patch) return;
-                const auto& tri = ts_->tess.mesh.triangles[t];
-                const auto& V = ts_->tess.mesh.positions;
-                if (may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])) hit = true;
-            });
-        return hit;
-    }
-
-    // SHADE step 3 for a mirror cluster: the cluster of reflected rays. When it
-    // certainly meets no triangle (step 3.3) the reflection is the background;
-    // otherwise (a nearest q-connected set of triangles, step 3.4, is not
-    // attempted) B is split and its pixels trace single rays.
-    bool reflection_misses(const PatchEnclosure& e, int patch) const {
+    // SHADE step 3 for a mirror cluster: the cluster of reflected rays from the
+    // hull of B's points. Step 3.3: when it certainly meets no triangle, the
+    // reflection is the background. Step 3.4, for a nearest q-connected set of
+    // one triangle: when one triangle certainly meets every reflected ray and
+    // no other triangle may be met before it, SHADE recurses on the hull of
+    // those meeting points (its lights by step 2, seen from the mirror's
+    // points), as long as that triangle neither reflects nor refracts further
+    // within max_depth. Otherwise B is split (step 3.5). Adds the reflected
+    // intensity, times `reflect`, to I.
+    bool reflected_cluster(const PatchEnclosure& e, int patch, double reflect,
+                           std::array<Interval, 3>& I) {
         const IVec<3> Pw = to_world(e.point, true), Nw = to_world(e.normal, false);
         IVec<3> D, R;
         for (int i = 0; i < 3; ++i) D[i] = Pw[i] - Interval(ps_.frame.eye[i]);
@@ -534,7 +524,75 @@ class PartRenderer {
         rc.origin = Pw;
         rc.direction = R;
         rc.q = Interval(0.0, next_up(next_up(scene_diagonal_ / dmin) * 1.001));
-        return !cluster_may_hit(rc, patch);
+        // Candidates, and a triangle that certainly meets every ray.
+        const ClusterHull ch(rc);
+        const auto& M = ts_->tess.mesh;
+        int cover = -1, candidates = 0;
+        Interval cq, cb, cd;
+        visit_candidate_triangles(
+            ts_->tess.trees, [&](const Box3& b) { return ch.may_meet(b); },
+            [&](int t) {
+                if (ts_->triangle_patch[t] == patch) return;
+                const auto& tri = M.triangles[t];
+                if (!may_hit_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
+                                      M.positions[tri[2]]))
+                    return;
+                ++candidates;
+                Interval q, beta, delta;
+                if (covers_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
+                                    M.positions[tri[2]], q, &beta, &delta) &&
+                    q.lo() * dmin > 2 * ts_->ray_epsilon && (cover < 0 || q.hi() < cq.lo())) {
+                    cover = t;
+                    cq = q;
+                    cb = beta;
+                    cd = delta;
+                }
+            });
+        const Vec3 bg = scene_.background;
+        if (candidates == 0) { // step 3.3
+            for (int c = 0; c < 3; ++c) I[c] = clamp01(I[c] + Interval(reflect) * Interval(bg[c]));
+            return true;
+        }
+        if (cover < 0) return false;
+        // Nearest: no other triangle may be met up to the covering one.
+        RayCluster before = rc;
+        before.q = Interval(0.0, cq.hi());
+        const ClusterHull chb(before);
+        bool other = false;
+        visit_candidate_triangles(
+            ts_->tess.trees, [&](const Box3& b) { return !other && chb.may_meet(b); },
+            [&](int t) {
+                if (other || t == cover || ts_->triangle_patch[t] == patch) return;
+                const auto& tri = M.triangles[t];
+                other = may_hit_triangle(before, M.positions[tri[0]], M.positions[tri[1]],
+                                         M.positions[tri[2]]);
+            });
+        if (other) return false;
+        const Material& hm = scene_.materials[ts_->triangle_material[cover]];
+        if ((hm.reflect > 0 || hm.transmit > 0) && scene_.max_depth > 1) return false;
+        // The meeting points and the interpolated normals over (beta, delta).
+        const auto& tri = M.triangles[cover];
+        const Interval g = Interval(1.0) - cb - cd;
+        IVec<3> H;
+        V3<Interval> HN{}, HP{}, eye{};
+        const Interval w[3] = {g, cb, cd};
+        for (int i = 0; i < 3; ++i) {
+            Interval p(0.0), n(0.0);
+            for (int v = 0; v < 3; ++v) {
+                p += w[v] * Interval(M.positions[tri[v]][i]);
+                n += w[v] * Interval(M.corner_normals[cover][v][i]);
+            }
+            H[i] = p;
+            (i == 0 ? HP.x : i == 1 ? HP.y : HP.z) = p;
+            (i == 0 ? HN.x : i == 1 ? HN.y : HN.z) = n;
+            (i == 0 ? eye.x : i == 1 ? eye.y : eye.z) = Pw[i];
+        }
+        if (!lights_for_cluster(H, ts_->triangle_patch[cover], hm, lighting_world_.lights))
+            return false;
+        lighting_world_.ambient = scene_.ambient;
+        const auto Ih = shade<Interval>(lighting_world_, hm, HP, HN, eye);
+        for (int c = 0; c < 3; ++c) I[c] = clamp01(I[c] + Interval(reflect) * Ih[c]);
+        return true;
     }
 
     // SHADE step 2 for a cluster: which lights reach every point of B. The
@@ -545,13 +603,10 @@ class PartRenderer {
     // every ray between the light and the points (Theorem 6 iii), and
     // undecided otherwise (then B is split). Fills `visible` with the lights
     // that reach B; returns false when some light is undecided.
-    bool lights_for_cluster(const ProjectedPatch& pp, int patch, const ParamBox& box,
+    bool lights_for_cluster(const IVec<3>& Pw, int patch, const Material& mat,
                             std::vector<Light>& visible) {
         visible.clear();
-        const Material& mat = ps_.lighting.materials[pp.material];
-        if (mat.transmit > 0 && scene_.max_depth > 0) return false; // refraction: per pixel
         if (mat.diffuse == 0 && mat.specular == 0) return true;
-        const IVec<3> Pw = to_world(enclose_point(pp.forms, box), true);
         for (size_t l = 0; l < scene_.lights.size(); ++l) {
             const Light& light = scene_.lights[l];
             if (!light.on()) continue;
@@ -581,7 +636,10 @@ class PartRenderer {
                         q.hi() < q_max)
                         blocked = true;
                 });
-            if (blocked) continue;
+            if (blocked) {
+                ++blocked_lights_;
+                continue;
+            }
             if (maybe) return false;
             visible.push_back(light);
         }
@@ -627,18 +685,20 @@ class PartRenderer {
         const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
         const V3<Interval> N{e.normal[0], e.normal[1], e.normal[2]};
         const Material& mat = ps_.lighting.materials[pp.material];
-        // With secondary rays, only the lights that reach B count (step 2).
-        if (ts_ && !lights_for_cluster(pp, m.patch, box, lighting_.lights)) return false;
+        // With secondary rays, only the lights that reach B count (step 2);
+        // glass is traced pixel by pixel (its clusters return the infinite
+        // interval: B is split); a mirror adds its reflected cluster (step 3).
+        if (ts_ && mat.transmit > 0 && scene_.max_depth > 0) return false;
+        blocked_lights_ = 0;
+        if (ts_ && !lights_for_cluster(to_world(e.point, true), m.patch, mat, lighting_.lights))
+            return false;
+        const bool shadowed = blocked_lights_ > 0;
         lighting_.ambient = ps_.lighting.ambient;
         if (ts_)
             for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
         auto I = shade<Interval>(ts_ ? lighting_ : ps_.lighting, mat, P, N, Vec3{});
-        const bool mirror = ts_ && mat.reflect > 0 && scene_.max_depth > 0;
-        if (mirror) {
-            const Vec3 bg = scene_.background;
-            for (int c = 0; c < 3; ++c)
-                I[c] = clamp01(I[c] + Interval(mat.reflect) * Interval(bg[c]));
-        }
+        const bool reflected = ts_ && mat.reflect > 0 && scene_.max_depth > 0;
+        if (reflected && !reflected_cluster(e, m.patch, mat.reflect, I)) return false;
         int lo[3], hi[3];
         bool two = false;
         for (int c = 0; c < 3; ++c) {
@@ -648,10 +708,8 @@ class PartRenderer {
             if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
             two |= hi[c] > lo[c];
         }
-        // SHADE steps 3-4: a mirror's reflected cluster must certainly meet
-        // nothing; glass is traced pixel by pixel (its clusters return the
-        // infinite interval: B is split).
-        if (mirror && !reflection_misses(e, m.patch)) return false;
+        st.reflected_clusters += reflected;
+        st.shadowed_clusters += shadowed;
         if (!two) {
             for (int y = B.y0; y <= B.y1; ++y)
                 for (int x = B.x0; x <= B.x1; ++x) {
@@ -715,6 +773,9 @@ class PartRenderer {
     std::vector<RayPatchHit> hits_;
     std::vector<std::pair<double, int>> order_;
     Scene lighting_; // scratch: ambient and the lights that reach a cluster, camera coordinates
+    Scene lighting_world_;
+    int blocked_lights_ = 0; // lights certainly blocked in the last lights_for_cluster // the same
+                             // for a reflected cluster's meeting points, world coordinates
     ClusterSystem sys_;
 };
 

@@ -106,7 +106,8 @@ bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
     return true;
 }
 
-bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q) {
+bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q, Interval* beta,
+                     Interval* delta) {
     IMat<3> A;
     for (int i = 0; i < 3; ++i) {
         A(i, 0) = Interval(T2[i]) - Interval(T1[i]);
@@ -136,6 +137,8 @@ bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q
             // Theorem 6 iii for every ray: one meeting point, with parameters in h.
             const bool inside = h[0].lo() > 0 && h[1].lo() > 0 && (h[0] + h[1]).hi() < 1;
             q = h[2] + Interval(qt);
+            if (beta) *beta = h[0];
+            if (delta) *delta = h[1];
             return inside;
         }
         x = intersect(h, x);

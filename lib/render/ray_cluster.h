@@ -39,8 +39,10 @@ class ClusterHull {
 
 // true: every ray of the cluster certainly meets the triangle's interior, once,
 // at a ray parameter inside `q` (Theorem 6 iii on the system of Proposition 11);
-// q receives the enclosure of those parameters.
-bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q);
+// q receives the enclosure of those parameters, beta and delta (optional) the
+// enclosures of the meeting points' triangle parameters.
+bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q,
+                     Interval* beta = nullptr, Interval* delta = nullptr);
 
 // false: certainly no ray of the cluster meets the triangle (Proposition 11);
 // true: some ray may meet it.

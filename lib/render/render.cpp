@@ -20,6 +20,8 @@ void RenderStats::merge(const RenderStats& o) {
     hs_iterations += o.hs_iterations;
     primary_rays += o.primary_rays;
     background_pixels += o.background_pixels;
+    reflected_clusters += o.reflected_clusters;
+    shadowed_clusters += o.shadowed_clusters;
 }
 
 Image render(const Scene& scene, const RenderOptions& opt, RenderStats* stats) {

@@ -86,10 +86,13 @@ inline bool possibly_zero_crossing(Interval x) {
 // normal N, seen from `eye`. The normal is turned towards the viewer (open
 // surfaces are seen from both sides). For intervals: returns [0, 1] in every
 // channel when the side facing the viewer is undecided (a possible silhouette).
+// `eye` may be a box (V3<Interval>) when the viewer is itself a cluster of
+// points, as for reflected rays seen from the hull of the mirror's points.
 template <class T>
-std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3<T> N, Vec3 eye) {
+std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3<T> N,
+                       const V3<T>& eye) {
     const T zero(0.0);
-    const V3<T> V = V3<T>{T(eye.x), T(eye.y), T(eye.z)} - P;
+    const V3<T> V = eye - P;
     T nv = dot3(N, V);
     std::array<T, 3> I{T(scene.ambient * m.color.x), T(scene.ambient * m.color.y),
                        T(scene.ambient * m.color.z)};
@@ -138,6 +141,12 @@ std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3
         }
     }
     return {clamp01(I[0]), clamp01(I[1]), clamp01(I[2])};
+}
+
+// The same from one eye point.
+template <class T>
+std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3<T> N, Vec3 eye) {
+    return shade<T>(scene, m, P, N, V3<T>{T(eye.x), T(eye.y), T(eye.z)});
 }
 
 // Quantised level of an intensity in [0, 1]: round(I (levels - 1)).
