@@ -698,7 +698,15 @@ class PartRenderer {
             for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
         auto I = shade<Interval>(ts_ ? lighting_ : ps_.lighting, mat, P, N, Vec3{});
         const bool reflected = ts_ && mat.reflect > 0 && scene_.max_depth > 0;
-        if (reflected && !reflected_cluster(e, m.patch, mat.reflect, I)) return false;
+        if (reflected) {
+            // The reflection only adds to the local terms: if they alone span
+            // too many levels, split before tracing the reflected cluster.
+            for (int c = 0; c < 3; ++c)
+                if (quantise(I[c].hi(), levels_) - quantise(I[c].lo(), levels_) >
+                    (opt_.dither ? 1 : 0))
+                    return false;
+            if (!reflected_cluster(e, m.patch, mat.reflect, I)) return false;
+        }
         int lo[3], hi[3];
         bool two = false;
         for (int c = 0; c < 3; ++c) {
