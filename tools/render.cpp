@@ -35,7 +35,7 @@ nlohmann::json stats_json(const RenderStats& st) {
             {"patches_per_pixel", st.patches_per_pixel()},
             {"primary_rays", st.primary_rays},
             {"background_pixels", st.background_pixels},
-            {"reflected_clusters", st.reflected_clusters},
+            {"secondary_clusters", st.secondary_clusters},
             {"shadowed_clusters", st.shadowed_clusters}};
 }
 

@@ -292,7 +292,8 @@ class PartRenderer {
     PartRenderer(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
                  const RenderOptions& opt, Image& image, int levels)
         : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels),
-          scene_diagonal_(next_up(norm(control_box(scene.model).extent()))) {
+          scene_diagonal_(next_up(norm(control_box(scene.model).extent()))),
+          lighting_depth_(static_cast<size_t>(scene.max_depth) + 1) {
         const Vec3 bg = ps.lighting.background;
         for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
     }
@@ -498,33 +499,65 @@ class PartRenderer {
         return w;
     }
 
-    // SHADE step 3 for a mirror cluster: the cluster of reflected rays from the
-    // hull of B's points. Step 3.3: when it certainly meets no triangle, the
-    // reflection is the background. Step 3.4, for a nearest q-connected set of
-    // one triangle: when one triangle certainly meets every reflected ray and
-    // no other triangle may be met before it, SHADE recurses on the hull of
-    // those meeting points (its lights by step 2, seen from the mirror's
-    // points), as long as that triangle neither reflects nor refracts further
-    // within max_depth. Otherwise B is split (step 3.5). Adds the reflected
-    // intensity, times `reflect`, to I.
-    bool reflected_cluster(const PatchEnclosure& e, int patch, double reflect,
-                           std::array<Interval, 3>& I) {
-        const IVec<3> Pw = to_world(e.point, true), Nw = to_world(e.normal, false);
-        IVec<3> D, R;
-        for (int i = 0; i < 3; ++i) D[i] = Pw[i] - Interval(ps_.frame.eye[i]);
-        const Interval dn = D[0] * Nw[0] + D[1] * Nw[1] + D[2] * Nw[2];
-        const Interval nn = sqr(Nw[0]) + sqr(Nw[1]) + sqr(Nw[2]);
+    // Reflected directions D - 2 (D.N / N.N) N of a cluster (SHADE step 3.1).
+    static bool reflect_directions(const IVec<3>& D, const IVec<3>& N, IVec<3>& R) {
+        const Interval dn = D[0] * N[0] + D[1] * N[1] + D[2] * N[2];
+        const Interval nn = sqr(N[0]) + sqr(N[1]) + sqr(N[2]);
         if (!(nn.lo() > 0)) return false;
         const Interval k = Interval(2.0) * dn / nn;
-        for (int i = 0; i < 3; ++i) R[i] = D[i] - k * Nw[i];
-        // |R| = |D|: q up to diag / |D| carries every ray across the whole scene.
-        const double dmin = sqrt(sqr(D[0]) + sqr(D[1]) + sqr(D[2])).lo();
+        for (int i = 0; i < 3; ++i) R[i] = D[i] - k * N[i];
+        return true;
+    }
+
+    // Refracted directions of a cluster with incoming directions D at normals N
+    // (SHADE step 4), as trace.cpp does for one ray: entering when the ray
+    // comes from the side N points to, Snell's law, total internal reflection.
+    // false when the side or total reflection is undecided for the cluster.
+    static bool refract_directions(const IVec<3>& D, const IVec<3>& N, double ior, IVec<3>& T) {
+        const Interval dd = sqr(D[0]) + sqr(D[1]) + sqr(D[2]);
+        const Interval nn = sqr(N[0]) + sqr(N[1]) + sqr(N[2]);
+        if (!(dd.lo() > 0) || !(nn.lo() > 0)) return false;
+        const Interval dl = sqrt(dd), nl = sqrt(nn);
+        IVec<3> v, n; // unit view (towards the viewer) and unit normal
+        for (int i = 0; i < 3; ++i) {
+            v[i] = -D[i] / dl;
+            n[i] = N[i] / nl;
+        }
+        const Interval cos_v = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+        if (cos_v.contains(0.0)) return false;
+        const bool entering = cos_v.lo() > 0;
+        if (!entering)
+            for (int i = 0; i < 3; ++i) n[i] = -n[i];
+        const Interval cos_i = abs(cos_v);
+        const double eta = entering ? 1 / ior : ior;
+        const Interval k =
+            Interval(1.0) - Interval(eta) * Interval(eta) * (Interval(1.0) - sqr(cos_i));
+        if (k.contains(0.0)) return false;
+        if (k.hi() < 0) return reflect_directions(D, N, T); // total internal reflection
+        const Interval f = Interval(eta) * cos_i - sqrt(k);
+        for (int i = 0; i < 3; ++i) T[i] = -Interval(eta) * v[i] + f * n[i];
+        return true;
+    }
+
+    // SHADE for a cluster of secondary rays from the box `origin` in the
+    // directions `dir`, leaving patch `skip_patch`, whose hits have recursion
+    // depth `depth` (section 7, steps 3.2-3.5 and 4). Step 3.3: when the
+    // cluster certainly meets no triangle, it sees the background. Step 3.4,
+    // for a nearest q-connected set of one triangle: when one triangle
+    // certainly meets every ray and no other triangle may be met before it,
+    // SHADE recurses on the hull of the meeting points with the interpolated
+    // corner normals (lights by step 2, seen from the rays' origins; its own
+    // reflection and refraction while depth < max_depth). Otherwise false:
+    // B is split (step 3.5).
+    bool secondary_cluster(const IVec<3>& origin, const IVec<3>& dir, int skip_patch, int depth,
+                           std::array<Interval, 3>& out) {
+        const double dmin = sqrt(sqr(dir[0]) + sqr(dir[1]) + sqr(dir[2])).lo();
         if (!(dmin > 0)) return false;
         RayCluster rc;
-        rc.origin = Pw;
-        rc.direction = R;
+        rc.origin = origin;
+        rc.direction = dir;
+        // q up to diag / |dir| carries every ray across the whole scene.
         rc.q = Interval(0.0, next_up(next_up(scene_diagonal_ / dmin) * 1.001));
-        // Candidates, and a triangle that certainly meets every ray.
         const ClusterHull ch(rc);
         const auto& M = ts_->tess.mesh;
         int cover = -1, candidates = 0;
@@ -532,7 +565,7 @@ class PartRenderer {
         visit_candidate_triangles(
             ts_->tess.trees, [&](const Box3& b) { return ch.may_meet(b); },
             [&](int t) {
-                if (ts_->triangle_patch[t] == patch) return;
+                if (ts_->triangle_patch[t] == skip_patch) return;
                 const auto& tri = M.triangles[t];
                 if (!may_hit_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
                                       M.positions[tri[2]]))
@@ -548,9 +581,9 @@ class PartRenderer {
                     cd = delta;
                 }
             });
-        const Vec3 bg = scene_.background;
         if (candidates == 0) { // step 3.3
-            for (int c = 0; c < 3; ++c) I[c] = clamp01(I[c] + Interval(reflect) * Interval(bg[c]));
+            const Vec3 bg = scene_.background;
+            for (int c = 0; c < 3; ++c) out[c] = Interval(bg[c]);
             return true;
         }
         if (cover < 0) return false;
@@ -562,36 +595,53 @@ class PartRenderer {
         visit_candidate_triangles(
             ts_->tess.trees, [&](const Box3& b) { return !other && chb.may_meet(b); },
             [&](int t) {
-                if (other || t == cover || ts_->triangle_patch[t] == patch) return;
+                if (other || t == cover || ts_->triangle_patch[t] == skip_patch) return;
                 const auto& tri = M.triangles[t];
                 other = may_hit_triangle(before, M.positions[tri[0]], M.positions[tri[1]],
                                          M.positions[tri[2]]);
             });
         if (other) return false;
         const Material& hm = scene_.materials[ts_->triangle_material[cover]];
-        if ((hm.reflect > 0 || hm.transmit > 0) && scene_.max_depth > 1) return false;
+        const int hit_patch = ts_->triangle_patch[cover];
         // The meeting points and the interpolated normals over (beta, delta).
         const auto& tri = M.triangles[cover];
-        const Interval g = Interval(1.0) - cb - cd;
-        IVec<3> H;
-        V3<Interval> HN{}, HP{}, eye{};
-        const Interval w[3] = {g, cb, cd};
+        const Interval w[3] = {Interval(1.0) - cb - cd, cb, cd};
+        IVec<3> H, HN;
         for (int i = 0; i < 3; ++i) {
-            Interval p(0.0), n(0.0);
+            H[i] = Interval(0.0);
+            HN[i] = Interval(0.0);
             for (int v = 0; v < 3; ++v) {
-                p += w[v] * Interval(M.positions[tri[v]][i]);
-                n += w[v] * Interval(M.corner_normals[cover][v][i]);
+                H[i] += w[v] * Interval(M.positions[tri[v]][i]);
+                HN[i] += w[v] * Interval(M.corner_normals[cover][v][i]);
             }
-            H[i] = p;
-            (i == 0 ? HP.x : i == 1 ? HP.y : HP.z) = p;
-            (i == 0 ? HN.x : i == 1 ? HN.y : HN.z) = n;
-            (i == 0 ? eye.x : i == 1 ? eye.y : eye.z) = Pw[i];
         }
-        if (!lights_for_cluster(H, ts_->triangle_patch[cover], hm, lighting_world_.lights))
-            return false;
-        lighting_world_.ambient = scene_.ambient;
-        const auto Ih = shade<Interval>(lighting_world_, hm, HP, HN, eye);
-        for (int c = 0; c < 3; ++c) I[c] = clamp01(I[c] + Interval(reflect) * Ih[c]);
+        Scene& lighting = lighting_depth_.at(depth); // sized max_depth + 1: never reallocated here
+        if (!lights_for_cluster(H, hit_patch, hm, lighting.lights)) return false;
+        lighting.ambient = scene_.ambient;
+        const V3<Interval> HP{H[0], H[1], H[2]}, HNv{HN[0], HN[1], HN[2]},
+            eye{origin[0], origin[1], origin[2]};
+        out = shade<Interval>(lighting, hm, HP, HNv, eye);
+        if (depth < scene_.max_depth && (hm.reflect > 0 || hm.transmit > 0)) {
+            // The hit's own steps 3 and 4, from the meeting points onwards.
+            IVec<3> D;
+            for (int i = 0; i < 3; ++i) D[i] = H[i] - origin[i];
+            std::array<Interval, 3> more;
+            if (hm.reflect > 0) {
+                IVec<3> R;
+                if (!reflect_directions(D, HN, R) ||
+                    !secondary_cluster(H, R, hit_patch, depth + 1, more))
+                    return false;
+                for (int c = 0; c < 3; ++c) out[c] += Interval(hm.reflect) * more[c];
+            }
+            if (hm.transmit > 0) {
+                IVec<3> T;
+                if (!refract_directions(D, HN, hm.ior, T) ||
+                    !secondary_cluster(H, T, hit_patch, depth + 1, more))
+                    return false;
+                for (int c = 0; c < 3; ++c) out[c] += Interval(hm.transmit) * more[c];
+            }
+            for (int c = 0; c < 3; ++c) out[c] = clamp01(out[c]);
+        }
         return true;
     }
 
@@ -685,10 +735,8 @@ class PartRenderer {
         const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
         const V3<Interval> N{e.normal[0], e.normal[1], e.normal[2]};
         const Material& mat = ps_.lighting.materials[pp.material];
-        // With secondary rays, only the lights that reach B count (step 2);
-        // glass is traced pixel by pixel (its clusters return the infinite
-        // interval: B is split); a mirror adds its reflected cluster (step 3).
-        if (ts_ && mat.transmit > 0 && scene_.max_depth > 0) return false;
+        // With secondary rays, only the lights that reach B count (step 2), and
+        // mirrors and glass add their reflected and refracted clusters (steps 3, 4).
         blocked_lights_ = 0;
         if (ts_ && !lights_for_cluster(to_world(e.point, true), m.patch, mat, lighting_.lights))
             return false;
@@ -697,15 +745,32 @@ class PartRenderer {
         if (ts_)
             for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
         auto I = shade<Interval>(ts_ ? lighting_ : ps_.lighting, mat, P, N, Vec3{});
-        const bool reflected = ts_ && mat.reflect > 0 && scene_.max_depth > 0;
-        if (reflected) {
-            // The reflection only adds to the local terms: if they alone span
-            // too many levels, split before tracing the reflected cluster.
+        const bool secondary = ts_ && (mat.reflect > 0 || mat.transmit > 0) && scene_.max_depth > 0;
+        if (secondary) {
+            // The secondary terms only add to the local ones: if those alone
+            // span too many levels, split before tracing any cluster.
             for (int c = 0; c < 3; ++c)
                 if (quantise(I[c].hi(), levels_) - quantise(I[c].lo(), levels_) >
                     (opt_.dither ? 1 : 0))
                     return false;
-            if (!reflected_cluster(e, m.patch, mat.reflect, I)) return false;
+            const IVec<3> Pw = to_world(e.point, true), Nw = to_world(e.normal, false);
+            IVec<3> D;
+            for (int i = 0; i < 3; ++i) D[i] = Pw[i] - Interval(ps_.frame.eye[i]);
+            std::array<Interval, 3> more;
+            if (mat.reflect > 0) {
+                IVec<3> R;
+                if (!reflect_directions(D, Nw, R) || !secondary_cluster(Pw, R, m.patch, 1, more))
+                    return false;
+                for (int c = 0; c < 3; ++c) I[c] += Interval(mat.reflect) * more[c];
+            }
+            if (mat.transmit > 0) {
+                IVec<3> T;
+                if (!refract_directions(D, Nw, mat.ior, T) ||
+                    !secondary_cluster(Pw, T, m.patch, 1, more))
+                    return false;
+                for (int c = 0; c < 3; ++c) I[c] += Interval(mat.transmit) * more[c];
+            }
+            for (int c = 0; c < 3; ++c) I[c] = clamp01(I[c]);
         }
         int lo[3], hi[3];
         bool two = false;
@@ -716,7 +781,7 @@ class PartRenderer {
             if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
             two |= hi[c] > lo[c];
         }
-        st.reflected_clusters += reflected;
+        st.secondary_clusters += secondary;
         st.shadowed_clusters += shadowed;
         if (!two) {
             for (int y = B.y0; y <= B.y1; ++y)
@@ -781,9 +846,9 @@ class PartRenderer {
     std::vector<RayPatchHit> hits_;
     std::vector<std::pair<double, int>> order_;
     Scene lighting_; // scratch: ambient and the lights that reach a cluster, camera coordinates
-    Scene lighting_world_;
-    int blocked_lights_ = 0; // lights certainly blocked in the last lights_for_cluster // the same
-                             // for a reflected cluster's meeting points, world coordinates
+    // the same for secondary clusters' hits, one per depth, world coordinates
+    std::vector<Scene> lighting_depth_;
+    int blocked_lights_ = 0; // lights certainly blocked in the last lights_for_cluster
     ClusterSystem sys_;
 };
 

@@ -20,7 +20,7 @@ void RenderStats::merge(const RenderStats& o) {
     hs_iterations += o.hs_iterations;
     primary_rays += o.primary_rays;
     background_pixels += o.background_pixels;
-    reflected_clusters += o.reflected_clusters;
+    secondary_clusters += o.secondary_clusters;
     shadowed_clusters += o.shadowed_clusters;
 }
 

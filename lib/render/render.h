@@ -39,10 +39,10 @@ struct RenderStats {
     long long hs_iterations = 0;      // Hansen-Sengupta steps in those solves
     long long primary_rays = 0;       // single rays traced (pixels and corner rays)
     long long background_pixels = 0;
-    // INTRACY: mirror sub-screens painted with a certified reflected cluster
-    // (SHADE step 3.3: background, or 3.4: one triangle), and sub-screens
-    // painted with a light certainly blocked for the whole cluster (step 2).
-    long long reflected_clusters = 0, shadowed_clusters = 0;
+    // INTRACY: mirror or glass sub-screens painted with certified reflected or
+    // refracted clusters (SHADE steps 3.3-3.4 and 4), and sub-screens painted
+    // with a light certainly blocked for the whole cluster (step 2).
+    long long secondary_clusters = 0, shadowed_clusters = 0;
     long long patches = 0, triangles = 0;
 
     double single_pixel_fraction() const {
