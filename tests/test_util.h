@@ -9,11 +9,16 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace seamless::test {
 
-inline std::filesystem::path data_dir() { return SEAMLESS_DATA_DIR; }
-inline std::filesystem::path shared_dir() { return SEAMLESS_SHARED_DIR; }
+inline std::filesystem::path data_dir() {
+    return SEAMLESS_DATA_DIR;
+}
+inline std::filesystem::path shared_dir() {
+    return SEAMLESS_SHARED_DIR;
+}
 inline std::filesystem::path model_path(const std::string& name) {
     return data_dir() / "models" / name;
 }
@@ -35,10 +40,14 @@ struct RunResult {
     std::string out, err;
 };
 
-// Runs the seamless CLI with `args` (shell-quoted by the caller).
+// Runs the seamless CLI with `args` (shell-quoted by the caller). Its output
+// goes through files named after the process and a counter, so test cases
+// that ctest runs in parallel in one folder never read each other's output.
 inline RunResult run_cli(const std::string& args, const std::string& tag = "run") {
+    static int calls = 0;
     auto dir = std::filesystem::current_path();
-    auto out = dir / (tag + ".stdout"), err = dir / (tag + ".stderr");
+    const std::string base = tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(++calls);
+    auto out = dir / (base + ".stdout"), err = dir / (base + ".stderr");
     std::string cmd = std::string("\"") + SEAMLESS_CLI + "\" " + args + " >\"" + out.string() +
                       "\" 2>\"" + err.string() + "\" </dev/null";
     int rc = std::system(cmd.c_str());
@@ -50,6 +59,9 @@ inline RunResult run_cli(const std::string& args, const std::string& tag = "run"
     se << e.rdbuf();
     r.out = so.str();
     r.err = se.str();
+    std::error_code ec;
+    std::filesystem::remove(out, ec);
+    std::filesystem::remove(err, ec);
     return r;
 }
 
