@@ -33,6 +33,37 @@ Interval project_cluster(const RayCluster& c, Vec3 a) {
     }
     return r;
 }
+// The interval system 0 = b + A w of Proposition 11 with w = (beta, delta,
+// q - q~), q~ the midpoint of the cluster's q, and its preconditioned form for
+// the Hansen-Sengupta operator on the linear F(w) = b + A w (Definition 5: A is
+// its own Lipschitz matrix, so C = mid(A)^-1 and C A are formed once).
+struct TriangleSystem {
+    IMat<3> A, CA;
+    RMat<3> C;
+    IVec<3> b;
+    double qt;
+    bool preconditioned;
+
+    TriangleSystem(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) : qt(c.q.mid()) {
+        for (int i = 0; i < 3; ++i) {
+            A(i, 0) = Interval(T2[i]) - Interval(T1[i]);
+            A(i, 1) = Interval(T3[i]) - Interval(T1[i]);
+            A(i, 2) = -c.direction[i];
+            b[i] = Interval(T1[i]) - (c.origin[i] + Interval(qt) * c.direction[i]);
+        }
+        // Any real C keeps Theorem 6, so a singular mid(A) falls back to C = I.
+        preconditioned = invert<3>(mid(A), C);
+        if (!preconditioned) C = identity_matrix<3>();
+        CA = C * A;
+    }
+    // H(x, mid x) before its intersection with x; empty if no zero in x.
+    IVec<3> step(const IVec<3>& x) const {
+        const IVec<3> xw = to_ivec<3>(mid(x));
+        const IVec<3> g = gauss_seidel(CA, -(C * (b + A * xw)), x - xw);
+        return g.is_empty() ? IVec<3>::empty() : xw + g;
+    }
+};
+
 } // namespace
 
 ClusterHull::ClusterHull(const RayCluster& c) : box_(cluster_box(c)) {
@@ -69,32 +100,15 @@ bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
     const Interval rays = project_cluster(c, n);
     if (rays.hi() < tri.lo() || rays.lo() > tri.hi()) return false;
 
-    IMat<3> A;
-    for (int i = 0; i < 3; ++i) {
-        A(i, 0) = Interval(T2[i]) - Interval(T1[i]);
-        A(i, 1) = Interval(T3[i]) - Interval(T1[i]);
-        A(i, 2) = -c.direction[i];
-    }
-    const double qt = c.q.mid();
-    IVec<3> b;
-    for (int i = 0; i < 3; ++i)
-        b[i] = Interval(T1[i]) - (c.origin[i] + Interval(qt) * c.direction[i]);
+    const TriangleSystem sys(c, T1, T2, T3);
     IVec<3> x;
     x[0] = Interval(0.0, 1.0);
     x[1] = Interval(0.0, 1.0);
-    x[2] = c.q - Interval(qt);
-    // Hansen-Sengupta on the linear F(w) = b + A w (Definition 5): A is its own
-    // Lipschitz matrix, so the preconditioner C = mid(A)^-1 and C A are formed
-    // once; any real C keeps Theorem 6, so a singular mid(A) falls back to C = I.
-    RMat<3> C;
-    if (!invert<3>(mid(A), C)) C = identity_matrix<3>();
-    const IMat<3> CA = C * A;
+    x[2] = c.q - Interval(sys.qt);
     for (int iter = 0; iter < 4; ++iter) {
-        const RVec<3> w = mid(x);
-        const IVec<3> xw = to_ivec<3>(w);
-        const IVec<3> g = gauss_seidel(CA, -(C * (b + A * xw)), x - xw);
-        if (g.is_empty()) return false;
-        IVec<3> y = intersect(xw + g, x);
+        const IVec<3> h = sys.step(x);
+        if (h.is_empty()) return false;
+        const IVec<3> y = intersect(h, x);
         if (y.is_empty()) return false;
         if (y[0].lo() + y[1].lo() > 1.0) return false; // beta + delta <= 1
         const bool progress = y[0].width() < 0.9 * x[0].width() ||
@@ -108,35 +122,21 @@ bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
 
 bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q, Interval* beta,
                      Interval* delta) {
-    IMat<3> A;
-    for (int i = 0; i < 3; ++i) {
-        A(i, 0) = Interval(T2[i]) - Interval(T1[i]);
-        A(i, 1) = Interval(T3[i]) - Interval(T1[i]);
-        A(i, 2) = -c.direction[i];
-    }
-    const double qt = c.q.mid();
-    IVec<3> b;
-    for (int i = 0; i < 3; ++i)
-        b[i] = Interval(T1[i]) - (c.origin[i] + Interval(qt) * c.direction[i]);
+    const TriangleSystem sys(c, T1, T2, T3);
+    if (!sys.preconditioned) return false;
     // Start from the whole triangle's parameter box widened a little (epsilon
     // inflation), so that H can land strictly inside it.
     IVec<3> x;
     x[0] = Interval(-0.1, 1.1);
     x[1] = Interval(-0.1, 1.1);
-    x[2] = c.q - Interval(qt);
-    RMat<3> C;
-    if (!invert<3>(mid(A), C)) return false;
-    const IMat<3> CA = C * A;
+    x[2] = c.q - Interval(sys.qt);
     for (int iter = 0; iter < 6; ++iter) {
-        const RVec<3> w = mid(x);
-        const IVec<3> xw = to_ivec<3>(w);
-        const IVec<3> g = gauss_seidel(CA, -(C * (b + A * xw)), x - xw);
-        if (g.is_empty()) return false;
-        const IVec<3> h = xw + g;
+        const IVec<3> h = sys.step(x);
+        if (h.is_empty()) return false;
         if (contains_in_interior(x, h)) {
             // Theorem 6 iii for every ray: one meeting point, with parameters in h.
             const bool inside = h[0].lo() > 0 && h[1].lo() > 0 && (h[0] + h[1]).hi() < 1;
-            q = h[2] + Interval(qt);
+            q = h[2] + Interval(sys.qt);
             if (beta) *beta = h[0];
             if (delta) *delta = h[1];
             return inside;
