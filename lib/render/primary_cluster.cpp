@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/render/primary_cluster.h>
+
+#include <seamless/interval/hansen_sengupta.h>
+
+#include <limits>
+
+namespace seamless {
+
+void cluster_system(const PatchForms& f, Interval a, Interval b, ClusterSystem& out) {
+    const Interval m[2][PowerForm::kMaxDim] = {{Interval(1.0), Interval(0.0), -a, Interval(0.0)},
+                                               {Interval(0.0), Interval(1.0), -b, Interval(0.0)}};
+    out.G = combine(f.X, m, 2);
+    out.Gs = combine(f.Xs, m, 2);
+    out.Gt = combine(f.Xt, m, 2);
+}
+
+int solve_pieces(Interval n, Interval d, Interval X, double x0, Interval out[2]) {
+    const Interval rel = X - Interval(x0);
+    if (!d.contains(0.0)) {
+        out[0] = intersect(Interval(x0) + (-n) / d, X);
+        return out[0].is_empty() ? 0 : 1;
+    }
+    if (n.contains(0.0)) {
+        out[0] = X;
+        return 1;
+    }
+    // -n / d with 0 in d: two half-lines, or one when d touches 0 from one side.
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const Interval num = -n;
+    Interval left = Interval::empty(), right = Interval::empty();
+    if (num.lo() > 0) {
+        if (d.hi() > 0) right = {next_down(num.lo() / d.hi()), inf};
+        if (d.lo() < 0) left = {-inf, next_up(num.lo() / d.lo())};
+    } else {
+        if (d.hi() > 0) left = {-inf, next_up(num.hi() / d.hi())};
+        if (d.lo() < 0) right = {next_down(num.hi() / d.lo()), inf};
+    }
+    int k = 0;
+    for (Interval piece : {intersect(left, rel), intersect(right, rel)})
+        if (!piece.is_empty()) out[k++] = intersect(Interval(x0) + piece, X);
+    return k;
+}
+
+bool narrow(const ClusterSystem& sys, ParamBox& box) {
+    for (int pass = 0; pass < 3; ++pass) {
+        const double before = box.s.width() * box.t.width();
+        for (int k = 0; k < 2; ++k) {
+            const Interval Ds = horner(sys.Gs, k, box);
+            Interval s = box.s;
+            for (double s0 : {box.s.lo(), box.s.hi()}) {
+                Interval piece[2];
+                const Interval N = horner(sys.G, k, ParamBox{Interval(s0), box.t});
+                int n = solve_pieces(N, Ds, s, s0, piece);
+                s = n == 0 ? Interval::empty() : (n == 1 ? piece[0] : hull(piece[0], piece[1]));
+                if (s.is_empty()) return false;
+            }
+            box.s = s;
+            const Interval Dt = horner(sys.Gt, k, box);
+            Interval t = box.t;
+            for (double t0 : {box.t.lo(), box.t.hi()}) {
+                Interval piece[2];
+                const Interval N = horner(sys.G, k, ParamBox{box.s, Interval(t0)});
+                int n = solve_pieces(N, Dt, t, t0, piece);
+                t = n == 0 ? Interval::empty() : (n == 1 ? piece[0] : hull(piece[0], piece[1]));
+                if (t.is_empty()) return false;
+            }
+            box.t = t;
+        }
+        if (box.s.width() * box.t.width() > 0.8 * before) break;
+    }
+    return true;
+}
+
+int separate(const ClusterSystem& sys, const ParamBox& box, ParamBox out[2]) {
+    for (int dir = 0; dir < 2; ++dir) {
+        for (int k = 0; k < 2; ++k) {
+            Interval piece[2];
+            int n;
+            if (dir == 0) {
+                const double s0 = box.s.mid();
+                n = solve_pieces(horner(sys.G, k, ParamBox{Interval(s0), box.t}),
+                                 horner(sys.Gs, k, box), box.s, s0, piece);
+            } else {
+                const double t0 = box.t.mid();
+                n = solve_pieces(horner(sys.G, k, ParamBox{box.s, Interval(t0)}),
+                                 horner(sys.Gt, k, box), box.t, t0, piece);
+            }
+            if (n == 0) return 0;
+            if (n == 2) {
+                out[0] = out[1] = box;
+                (dir == 0 ? out[0].s : out[0].t) = piece[0];
+                (dir == 0 ? out[1].s : out[1].t) = piece[1];
+                return 2;
+            }
+        }
+    }
+    out[0] = box;
+    return 1;
+}
+
+bool certify_cluster(const ClusterSystem& sys, ParamBox& box) {
+    const Interval unit(0.0, 1.0);
+    auto inflate = [&](Interval x) {
+        const double d = 0.1 * x.width() + 1e-12;
+        return intersect(Interval(next_down(x.lo() - d), next_up(x.hi() + d)), unit);
+    };
+    IVec<2> x;
+    x[0] = inflate(box.s);
+    x[1] = inflate(box.t);
+    for (int iter = 0; iter < 6; ++iter) {
+        IMat<2> A;
+        IVec<2> F;
+        const ParamBox xb{x[0], x[1]};
+        for (int k = 0; k < 2; ++k) {
+            A(k, 0) = horner(sys.Gs, k, xb);
+            A(k, 1) = horner(sys.Gt, k, xb);
+        }
+        const double cs = x[0].mid(), ct = x[1].mid();
+        for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, ParamBox{Interval(cs), Interval(ct)});
+        const HansenSenguptaStep<2> step = hansen_sengupta<2>(A, F, x, RVec<2>{cs, ct});
+        if (step.box.is_empty()) return false;
+        if (step.unique) {
+            box = {step.box[0], step.box[1]};
+            return true;
+        }
+        x[0] = inflate(step.box[0]);
+        x[1] = inflate(step.box[1]);
+    }
+    return false;
+}
+
+} // namespace seamless
