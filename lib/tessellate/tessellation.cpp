@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cassert>
 #include <chrono>
+#include <cmath>
+#include <limits>
 
 namespace seamless {
 namespace {
@@ -70,8 +72,10 @@ Tessellation tessellate(const Model& model, const TessellationOptions& options) 
     return tessellate(model, bezier_patches(model), options);
 }
 
-Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patches,
-                        const TessellationOptions& options) {
+namespace {
+
+Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
+                                      const TessellationOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     Tessellation out;
     TessellationStats& st = out.stats;
@@ -95,7 +99,12 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
             subdivide(patches[i], static_cast<int>(i), sub, out.trees, out.subpatches));
 
     // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
-    const BoundaryMatch match = match_boundaries(patches, options.match_tolerance * st.d_max);
+    // Shared boundaries agree to the rounding of knot insertion, which scales
+    // with the coordinates' magnitude, not with d_max: a model far from the
+    // origin needs the larger of the two.
+    const double match_tol = std::max(options.match_tolerance * st.d_max,
+                                      64 * std::numeric_limits<double>::epsilon() * scale);
+    const BoundaryMatch match = match_boundaries(patches, match_tol);
     st.shared_edges = match.shared_edges;
     st.collapsed_edges = match.collapsed_edges;
     const EdgeRegistry reg = build_edge_registry(match, out.subpatches);
@@ -202,6 +211,49 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     st.vertices = mesh.vertex_count();
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+} // namespace
+
+Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patches,
+                        const TessellationOptions& options) {
+    // Stiff cases: huge and tiny coordinates. Cross products and squared
+    // distances of coordinates far from 1 overflow or underflow (a plane
+    // through three points of size 1e-151 has a normal of length 0 in
+    // doubles), so the work is done at the power-of-two scale that brings
+    // d_max into [1, 2): exact both ways, the result is the same mesh, scaled.
+    const double dm = control_box(model).max_extent();
+    const int e = dm > 0 && std::isfinite(dm) ? std::ilogb(dm) : 0;
+    if (e == 0) return tessellate_at_unit_scale(model, patches, options);
+    const double down = std::ldexp(1.0, -e), up = std::ldexp(1.0, e);
+    Model m = model;
+    for (BSplineSurface& s : m.surfaces)
+        for (Vec3& p : s.points) p = down * p;
+    std::vector<BezierPatch> ps = patches;
+    for (BezierPatch& b : ps)
+        for (HPoint& h : b.cp) h = {down * h.x, down * h.y, down * h.z, h.w};
+    TessellationOptions o = options;
+    if (o.eps1 >= 0) o.eps1 *= down;
+    if (o.eps2 >= 0) o.eps2 *= down;
+    Tessellation t = tessellate_at_unit_scale(m, ps, o);
+    auto grow = [&](Box3& b) {
+        if (!b.empty()) b = {up * b.lo, up * b.hi};
+    };
+    for (Vec3& p : t.mesh.positions) p = up * p;
+    for (PatchNode& n : t.trees.nodes) {
+        grow(n.control_hull);
+        grow(n.triangle_hull);
+    }
+    for (Subpatch& sp : t.subpatches) {
+        sp.bilinear_error *= up;
+        sp.error_bound *= up;
+        for (Vec3& c : sp.corners) c = up * c;
+    }
+    t.stats.d_max *= up;
+    t.stats.eps1 *= up;
+    t.stats.eps2 *= up;
+    t.stats.max_error_bound *= up;
+    return t;
 }
 
 } // namespace seamless
