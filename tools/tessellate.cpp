@@ -2,6 +2,7 @@
 // seamless tessellate MODEL -o OUT: crack-free adaptive triangulation (paper
 // section 6) with the tolerances of section 8, written in OUT's format.
 #include "commands.h"
+#include <seamless/base/error.h>
 
 #include <seamless/base/atomic_file.h>
 #include <seamless/mesh/mesh_io.h>
@@ -10,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -41,6 +44,13 @@ void add_tessellate(CLI::App& app, Action& action) {
     cmd->add_option("--stats", args->stats, "also write the statistics as JSON to this file");
     cmd->callback([&action, args] {
         action = [args] {
+            // Refuse an unknown output format before doing the work.
+            std::string ext = std::filesystem::path(args->out).extension().string();
+            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            if (!is_mesh_extension(ext))
+                throw InputError(args->out, "",
+                                 "unknown mesh extension '" + ext +
+                                     "' (expected .off .obj .ply .stl .gltf .glb)");
             const Model m = load_model(args->model);
             TessellationOptions opt;
             opt.eps1 = args->eps1;
