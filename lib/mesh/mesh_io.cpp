@@ -335,6 +335,13 @@ size_t ply_size(PlyType t) {
     return 0;
 }
 
+// A value of type T from its bytes (already in host order).
+template <class T> double load_as(const unsigned char* b) {
+    T v;
+    std::memcpy(&v, b, sizeof v);
+    return static_cast<double>(v);
+}
+
 // Reads one binary PLY scalar at `p` as a double.
 double ply_binary_value(const unsigned char* p, PlyType t, bool big_endian) {
     unsigned char b[8];
@@ -342,39 +349,21 @@ double ply_binary_value(const unsigned char* p, PlyType t, bool big_endian) {
     for (size_t i = 0; i < n; ++i) b[i] = big_endian ? p[n - 1 - i] : p[i];
     switch (t) {
     case PlyType::i8:
-        return static_cast<double>(static_cast<int8_t>(b[0]));
+        return load_as<int8_t>(b);
     case PlyType::u8:
-        return b[0];
-    case PlyType::i16: {
-        int16_t v;
-        std::memcpy(&v, b, 2);
-        return v;
-    }
-    case PlyType::u16: {
-        uint16_t v;
-        std::memcpy(&v, b, 2);
-        return v;
-    }
-    case PlyType::i32: {
-        int32_t v;
-        std::memcpy(&v, b, 4);
-        return v;
-    }
-    case PlyType::u32: {
-        uint32_t v;
-        std::memcpy(&v, b, 4);
-        return v;
-    }
-    case PlyType::f32: {
-        float v;
-        std::memcpy(&v, b, 4);
-        return v;
-    }
-    case PlyType::f64: {
-        double v;
-        std::memcpy(&v, b, 8);
-        return v;
-    }
+        return load_as<uint8_t>(b);
+    case PlyType::i16:
+        return load_as<int16_t>(b);
+    case PlyType::u16:
+        return load_as<uint16_t>(b);
+    case PlyType::i32:
+        return load_as<int32_t>(b);
+    case PlyType::u32:
+        return load_as<uint32_t>(b);
+    case PlyType::f32:
+        return load_as<float>(b);
+    case PlyType::f64:
+        return load_as<double>(b);
     }
     return 0;
 }
