@@ -77,10 +77,7 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
         rects.push_back({valid ? P[0] / P[2] : Interval::entire(),
                          valid ? P[1] / P[2] : Interval::entire(), valid});
     }
-    std::vector<RenderStats> row_stats(H);
-    std::atomic<int> done{0};
-    auto row = [&](int y) {
-        RenderStats& rs = row_stats[y];
+    render_rows(W, H, opt, st, [&](int y, RenderStats& rs) {
         std::vector<RayPatchHit> hits;
         const double b = ps.frame.screen_b(y + 0.5);
         for (int x = 0; x < W; ++x) {
@@ -128,12 +125,7 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
                 image.at(x, y, c) = static_cast<std::uint16_t>(quantise(I[c], L));
             image.surface_at(x, y) = best >= 0;
         }
-        const int d = ++done;
-        if (opt.progress && d % std::max(1, H / 100) == 0) opt.progress(static_cast<double>(d) / H);
-    };
-    for_each_item(H, opt.threads, row);
-    for (const RenderStats& s : row_stats) st.merge(s);
-    st.subscreens_by_size[1] = static_cast<long long>(W) * H;
+    });
     return image;
 }
 

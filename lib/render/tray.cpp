@@ -43,10 +43,7 @@ Image render_tray(const Scene& scene, const RenderOptions& opt, RenderStats& st)
     st.triangles = ts.tess.mesh.triangle_count();
 
     Image image(W, H, L);
-    std::vector<RenderStats> row_stats(H);
-    std::atomic<int> done{0};
-    auto row = [&](int y) {
-        RenderStats& rs = row_stats[y];
+    render_rows(W, H, opt, st, [&](int y, RenderStats& rs) {
         const double b = frame.screen_b(y + 0.5);
         for (int x = 0; x < W; ++x) {
             const Vec3 ray_origin = frame.eye;
@@ -71,12 +68,7 @@ Image render_tray(const Scene& scene, const RenderOptions& opt, RenderStats& st)
                 image.at(x, y, c) = static_cast<std::uint16_t>(quantise(I[c], L));
             image.surface_at(x, y) = hit.triangle >= 0;
         }
-        const int d = ++done;
-        if (opt.progress && d % std::max(1, H / 100) == 0) opt.progress(static_cast<double>(d) / H);
-    };
-    for_each_item(H, opt.threads, row);
-    for (const RenderStats& s : row_stats) st.merge(s);
-    st.subscreens_by_size[1] = static_cast<long long>(W) * H;
+    });
     return image;
 }
 
