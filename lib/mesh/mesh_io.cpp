@@ -211,9 +211,9 @@ TriangleMesh read_off(const std::string& text, const std::string& file) {
     return mesh;
 }
 
-std::string format_off(const TriangleMesh& mesh) {
-    std::string out = "OFF\n" + std::to_string(mesh.vertex_count()) + " " +
-                      std::to_string(mesh.triangle_count()) + " 0\n";
+// The body that OFF and ASCII PLY share: one "x y z" line per vertex, then
+// one "3 a b c" line per triangle (0-based indices).
+void append_points_and_triangles(std::string& out, const TriangleMesh& mesh) {
     for (Vec3 p : mesh.positions) {
         append_point(out, p);
         out += '\n';
@@ -221,6 +221,12 @@ std::string format_off(const TriangleMesh& mesh) {
     for (auto& t : mesh.triangles)
         out += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " +
                std::to_string(t[2]) + "\n";
+}
+
+std::string format_off(const TriangleMesh& mesh) {
+    std::string out = "OFF\n" + std::to_string(mesh.vertex_count()) + " " +
+                      std::to_string(mesh.triangle_count()) + " 0\n";
+    append_points_and_triangles(out, mesh);
     return out;
 }
 
@@ -496,13 +502,7 @@ std::string format_ply(const TriangleMesh& mesh) {
                       "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
                       std::to_string(mesh.triangle_count()) +
                       "\nproperty list uchar int vertex_indices\nend_header\n";
-    for (Vec3 p : mesh.positions) {
-        append_point(out, p);
-        out += '\n';
-    }
-    for (auto& t : mesh.triangles)
-        out += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " +
-               std::to_string(t[2]) + "\n";
+    append_points_and_triangles(out, mesh);
     return out;
 }
 
