@@ -88,13 +88,5 @@ TEST_CASE("INTRACY with a pole of the teapot in view", "[intracy]") {
 
 TEST_CASE("INTRACY gives the same image sequentially and in parallel", "[intracy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
-    RenderOptions o;
-    o.width = 80;
-    o.height = 60;
-    o.threads = 1;
-    const Image a = render(scene, o);
-    o.threads = 2;
-    const Image b = render(scene, o);
-    CHECK(a.level == b.level);
-    CHECK(a.surface == b.surface);
+    test::check_threads_agree(scene, RenderMethod::intracy, 80, 60);
 }

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <seamless/render/image.h>
+#include <seamless/render/render.h>
+
+#include <catch2/catch.hpp>
 
 #include <cstdlib>
 
@@ -46,6 +49,22 @@ inline ImageComparison compare(const Image& a, const Image& b) {
             }
         }
     return c;
+}
+
+// Renders `scene` with one thread and with two: images and work counts agree.
+inline void check_threads_agree(const Scene& scene, RenderMethod method, int width, int height) {
+    RenderOptions o;
+    o.method = method;
+    o.width = width;
+    o.height = height;
+    o.threads = 1;
+    RenderStats s1, s2;
+    const Image a = render(scene, o, &s1);
+    o.threads = 2;
+    const Image b = render(scene, o, &s2);
+    CHECK(a.level == b.level);
+    CHECK(a.surface == b.surface);
+    CHECK(s1.pixel_patch_solves == s2.pixel_patch_solves);
 }
 
 } // namespace seamless::test

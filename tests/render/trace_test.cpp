@@ -3,6 +3,7 @@
 // tessellation: shadows, a mirror, refraction through a plane-parallel plate
 // as Snell's law predicts, the recursion limit, lights that are off; TRAY on
 // the scenes of section 8 (data/scenes): sequential == parallel, all load and render.
+#include "render_compare.h"
 #include "test_util.h"
 
 #include <seamless/render/camera.h>
@@ -258,18 +259,7 @@ TEST_CASE("A plane-parallel glass plate displaces a ray as Snell's law predicts"
 TEST_CASE("TRAY with SHADE gives the same image sequentially and in parallel on SCENE 1",
           "[trace]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "scene1.json");
-    RenderOptions o;
-    o.method = RenderMethod::tray;
-    o.width = 80;
-    o.height = 60;
-    o.threads = 1;
-    RenderStats s1, s2;
-    const Image a = render(scene, o, &s1);
-    o.threads = 2;
-    const Image b = render(scene, o, &s2);
-    CHECK(a.level == b.level);
-    CHECK(a.surface == b.surface);
-    CHECK(s1.pixel_patch_solves == s2.pixel_patch_solves);
+    test::check_threads_agree(scene, RenderMethod::tray, 80, 60);
 }
 
 TEST_CASE("The scenes of section 8 load and render with TRAY", "[trace]") {

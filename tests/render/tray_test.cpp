@@ -128,16 +128,5 @@ TEST_CASE("TRAY agrees with INTRACY with a pole of the teapot in view", "[tray]"
 
 TEST_CASE("TRAY gives the same image sequentially and in parallel", "[tray]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
-    RenderOptions o;
-    o.method = RenderMethod::tray;
-    o.width = 80;
-    o.height = 60;
-    o.threads = 1;
-    RenderStats s1, s2;
-    const Image a = render(scene, o, &s1);
-    o.threads = 2;
-    const Image b = render(scene, o, &s2);
-    CHECK(a.level == b.level);
-    CHECK(a.surface == b.surface);
-    CHECK(s1.pixel_patch_solves == s2.pixel_patch_solves);
+    test::check_threads_agree(scene, RenderMethod::tray, 80, 60);
 }
