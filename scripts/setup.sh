@@ -7,8 +7,14 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 
+# OpenCASCADE reads STEP/IGES (lib/model) and is the tessellation benchmark's
+# baseline; Embree is the render benchmark's baseline (bench/, optional
+# targets); clang with libFuzzer and the sanitizer runtimes builds the fuzz
+# targets (tests/fuzz) that the test script runs.
 packages=(build-essential cmake pkg-config libopenmesh-dev libcgal-dev libtinygltf-dev catch2
-          nlohmann-json3-dev libstb-dev libcli11-dev libtbb-dev libboost-dev python3)
+          nlohmann-json3-dev libstb-dev libcli11-dev libtbb-dev libboost-dev python3
+          libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
+          libocct-foundation-dev libembree-dev clang-14 libclang-rt-14-dev libfuzzer-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
