@@ -24,7 +24,7 @@ void add_tessellate(CLI::App& app, Action& action) {
                       "straight-midpoint edge vertices, fans of four or more triangles)");
     struct Args {
         std::string model, out, stats;
-        double eps1 = -1, eps2 = -1;
+        double eps1 = -1, eps2 = -1, seam_tolerance = -1;
         int max_depth = TessellationOptions{}.max_depth;
     };
     auto args = std::make_shared<Args>();
@@ -39,6 +39,10 @@ void add_tessellate(CLI::App& app, Action& action) {
     cmd->add_option("--eps2", args->eps2,
                     "boundary straightness tolerance in model units (default 0.02 * d_max)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--seam-tolerance", args->seam_tolerance,
+                    "surfaces whose boundaries are closer than this (model units) share their "
+                    "vertices there (default 1e-9 * d_max)")
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--max-depth", args->max_depth, "most halvings per Bezier patch")
         ->check(CLI::Range(0, 60));
     cmd->add_option("--stats", args->stats, "also write the statistics as JSON to this file");
@@ -56,6 +60,7 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.eps1 = args->eps1;
             opt.eps2 = args->eps2;
             opt.max_depth = args->max_depth;
+            opt.seam_tolerance = args->seam_tolerance;
             const Tessellation t = tessellate(m, opt);
             write_mesh(args->out, t.mesh);
             const TessellationStats& s = t.stats;
@@ -73,6 +78,9 @@ void add_tessellate(CLI::App& app, Action& action) {
                                   {"vertices", s.vertices},
                                   {"shared_edges", s.shared_edges},
                                   {"collapsed_edges", s.collapsed_edges},
+                                  {"seams", s.seams},
+                                  {"seam_vertices", s.seam_vertices},
+                                  {"seam_tolerance", s.seam_tolerance},
                                   {"nonplanar_subpatches", s.nonplanar_subpatches},
                                   {"max_depth", s.max_depth},
                                   {"d_max", s.d_max},

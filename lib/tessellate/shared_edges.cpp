@@ -10,42 +10,6 @@ namespace {
 
 constexpr int kEdgeCorners[4][2] = {{0, 1}, {1, 2}, {3, 2}, {0, 3}};
 
-int edge_order(const BezierPatch& b, int e) {
-    return (e == 0 || e == 2) ? b.p : b.q;
-}
-
-// k-th control point of edge e, in increasing parameter.
-HPoint edge_control(const BezierPatch& b, int e, int k) {
-    switch (e) {
-    case 0:
-        return b.at(k, 0);
-    case 1:
-        return b.at(b.p, k);
-    case 2:
-        return b.at(k, b.q);
-    default:
-        return b.at(0, k);
-    }
-}
-
-// Grid point at coordinate x along edge e (increasing parameter).
-void edge_grid_point(int e, int x, int& s, int& t) {
-    switch (e) {
-    case 0:
-        s = x, t = 0;
-        break;
-    case 1:
-        s = kParamOne, t = x;
-        break;
-    case 2:
-        s = x, t = kParamOne;
-        break;
-    default:
-        s = 0, t = x;
-        break;
-    }
-}
-
 struct UnionFind {
     std::vector<int> parent;
     explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
@@ -155,6 +119,40 @@ int find_interior_line(const EdgeRegistry& reg, int patch, int dir, int c) {
 }
 
 } // namespace
+
+int edge_order(const BezierPatch& b, int e) {
+    return (e == 0 || e == 2) ? b.p : b.q;
+}
+
+HPoint edge_control(const BezierPatch& b, int e, int k) {
+    switch (e) {
+    case 0:
+        return b.at(k, 0);
+    case 1:
+        return b.at(b.p, k);
+    case 2:
+        return b.at(k, b.q);
+    default:
+        return b.at(0, k);
+    }
+}
+
+void edge_grid_point(int e, int x, int& s, int& t) {
+    switch (e) {
+    case 0:
+        s = x, t = 0;
+        break;
+    case 1:
+        s = kParamOne, t = x;
+        break;
+    case 2:
+        s = x, t = kParamOne;
+        break;
+    default:
+        s = 0, t = x;
+        break;
+    }
+}
 
 BoundaryMatch match_boundaries(const std::vector<BezierPatch>& patches, double tol) {
     const int np = static_cast<int>(patches.size());
@@ -312,7 +310,14 @@ VertexKey vertex_key(const BoundaryMatch& m, int patch, int s, int t) {
 }
 
 int vertex_at(VertexRegistry& vr, int patch, int s, int t) {
-    const VertexKey key = vertex_key(*vr.match, patch, s, t);
+    return vertex_of(vr, vertex_key(*vr.match, patch, s, t));
+}
+
+int vertex_of(VertexRegistry& vr, VertexKey key) {
+    if (vr.alias && !vr.alias->empty()) {
+        auto a = vr.alias->find(key);
+        if (a != vr.alias->end()) key = a->second;
+    }
     auto [it, fresh] = vr.index.try_emplace(key, static_cast<int>(vr.positions.size()));
     const int id = it->second;
     if (!fresh) {
@@ -340,10 +345,12 @@ int vertex_at(VertexRegistry& vr, int patch, int s, int t) {
             p = lerp(vr.positions[ia], vr.positions[ib],
                      static_cast<double>(key.a - seg->a) / (seg->b - seg->a));
         } else {
+            // Also every seam vertex (edge_graph.h): its line has one side only.
             edge_grid_point(ref % 4, key.a, gs, gt);
             p = evaluate(patches[ref / 4], param_of(gs), param_of(gt)).point;
         }
     } else {
+        const int patch = key.id, s = key.a, t = key.b;
         const LineSegment* seg = nullptr;
         bool along_s = true;
         if (vr.crack_free) {

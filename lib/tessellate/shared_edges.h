@@ -45,6 +45,12 @@ struct BoundaryMatch {
 // own seams (a periodic torus' u = 0 and u = 1).
 BoundaryMatch match_boundaries(const std::vector<BezierPatch>& patches, double tol);
 
+// Patch edge e of b as a Bezier curve: its order and k-th control point in
+// increasing parameter; the grid point at coordinate x along it.
+int edge_order(const BezierPatch& b, int e);
+HPoint edge_control(const BezierPatch& b, int e, int k);
+void edge_grid_point(int e, int x, int& s, int& t);
+
 // A side of a planar subpatch lying on a line: [a, b] in the line's coordinate,
 // `side` tells the subpatches on either side (or the patches sharing an edge) apart.
 struct LineSegment {
@@ -96,12 +102,17 @@ struct VertexKeyHash {
 };
 VertexKey vertex_key(const BoundaryMatch& m, int patch, int s, int t);
 
+// Keys of different boundary lines that name one point of a seam (edge_graph.h):
+// key -> its representative.
+using VertexAlias = std::unordered_map<VertexKey, VertexKey, VertexKeyHash>;
+
 // Vertex indices and positions, created on demand. crack_free = false is the
 // naive rule (every vertex the exact curve/surface point) kept for comparison.
 struct VertexRegistry {
     const std::vector<BezierPatch>* patches = nullptr;
     const BoundaryMatch* match = nullptr;
     const EdgeRegistry* edges = nullptr;
+    const VertexAlias* alias = nullptr; // optional: seams matched geometrically
     bool crack_free = true;
 
     std::unordered_map<VertexKey, int, VertexKeyHash> index;
@@ -111,5 +122,7 @@ struct VertexRegistry {
 
 // Index of the vertex at grid point (s, t) of `patch`, placing it on first use.
 int vertex_at(VertexRegistry& vr, int patch, int s, int t);
+// Index of the vertex with this key (of any patch), placing it on first use.
+int vertex_of(VertexRegistry& vr, VertexKey key);
 
 } // namespace seamless

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/tessellate/edge_graph.h>
 #include <seamless/tessellate/error_bound.h>
 #include <seamless/tessellate/shared_edges.h>
 #include <seamless/tessellate/tessellation.h>
@@ -12,45 +13,64 @@
 namespace seamless {
 namespace {
 
-// A ring vertex of a subpatch: grid point on its patch and mesh vertex.
+// A ring vertex of a subpatch: its parameters on the subpatch's patch (on the
+// grid, or -1 for the coordinate along the side of a seam vertex of another
+// patch, whose parameter is a projection) and its mesh vertex.
 struct RingVertex {
     int s = 0, t = 0;
+    double fs = 0, ft = 0;
+    int foreign = -1; // index into EdgeGraph::points
     int vertex = -1;
 };
 
+// A vertex inside a side, by its line coordinate / kParamOne: a grid point or
+// another line's seam vertex.
+struct Inside {
+    double x = 0;
+    int grid = 0, foreign = -1;
+};
+
 // The subpatch's boundary, counterclockwise in (s, t) from corner (s0, t0):
-// the four corners and, crack-free, every vertex a finer neighbour put on a side.
-void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, int patch,
-                  const ParamRect& r, bool crack_free, std::vector<int>& scratch,
-                  std::vector<RingVertex>& ring) {
+// the four corners and, crack-free, every vertex a finer neighbour put on a
+// side and every seam vertex of another patch lying on it (edge_graph.h).
+void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const EdgeGraph& graph,
+                  int patch, const ParamRect& r, bool crack_free, std::vector<int>& scratch,
+                  std::vector<Inside>& inside, std::vector<RingVertex>& ring) {
     ring.clear();
     const int cs[4] = {r.s0, r.s1, r.s1, r.s0}, ct[4] = {r.t0, r.t0, r.t1, r.t1};
     for (int k = 0; k < 4; ++k) {
-        ring.push_back({cs[k], ct[k], -1});
+        ring.push_back({cs[k], ct[k], param_of(cs[k]), param_of(ct[k]), -1, -1});
         if (!crack_free) continue;
         const SideOnLine side = side_on_line(reg, match, patch, r, k);
         scratch.clear();
         points_inside(reg, side, scratch);
-        if (scratch.empty()) continue;
-        for (int& x : scratch)
-            if (side.reversed) x = kParamOne - x;
-        // Sides 0, 1 run with increasing parameter, sides 2, 3 against it.
-        if ((k < 2) == side.reversed) std::reverse(scratch.begin(), scratch.end());
-        for (int x : scratch) {
-            switch (k) {
-            case 0:
-                ring.push_back({x, r.t0, -1});
-                break;
-            case 1:
-                ring.push_back({r.s1, x, -1});
-                break;
-            case 2:
-                ring.push_back({x, r.t1, -1});
-                break;
-            default:
-                ring.push_back({r.s0, x, -1});
-                break;
+        inside.clear();
+        for (int x : scratch) inside.push_back({param_of(x), x, -1});
+        if (side.line >= 0 && side.line < reg.boundary_lines) {
+            const std::span<const SeamPoint> seam = seam_points(graph, side.line);
+            if (!seam.empty()) {
+                const double a = param_of(side.a), b = param_of(side.b);
+                const size_t before = inside.size();
+                for (size_t i = 0; i < seam.size(); ++i)
+                    if (seam[i].x > a && seam[i].x < b)
+                        inside.push_back(
+                            {seam[i].x, -1, static_cast<int>(&seam[i] - graph.points.data())});
+                if (inside.size() > before && before > 0)
+                    std::sort(inside.begin(), inside.end(),
+                              [](const Inside& p, const Inside& q) { return p.x < q.x; });
             }
+        }
+        if (inside.empty()) continue;
+        for (Inside& v : inside)
+            if (side.reversed) v.x = 1 - v.x, v.grid = kParamOne - v.grid;
+        // Sides 0, 1 run with increasing parameter, sides 2, 3 against it.
+        if ((k < 2) == side.reversed) std::reverse(inside.begin(), inside.end());
+        for (const Inside& v : inside) {
+            const int g = v.foreign >= 0 ? -1 : v.grid;
+            if (k % 2 == 0)
+                ring.push_back({g, ct[k], v.x, param_of(ct[k]), v.foreign, -1});
+            else
+                ring.push_back({cs[k], g, param_of(cs[k]), v.x, v.foreign, -1});
         }
     }
 }
@@ -102,16 +122,23 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     // Shared boundaries agree to the rounding of knot insertion, which scales
     // with the coordinates' magnitude, not with d_max: a model far from the
     // origin needs the larger of the two.
-    const double match_tol = std::max(options.match_tolerance * st.d_max,
-                                      64 * std::numeric_limits<double>::epsilon() * scale);
-    const BoundaryMatch match = match_boundaries(patches, match_tol);
+    st.seam_tolerance =
+        std::max(options.seam_tolerance >= 0 ? options.seam_tolerance : 1e-9 * st.d_max,
+                 64 * std::numeric_limits<double>::epsilon() * scale);
+    const BoundaryMatch match = match_boundaries(patches, st.seam_tolerance);
     st.shared_edges = match.shared_edges;
     st.collapsed_edges = match.collapsed_edges;
     const EdgeRegistry reg = build_edge_registry(match, out.subpatches);
+    // (c') The rest of the boundaries by geometry: one edge graph of the model.
+    const EdgeGraph graph =
+        options.crack_free ? build_edge_graph(patches, match, reg, st.seam_tolerance) : EdgeGraph{};
+    st.seams = graph.seams;
+    st.seam_vertices = graph.seam_vertices;
     VertexRegistry vr;
     vr.patches = &patches;
     vr.match = &match;
     vr.edges = &reg;
+    vr.alias = &graph.alias;
     vr.crack_free = options.crack_free;
 
     // (d) Fans: each planar subpatch from its centre over its ring.
@@ -131,14 +158,17 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     vr.placed.reserve(2 * out.subpatches.size() + expected / 4);
     vr.index.reserve(out.subpatches.size() + expected / 8);
     std::vector<int> scratch;
+    std::vector<Inside> inside;
     std::vector<RingVertex> ring;
     std::vector<FanVertex> fan;
     std::vector<Vec3> ring_normals;
     for (Subpatch& sp : out.subpatches) {
         const BezierPatch& b = patches[sp.patch];
         const ParamRect& r = sp.rect;
-        collect_ring(reg, match, sp.patch, r, options.crack_free, scratch, ring);
-        for (RingVertex& v : ring) v.vertex = vertex_at(vr, sp.patch, v.s, v.t);
+        collect_ring(reg, match, graph, sp.patch, r, options.crack_free, scratch, inside, ring);
+        for (RingVertex& v : ring)
+            v.vertex = v.foreign >= 0 ? vertex_of(vr, graph.points[v.foreign].key)
+                                      : vertex_at(vr, sp.patch, v.s, v.t);
 
         const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
         const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
@@ -162,8 +192,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
                 corner_shift = std::max(corner_shift, distance(pos, sp.corners[corner]));
                 ++corner;
             }
-            fan.push_back({(param_of(v.s) - param_of(r.s0)) / ws,
-                           (param_of(v.t) - param_of(r.t0)) / wt, pos});
+            fan.push_back({(v.fs - param_of(r.s0)) / ws, (v.ft - param_of(r.t0)) / wt, pos});
         }
         assert(corner == 4);
         sp.error_bound = sp.bilinear_error + corner_shift +
@@ -172,8 +201,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
 
         ring_normals.clear();
-        for (const RingVertex& v : ring)
-            ring_normals.push_back(unit_normal(b, param_of(v.s), param_of(v.t), sc, tc));
+        for (const RingVertex& v : ring) ring_normals.push_back(unit_normal(b, v.fs, v.ft, sc, tc));
 
         // Fan triangles; none where two ring vertices are one (a pole).
         sp.first_triangle = mesh.triangle_count();
@@ -185,10 +213,9 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
             mesh.triangle_surface.push_back(b.surface);
             mesh.corner_normals.push_back(
                 {centre_normal, ring_normals[k], ring_normals[(k + 1) % n]});
-            mesh.corner_uvs.push_back(
-                {std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
-                 std::array<double, 2>{b.u_at(param_of(a.s)), b.v_at(param_of(a.t))},
-                 std::array<double, 2>{b.u_at(param_of(c.s)), b.v_at(param_of(c.t))}});
+            mesh.corner_uvs.push_back({std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
+                                       std::array<double, 2>{b.u_at(a.fs), b.v_at(a.ft)},
+                                       std::array<double, 2>{b.u_at(c.fs), b.v_at(c.ft)}});
         }
         sp.triangle_count = mesh.triangle_count() - sp.first_triangle;
 
@@ -235,6 +262,7 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     TessellationOptions o = options;
     if (o.eps1 >= 0) o.eps1 *= down;
     if (o.eps2 >= 0) o.eps2 *= down;
+    if (o.seam_tolerance >= 0) o.seam_tolerance *= down;
     Tessellation t = tessellate_at_unit_scale(m, ps, o);
     auto grow = [&](Box3& b) {
         if (!b.empty()) b = {up * b.lo, up * b.hi};
@@ -252,6 +280,7 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     t.stats.d_max *= up;
     t.stats.eps1 *= up;
     t.stats.eps2 *= up;
+    t.stats.seam_tolerance *= up;
     t.stats.max_error_bound *= up;
     return t;
 }

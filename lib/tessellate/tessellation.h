@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Crack-free adaptive tessellation of a model (paper section 6): every Bezier
 // patch is split by the planarity test (subdivision.h), shared boundaries are
-// matched across patches and surfaces (shared_edges.h), vertices follow the
+// matched across patches and surfaces (shared_edges.h, edge_graph.h), vertices follow the
 // straight-midpoint rule of Fig. 3, each planar subpatch becomes a fan from
 // its centre over every vertex on its sides, and the binary patch trees of
 // Proposition 11, remark 2 are built in the same pass.
@@ -28,16 +28,21 @@ struct TessellationOptions {
     // triangles per subpatch whatever the neighbours did), which leaves cracks;
     // kept so tests can show the difference.
     bool crack_free = true;
-    // Shared boundaries: control polygons equal within this factor of d_max.
-    double match_tolerance = 1e-12;
+    // Seam tolerance in model units: boundaries of patches and surfaces closer
+    // than this are one edge (edge_graph.h); < 0 selects 1e-9 * d_max (and at
+    // least the rounding of knot insertion at the coordinates' magnitude). CAD
+    // data whose surfaces meet only within the exporter's tolerance needs that
+    // tolerance here, typically 1e-7 to 1e-3 model units.
+    double seam_tolerance = -1;
 };
 
 struct TessellationStats {
     int surfaces = 0, patches = 0, subpatches = 0, triangles = 0, vertices = 0;
     int shared_edges = 0, collapsed_edges = 0;
-    int nonplanar_subpatches = 0; // stopped by max_depth
-    int max_depth = 0;            // deepest subpatch
-    double d_max = 0, eps1 = 0, eps2 = 0;
+    int seams = 0, seam_vertices = 0; // boundaries matched geometrically (edge_graph.h)
+    int nonplanar_subpatches = 0;     // stopped by max_depth
+    int max_depth = 0;                // deepest subpatch
+    double d_max = 0, eps1 = 0, eps2 = 0, seam_tolerance = 0;
     double max_error_bound = 0; // largest Subpatch::error_bound, model units
     double seconds = 0;
 };

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Measured deviation (lib/mesh/deviation.h) against the a-priori error bound.
+#include "tessellate/seam_cases.h"
 #include "test_util.h"
 
 #include <seamless/mesh/deviation.h>
@@ -124,5 +125,16 @@ TEST_CASE("a sweep scales both tolerances and stops at the triangle limit", "[de
         CHECK(rows[i].within_bound());
         CHECK(rows[i].tess.triangles <= opt.max_triangles);
         if (i > 0) CHECK(rows[i].tess.triangles >= rows[i - 1].tess.triangles);
+    }
+}
+
+TEST_CASE("measured deviation stays below the error bound across seams", "[deviation]") {
+    // Seam vertices of the other side sit at their projected parameter (and,
+    // within a gap, off this side's surface): the bound must still hold.
+    for (const test::SeamCase& c : test::closed_seam_cases()) {
+        TessellationOptions opt;
+        opt.seam_tolerance = c.seam_tolerance;
+        const Tessellation t = tessellate(c.model, opt);
+        check_within_bound(c.model, t, measure_deviation(c.model, t));
     }
 }

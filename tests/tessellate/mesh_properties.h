@@ -150,4 +150,45 @@ inline MeshReport analyse_mesh(const TriangleMesh& m, double d_max, bool t_junct
     return r;
 }
 
+// Connected components of the triangles (sharing a vertex index).
+inline int count_shells(const TriangleMesh& m) {
+    std::vector<int> parent(m.positions.size());
+    for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+    auto find = [&](int x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (const auto& t : m.triangles)
+        for (int k = 1; k < 3; ++k) parent[find(t[k])] = find(t[0]);
+    std::vector<char> root(m.positions.size(), 0);
+    int shells = 0;
+    for (const auto& t : m.triangles) {
+        const int r = find(t[0]);
+        if (!root[r]) root[r] = 1, ++shells;
+    }
+    return shells;
+}
+
+// Border edges (of one triangle) whose both end points satisfy `where`.
+template <class Where> int border_edges_where(const TriangleMesh& m, Where where) {
+    std::vector<std::uint64_t> keys;
+    for (const auto& t : m.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t a = std::min(t[k], t[(k + 1) % 3]),
+                                b = std::max(t[k], t[(k + 1) % 3]);
+            keys.push_back(a << 32 | b);
+        }
+    std::sort(keys.begin(), keys.end());
+    int count = 0;
+    for (size_t i = 0; i < keys.size();) {
+        size_t j = i;
+        while (j < keys.size() && keys[j] == keys[i]) ++j;
+        if (j - i == 1 && where(m.positions[keys[i] >> 32]) &&
+            where(m.positions[keys[i] & 0xffffffffu]))
+            ++count;
+        i = j;
+    }
+    return count;
+}
+
 } // namespace seamless::test

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // seamless tessellate: writes the mesh and statistics that match the library.
+#include "seam_cases.h"
 #include "test_util.h"
 
 #include <seamless/model/model.h>
@@ -48,4 +49,30 @@ TEST_CASE("seamless tessellate rejects a missing model with status 2", "[cli]") 
                       "tessellate-cli-bad");
     CHECK(r.status == 2);
     CHECK_FALSE(std::filesystem::exists(dir / "x.obj"));
+}
+
+TEST_CASE("seamless tessellate --seam-tolerance stitches surfaces that meet within it", "[cli]") {
+    const auto dir = test::scratch_dir("tessellate-cli-seam");
+    const auto model = dir / "two_sheets.json";
+    test::write_file(model, to_json(test::two_sheets(0.3, 1e-6)));
+    auto seams = [&](const std::string& option) {
+        const auto stats = dir / "stats.json";
+        const auto r = test::run_cli("tessellate \"" + model.string() + "\" -o \"" +
+                                         (dir / "out.obj").string() + "\" --stats \"" +
+                                         stats.string() + "\" " + option,
+                                     "tessellate-cli-seam");
+        INFO(r.err);
+        REQUIRE(r.status == 0);
+        std::ifstream in(stats);
+        return nlohmann::json::parse(in);
+    };
+    const auto apart = seams(""), stitched = seams("--seam-tolerance 1e-5");
+    CHECK(apart.at("seams").get<int>() == 0);
+    CHECK(stitched.at("seams").get<int>() > 0);
+    CHECK(stitched.at("seam_tolerance").get<double>() == 1e-5);
+    CHECK(stitched.at("seam_vertices").get<int>() > 0);
+    const auto bad = test::run_cli("tessellate \"" + model.string() + "\" -o \"" +
+                                       (dir / "x.obj").string() + "\" --seam-tolerance -1",
+                                   "tessellate-cli-seam");
+    CHECK(bad.status != 0);
 }
