@@ -5,6 +5,7 @@
 // interval enclosures must still contain sampled points (no overflow or
 // underflow lets a value escape); a translated model stays crack-free.
 #include "mesh_properties.h"
+#include "seam_cases.h"
 #include "test_util.h"
 
 #include <seamless/model/model.h>
@@ -13,6 +14,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -92,4 +94,33 @@ TEST_CASE("A model far from the origin stays crack-free", "[stiff]") {
     CHECK(r.nonmanifold_edges == 0);
     CHECK(r.misoriented_edges == 0);
     CHECK(r.euler() == 0);
+}
+
+TEST_CASE("Seams matched by geometry scale exactly and survive far from the origin", "[stiff]") {
+    // The closed seam case with every mismatch at once (seam_cases.h).
+    const std::vector<test::SeamCase> cases = test::closed_seam_cases();
+    const auto it = std::find_if(cases.begin(), cases.end(), [](const test::SeamCase& c) {
+        return c.name == "everything at once";
+    });
+    REQUIRE(it != cases.end());
+    const Tessellation base = tessellate(it->model);
+    REQUIRE(base.stats.seam_vertices > 0);
+    for (int e : {-500, 500}) {
+        const double scale = std::ldexp(1.0, e);
+        INFO("scale 2^" << e);
+        const Tessellation t = tessellate(transformed(it->model, scale, {}));
+        CHECK(t.mesh.triangles == base.mesh.triangles);
+        bool exact = t.mesh.vertex_count() == base.mesh.vertex_count();
+        for (int v = 0; exact && v < t.mesh.vertex_count(); ++v)
+            exact = t.mesh.positions[v] == scale * base.mesh.positions[v];
+        CHECK(exact);
+    }
+    const Model far = transformed(it->model, 1.0, {1e6, -2e6, 3e6});
+    const Tessellation t = tessellate(far);
+    const test::MeshReport r = test::analyse_mesh(t.mesh, t.stats.d_max, false);
+    CHECK(r.border_edges == 0);
+    CHECK(r.nonmanifold_edges == 0);
+    CHECK(r.misoriented_edges == 0);
+    CHECK(r.euler() == 2);
+    CHECK(test::count_shells(t.mesh) == 1);
 }
