@@ -17,6 +17,7 @@ struct Line {
     int n = 1;   // degree
     std::array<HPoint, BezierPatch::kMaxOrder> cp{};
     Box3 box;              // control polygon grown by tol: holds the curve's tol-neighbourhood
+    double speed = 0;      // bound on |C'(u)|
     std::vector<int> xs;   // vertex coordinates on the line, ascending
     std::vector<Vec3> pos; // their curve points
     std::vector<VertexKey> keys; // their vertex keys
@@ -41,7 +42,9 @@ Vec3 curve_point(const Line& c, double u) {
 // Distance from P to the curve, and in u the parameter of the nearest point:
 // the best of a few samples, then Gauss-Newton (the residual is within the
 // seam tolerance where it matters, so it converges fast), clamped to [0, 1].
-double project(const Line& c, Vec3 P, double& u) {
+// Points that cannot come within tol (farther from every sample than the
+// curve runs in half a sample step) keep the sample distance.
+double project(const Line& c, Vec3 P, double tol, double& u) {
     const int samples = std::max(8, 2 * c.n);
     double best = std::numeric_limits<double>::infinity();
     for (int k = 0; k <= samples; ++k) {
@@ -49,6 +52,7 @@ double project(const Line& c, Vec3 P, double& u) {
         const double d = distance(curve_point(c, x), P);
         if (d < best) best = d, u = x;
     }
+    if (best > tol + c.speed * 0.5 / samples) return best;
     for (int it = 0; it < 50; ++it) {
         Vec3 p, d;
         evaluate_curve(c, u, p, d);
@@ -64,7 +68,7 @@ double project(const Line& c, Vec3 P, double& u) {
 
 bool near_curve(const Line& c, Vec3 P, double tol) {
     double u = 0;
-    return c.box.contains(P) && project(c, P, u) <= tol;
+    return c.box.contains(P) && project(c, P, tol, u) <= tol;
 }
 
 Line make_line(const std::vector<BezierPatch>& patches, const BoundaryMatch& m,
@@ -78,6 +82,14 @@ Line make_line(const std::vector<BezierPatch>& patches, const BoundaryMatch& m,
         L.cp[k] = edge_control(b, e, k);
         L.box.extend(L.cp[k].point());
     }
+    // |C'| <= n (w_max / w_min)^2 max |P_k+1 - P_k| (Floater's bound for
+    // rational Bezier curves; the plain one when the weights are equal).
+    double wmin = L.cp[0].w, wmax = L.cp[0].w, step = 0;
+    for (int k = 1; k <= L.n; ++k) {
+        wmin = std::min(wmin, L.cp[k].w), wmax = std::max(wmax, L.cp[k].w);
+        step = std::max(step, distance(L.cp[k].point(), L.cp[k - 1].point()));
+    }
+    L.speed = L.n * (wmax / wmin) * (wmax / wmin) * step;
     L.box.lo = L.box.lo - Vec3{tol, tol, tol};
     L.box.hi = L.box.hi + Vec3{tol, tol, tol};
     for (int i = reg.offsets[id]; i < reg.offsets[id + 1]; ++i) {
@@ -141,7 +153,7 @@ bool match_into(const Line& G, const Line& H, double tol, KeyClasses& classes,
         const Vec3 P = H.pos[k];
         if (!G.box.contains(P)) continue;
         double y = 0;
-        if (project(G, P, y) > tol) continue;
+        if (project(G, P, tol, y) > tol) continue;
         // G's vertices around y: one within tol of P (at most), and the
         // neighbours on either side apart from it.
         const int i0 =
