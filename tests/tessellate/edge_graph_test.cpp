@@ -216,3 +216,34 @@ TEST_CASE("a chain of edges on one edge: both sides get the same vertices", "[ed
         CHECK(r.euler() == 1);
     }
 }
+
+TEST_CASE("a patch corner of one side is inserted into the other at its own parameter",
+          "[edge_graph]") {
+    // two_sheets: both sides of x = 1 run in v with the same parametrisation,
+    // so the right sheet's patch corner at the knot lands on the left sheet's
+    // edge at that parameter, and the left sheet's grid vertices are either
+    // the right's (the same point) or inserted into the right's edges.
+    const double knot = 0.3;
+    const Model m = test::two_sheets(knot);
+    const auto patches = bezier_patches(m);
+    const Tessellation t = tessellate(m, patches, {});
+    const BoundaryMatch bm = match_boundaries(patches, t.stats.seam_tolerance);
+    const EdgeRegistry reg = build_edge_registry(bm, t.subpatches);
+    const EdgeGraph g = build_edge_graph(patches, bm, reg, t.stats.seam_tolerance);
+    CHECK(g.seams == t.stats.seams);
+    CHECK(g.seam_vertices == t.stats.seam_vertices);
+    // The left sheet (patch 0) edge u1 (x = 1) is one line.
+    const int left = bm.edge_group[4 * 0 + 1];
+    REQUIRE(left >= 0);
+    const auto seam = seam_points(g, left);
+    bool knot_found = false;
+    for (const SeamPoint& p : seam) {
+        CHECK(p.x > 0);
+        CHECK(p.x < 1);
+        knot_found = knot_found || std::abs(p.x - knot) < 1e-12;
+    }
+    CHECK(knot_found);
+    // Sorted by parameter, and every one a vertex of some other line.
+    for (size_t i = 1; i < seam.size(); ++i) CHECK(seam[i - 1].x < seam[i].x);
+    for (const SeamPoint& p : seam) CHECK(p.key.kind != 2);
+}
