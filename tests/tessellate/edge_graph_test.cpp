@@ -247,3 +247,41 @@ TEST_CASE("a patch corner of one side is inserted into the other at its own para
     for (size_t i = 1; i < seam.size(); ++i) CHECK(seam[i - 1].x < seam[i].x);
     for (const SeamPoint& p : seam) CHECK(p.key.kind != 2);
 }
+
+TEST_CASE("edges that overlap in part share the overlap only", "[edge_graph]") {
+    // Lower sheet over x in [0, 1.5], upper over [0.5, 2], both cut from
+    // sheets over [0, 2] that share the curve y = 1: the edges overlap on
+    // [0.5, 1.5], where neither edge's end lies inside the other's range.
+    auto sheet = [](const char* name, double y0) {
+        std::vector<Vec3> pts;
+        for (int i = 0; i <= 3; ++i)
+            for (int j = 0; j <= 3; ++j) {
+                const double x = 2 * i / 3.0, y = y0 + j / 3.0;
+                pts.push_back({x, y, 0.4 * std::cos(2 * x) * std::sin(2 * y)});
+            }
+        return test::bezier_surface(name, 3, 3, pts);
+    };
+    const BSplineSurface lower = test::split(sheet("lower", 0), 0, 0.75)[0];
+    const BSplineSurface upper =
+        test::insert_knot(test::split(sheet("upper", 1), 0, 0.25)[1], 0, 1 / std::sqrt(5.0));
+    const Model m = test::model_of({lower, upper}, "staggered");
+    for (double factor : {1.0, 100.0}) {
+        const Tessellation t = tessellate_at(m, factor, -1);
+        const test::MeshReport r = test::analyse_mesh(t.mesh, t.stats.d_max);
+        INFO("1/" << factor << ": " << r.example);
+        CHECK(t.stats.seams > 0);
+        CHECK(test::count_shells(t.mesh) == 1);
+        CHECK(test::border_edges_where(t.mesh, [](Vec3 p) {
+                  return std::abs(p.y - 1) < 1e-9 && p.x > 0.5 + 1e-9 && p.x < 1.5 - 1e-9;
+              }) == 0);
+        // Beyond the overlap the edges stay borders.
+        CHECK(test::border_edges_where(t.mesh, [](Vec3 p) {
+                  return std::abs(p.y - 1) < 1e-9 && (p.x < 0.5 - 1e-9 || p.x > 1.5 + 1e-9);
+              }) > 0);
+        CHECK(r.t_junctions == 0);
+        CHECK(r.duplicate_positions == 0);
+        CHECK(r.nonmanifold_edges == 0);
+        CHECK(r.misoriented_edges == 0);
+        CHECK(r.euler() == 1);
+    }
+}
