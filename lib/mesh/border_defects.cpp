@@ -6,10 +6,21 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <unordered_map>
 
 namespace seamless {
 namespace {
+
+struct BitsHash {
+    size_t operator()(const std::array<uint64_t, 6>& k) const {
+        uint64_t h = 1469598103934665603ull;
+        for (uint64_t x : k) h = (h ^ x) * 1099511628211ull ^ (x >> 29);
+        return static_cast<size_t>(h);
+    }
+};
 
 // Distance from p to the segment ab.
 double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
@@ -56,12 +67,31 @@ BorderDefects border_defects(const WeldedMesh& mesh, const std::vector<EdgeUse>&
         for (int v : {b.lo, b.hi}) at[v].push_back(e);
     }
 
+    // Border edges with bit-identical end positions (only without welding: after
+    // it, positions are vertices) are judged once, by the first of them; the
+    // others are cracks along it. k copies of a triangle cost O(k), not O(k^2).
+    std::vector<int> first_copy(nb);
+    {
+        std::unordered_map<std::array<uint64_t, 6>, int, BitsHash> first;
+        for (int e = 0; e < nb; ++e) {
+            std::array<uint64_t, 6> key;
+            Vec3 a = P[border[e].lo], b = P[border[e].hi];
+            std::memcpy(key.data(), &a, 24);
+            std::memcpy(key.data() + 3, &b, 24);
+            if (std::lexicographical_compare(key.begin() + 3, key.end(), key.begin(),
+                                             key.begin() + 3))
+                std::swap_ranges(key.begin(), key.begin() + 3, key.begin() + 3);
+            first_copy[e] = first.try_emplace(key, e).first->second;
+        }
+    }
+
     // Candidate pairs: border edges whose boxes, each grown by its own
     // tolerance, overlap: a pair's tolerance is that of its longer edge.
     using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
     std::vector<Box> boxes;
     boxes.reserve(nb);
     for (int e = 0; e < nb; ++e) {
+        if (first_copy[e] != e) continue;
         const Vec3 a = P[border[e].lo], b = P[border[e].hi];
         const double pad = tolerance.at(len[e]);
         boxes.emplace_back(CGAL::Bbox_3(std::min(a.x, b.x) - pad, std::min(a.y, b.y) - pad,
@@ -110,6 +140,16 @@ BorderDefects border_defects(const WeldedMesh& mesh, const std::vector<EdgeUse>&
 
     // Border edges running along each other; those sharing a vertex join shells.
     std::vector<std::pair<int, int>> along;
+    for (int e = 0; e < nb; ++e) {
+        const int f = first_copy[e];
+        if (f == e || border[f].triangle == border[e].triangle || !(len[e] > 0)) continue;
+        along.push_back({f, e});
+        mark(e, f, 0);
+        mark(f, e, 0);
+        for (int s : {border[e].lo, border[e].hi})
+            if (shares(border[f], s))
+                D.joins.push_back({border[f].triangle, border[e].triangle, s});
+    }
     for (auto [i, j] : pairs) {
         const int f = len[i] <= len[j] ? i : j, e = f == i ? j : i;
         const EdgeUse &bf = border[f], &be = border[e];

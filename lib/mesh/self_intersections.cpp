@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace seamless {
 namespace {
@@ -43,6 +45,14 @@ struct TripleHash {
         uint64_t h = 1469598103934665603ull;
         for (int x : k) h = (h ^ static_cast<uint32_t>(x)) * 1099511628211ull;
         return static_cast<size_t>(h ^ (h >> 31));
+    }
+};
+
+struct PositionsHash {
+    size_t operator()(const std::array<uint64_t, 9>& k) const {
+        uint64_t h = 1469598103934665603ull;
+        for (uint64_t x : k) h = (h ^ x) * 1099511628211ull ^ (x >> 29);
+        return static_cast<size_t>(h);
     }
 };
 
@@ -152,6 +162,20 @@ Intersections find_intersections(const WeldedMesh& mesh, const std::vector<int>&
     std::vector<char> skip(nf, 0);
     for (const auto& d : degenerate) skip[d.triangle] = 1;
     for (const auto& d : duplicated) skip[d.t1] = 1;
+    // Without welding, copies with their own vertices: bit-identical corner
+    // positions. Only the first takes part (with welding these are the duplicates).
+    {
+        std::unordered_set<std::array<uint64_t, 9>, PositionsHash> seen;
+        for (int t = 0; t < nf; ++t) {
+            if (skip[t]) continue;
+            std::array<std::array<uint64_t, 3>, 3> c;
+            for (int k = 0; k < 3; ++k) std::memcpy(c[k].data(), &P[T[t][k]], 24);
+            std::sort(c.begin(), c.end());
+            std::array<uint64_t, 9> key;
+            for (int k = 0; k < 9; ++k) key[k] = c[k / 3][k % 3];
+            if (!seen.insert(key).second) skip[t] = 1;
+        }
+    }
     std::unordered_map<int, std::vector<const TJunction*>> tverts; // triangle -> its T-junctions
     for (const auto& tj : t_junctions) tverts[tj.triangle].push_back(&tj);
 

@@ -34,7 +34,8 @@ struct Intersections {
 // exact predicates, beyond what they share (adjacency rules of CGAL PMP
 // self_intersections). A triangle is first cut at the T-junction vertices on its
 // edges. Of duplicated triangles only the first takes part (its copies are
-// reported as duplicates), so k copies cost O(k), not O(k^2) pairs.
+// reported as duplicates), so k copies cost O(k), not O(k^2) pairs; likewise
+// without welding of triangles with bit-identical corner positions.
 Intersections find_intersections(const WeldedMesh& mesh, const std::vector<int>& triangle_shell,
                                  const std::vector<TriangleDefect>& degenerate,
                                  const std::vector<TrianglePair>& duplicated,

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 using namespace seamless;
 
 TEST_CASE("check regression: 3001 tiny triangles and one long edge exploded the edge grid",
@@ -50,4 +52,31 @@ TEST_CASE("check regression: 50000 copies of one triangle were quadratic", "[che
     CHECK(r.non_manifold_edges[0].triangles == k);
     CHECK(r.self_intersections.empty());
     CHECK(r.border_edges == 0);
+}
+
+TEST_CASE("check regression: 50000 unwelded copies of one triangle were quadratic",
+          "[check][regression]") {
+    // The same copies judged without welding (--no-weld): their indices differ,
+    // so they are no duplicates but 50000 shells whose border edges lie on each
+    // other. Edges with bit-identical end positions are compared once, triangles
+    // with bit-identical corners intersect-tested once.
+    TriangleMesh m;
+    const int k = 50000;
+    for (int i = 0; i < k; ++i) {
+        const int b = m.vertex_count();
+        m.positions.insert(m.positions.end(), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        m.triangles.push_back({b, b + 1, b + 2});
+    }
+    CheckOptions raw;
+    raw.weld = false;
+    const CheckReport r = check_mesh(m, raw);
+    CHECK_FALSE(check_passed(r, raw));
+    CHECK(r.components.size() == k);
+    CHECK(r.border_edges == 3 * k);
+    CHECK(r.cracks.size() == 3 * k); // every border edge lies on its copies
+    CHECK(r.widest_crack == 0);
+    REQUIRE(r.seams.size() == 1);
+    CHECK(r.seams[0].length == Approx(k * (2 + std::sqrt(2.0)) / 2));
+    CHECK(r.duplicated_triangles.empty());
+    CHECK(r.t_junctions.empty());
 }
