@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The CLI on the issue 9 example: two bicubic sheets sharing the curve x = 1
-// exactly, the second with an extra knot at v = 0.3 along that edge (one Bezier
-// span on one side, two on the other). `seamless tessellate` leaves that seam
-// unstitched on this branch (vertices of one side inside edges of the other),
-// so `seamless check` must fail it and name the seam. The seams branch (issue 9,
-// section 1: geometric seam matching in lib/tessellate) makes this tessellation
-// pass; then this test's expectation turns around.
+// The CLI on the issue 9 example: two bicubic sheets sharing the curve x = 1,
+// the second with an extra knot at v = 0.3 along that edge (one Bezier span on
+// one side, two on the other). The tessellator stitches that seam geometrically
+// (lib/tessellate/edge_graph.h), so `seamless check` passes it. Moved 1e-4
+// apart, beyond the default seam tolerance, the sheets stay apart and `check`
+// must fail the seam and name it with its location, length and width; with
+// `--seam-tolerance 1e-3` they are stitched again and pass.
 #include "test_util.h"
 
 #include <catch2/catch.hpp>
@@ -26,14 +26,17 @@ std::array<double, 3> grid(int i, int j) {
     return {x, y, 0.25 * std::sin(1.3 * x + 0.4) * std::cos(2.1 * y - 0.3)};
 }
 
-json sheet(const char* name, int i0, bool extra_knot) {
+json sheet(const char* name, int i0, bool extra_knot, double dz = 0) {
     // Rows along v (j) per column i; cubic Bezier in v, optionally with the knot
     // t = 0.3 inserted (Boehm: Q_k = (1 - t) P_{k-1} + t P_k for k = 1..3).
     const double t = 0.3;
     json points = json::array();
     for (int i = i0; i < i0 + 4; ++i) {
         std::array<std::array<double, 3>, 4> p;
-        for (int j = 0; j < 4; ++j) p[j] = grid(i, j);
+        for (int j = 0; j < 4; ++j) {
+            p[j] = grid(i, j);
+            p[j][2] += dz;
+        }
         std::vector<std::array<double, 3>> row{p[0]};
         if (extra_knot)
             for (int k = 1; k <= 3; ++k) {
@@ -53,20 +56,38 @@ json sheet(const char* name, int i0, bool extra_knot) {
             {"knots_v", knots_v}, {"control_points", points}};
 }
 
-} // namespace
-
-TEST_CASE("check CLI: the unstitched seam of two sheets, one with an extra knot, fails by name",
-          "[check][seam][cli]") {
-    const auto dir = test::scratch_dir("check_seam_cli");
+std::string tessellate(const std::filesystem::path& dir, double dz, const std::string& options) {
     const json model{{"version", 1},
-                     {"surfaces", {sheet("left", 0, false), sheet("right", 3, true)}}};
+                     {"surfaces", {sheet("left", 0, false), sheet("right", 3, true, dz)}}};
     test::write_file(dir / "sheets.json", model.dump(1));
     const auto mesh = (dir / "sheets.off").string();
-    auto r =
-        test::run_cli("tessellate \"" + (dir / "sheets.json").string() + "\" -o \"" + mesh + "\"");
+    const auto r = test::run_cli("tessellate \"" + (dir / "sheets.json").string() + "\" -o \"" +
+                                 mesh + "\" " + options);
     REQUIRE(r.status == 0);
+    return mesh;
+}
 
-    r = test::run_cli("check \"" + mesh + "\" --json");
+} // namespace
+
+TEST_CASE("check CLI: two sheets, one with an extra knot, stitched by the tessellator, pass",
+          "[check][seam][cli]") {
+    const auto dir = test::scratch_dir("check_seam_cli_stitched");
+    for (const char* options : {"", "--eps1 0.00002 --eps2 0.0004"}) {
+        const auto mesh = tessellate(dir, 0, options);
+        const auto r = test::run_cli("check \"" + mesh + "\" --json");
+        CHECK(r.status == 0);
+        const json j = json::parse(r.out);
+        CHECK(j["passed"] == true);
+        CHECK(j["seams"]["count"] == 0);
+        CHECK(j["t_junctions"]["count"] == 0);
+    }
+}
+
+TEST_CASE("check CLI: the unstitched seam of two sheets 1e-4 apart fails by name",
+          "[check][seam][cli]") {
+    const auto dir = test::scratch_dir("check_seam_cli");
+    const auto mesh = tessellate(dir, 1e-4, "");
+    auto r = test::run_cli("check \"" + mesh + "\" --json");
     CHECK(r.status == 1);
     const json j = json::parse(r.out);
     CHECK(j["passed"] == false);
@@ -82,11 +103,23 @@ TEST_CASE("check CLI: the unstitched seam of two sheets, one with an extra knot,
     // Its length is that of the curve x = 1 (at least its chord 1 in y).
     CHECK(seam["length"].get<double>() >= 1);
     CHECK(seam["length"].get<double>() < 1.5);
-    CHECK(j["t_junctions"]["count"].get<int>() > 0);
+    CHECK(seam["gap"].get<double>() >= 0.9e-4);
+    CHECK(seam["gap"].get<double>() < 1e-2);
     CHECK(j["cracks"]["count"] == seam["edges"]);
 
     r = test::run_cli("check \"" + mesh + "\"");
     CHECK(r.status == 1);
     CHECK(r.out.find("seams (cracks: border edges along border edges): 1") != std::string::npos);
     CHECK(r.out.find("FAIL") != std::string::npos);
+}
+
+TEST_CASE("check CLI: the sheets 1e-4 apart, stitched with --seam-tolerance 1e-3, pass",
+          "[check][seam][cli]") {
+    const auto dir = test::scratch_dir("check_seam_cli_tolerance");
+    const auto mesh = tessellate(dir, 1e-4, "--seam-tolerance 1e-3");
+    const auto r = test::run_cli("check \"" + mesh + "\" --json");
+    CHECK(r.status == 0);
+    const json j = json::parse(r.out);
+    CHECK(j["passed"] == true);
+    CHECK(j["seams"]["count"] == 0);
 }
