@@ -7,7 +7,8 @@
 // surface sharing the boundary) is placed on that side's straight segment, at
 // its dyadic parameter; all other vertices are exact surface points. Each
 // geometric point is one vertex, keyed canonically, so both sides of an edge
-// use the same index.
+// use the same index. This covers patch edges paired by their control
+// polygons; edge_graph.h matches the others by geometry.
 //
 // Patch edges: 0 = v0 (t = 0), 1 = u1 (s = 1), 2 = v1 (t = 1), 3 = u0 (s = 0),
 // each parametrised by increasing s or t; corners as BezierPatch::corner.

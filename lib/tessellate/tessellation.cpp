@@ -51,10 +51,11 @@ void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const Edg
             if (!seam.empty()) {
                 const double a = param_of(side.a), b = param_of(side.b);
                 const size_t before = inside.size();
-                for (size_t i = 0; i < seam.size(); ++i)
-                    if (seam[i].x > a && seam[i].x < b)
-                        inside.push_back(
-                            {seam[i].x, -1, static_cast<int>(&seam[i] - graph.points.data())});
+                for (auto it =
+                         std::upper_bound(seam.begin(), seam.end(), a,
+                                          [](double x, const SeamPoint&p) { return x < p.x; });
+                     it != seam.end() && it->x < b; ++it)
+                    inside.push_back({it->x, -1, static_cast<int>(&*it - graph.points.data())});
                 if (inside.size() > before && before > 0)
                     std::sort(inside.begin(), inside.end(),
                               [](const Inside& p, const Inside& q) { return p.x < q.x; });
@@ -119,9 +120,9 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
             subdivide(patches[i], static_cast<int>(i), sub, out.trees, out.subpatches));
 
     // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
-    // Shared boundaries agree to the rounding of knot insertion, which scales
-    // with the coordinates' magnitude, not with d_max: a model far from the
-    // origin needs the larger of the two.
+    // Shared boundaries agree to the seam tolerance, and at least to the
+    // rounding of knot insertion, which scales with the coordinates'
+    // magnitude, not with d_max: a model far from the origin needs the larger.
     st.seam_tolerance =
         std::max(options.seam_tolerance >= 0 ? options.seam_tolerance : 1e-9 * st.d_max,
                  64 * std::numeric_limits<double>::epsilon() * scale);
