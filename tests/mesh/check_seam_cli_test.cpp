@@ -26,10 +26,9 @@ std::array<double, 3> grid(int i, int j) {
     return {x, y, 0.25 * std::sin(1.3 * x + 0.4) * std::cos(2.1 * y - 0.3)};
 }
 
-json sheet(const char* name, int i0, bool extra_knot) {
+json sheet(const char* name, int i0, bool extra_knot, double t = 0.3) {
     // Rows along v (j) per column i; cubic Bezier in v, optionally with the knot
-    // t = 0.3 inserted (Boehm: Q_k = (1 - t) P_{k-1} + t P_k for k = 1..3).
-    const double t = 0.3;
+    // t inserted (Boehm: Q_k = (1 - t) P_{k-1} + t P_k for k = 1..3).
     json points = json::array();
     for (int i = i0; i < i0 + 4; ++i) {
         std::array<std::array<double, 3>, 4> p;
@@ -89,4 +88,30 @@ TEST_CASE("check CLI: the unstitched seam of two sheets, one with an extra knot,
     CHECK(r.status == 1);
     CHECK(r.out.find("seams (cracks: border edges along border edges): 1") != std::string::npos);
     CHECK(r.out.find("FAIL") != std::string::npos);
+}
+
+TEST_CASE("check CLI: with the extra knot at 0.5 the seam is partly welded and still fails",
+          "[check][seam][cli]") {
+    // Issue 9: at 0.5 the sides' vertices coincide where both sides have them
+    // (welded, or within 3e-18), and the finer side's others lie inside the
+    // coarser side's edges: the seam is cut into runs, each on x = 1.
+    const auto dir = test::scratch_dir("check_seam_cli_05");
+    const json model{{"version", 1},
+                     {"surfaces", {sheet("left", 0, false), sheet("right", 3, true, 0.5)}}};
+    test::write_file(dir / "sheets.json", model.dump(1));
+    const auto mesh = (dir / "sheets.off").string();
+    auto r =
+        test::run_cli("tessellate \"" + (dir / "sheets.json").string() + "\" -o \"" + mesh + "\"");
+    REQUIRE(r.status == 0);
+    r = test::run_cli("check \"" + mesh + "\" --json");
+    CHECK(r.status == 1);
+    const json j = json::parse(r.out);
+    REQUIRE(j["seams"]["count"].get<int>() >= 1);
+    double length = 0;
+    for (const json& seam : j["seams"]["listed"]) {
+        CHECK(std::abs(seam["location"][0].get<double>() - 1) < 1e-9);
+        length += seam["length"].get<double>();
+    }
+    CHECK(length > 0);
+    CHECK(length < 1.5);
 }
