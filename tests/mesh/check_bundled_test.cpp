@@ -271,8 +271,7 @@ TEST_CASE("teaspoon: its nearly pinched ends are border loops; the folded handle
     CHECK(distance(r.seams[0].location, corner) < 1e-3);
     CHECK(r.seams[0].length < 1e-3);
     for (const Crack& c : r.cracks) CHECK(distance(c.location, corner) < 1e-3);
-    CHECK(defect_count(r) ==
-          1 + static_cast<int>(r.cracks.size() + r.self_intersections.size()));
+    CHECK(defect_count(r) == 1 + static_cast<int>(r.cracks.size() + r.self_intersections.size()));
     CHECK(r.non_manifold_edges.empty());
     CHECK(r.non_manifold_vertices.empty());
     CHECK(r.degenerate_triangles.empty());
