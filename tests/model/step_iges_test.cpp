@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <vector>
 
 using namespace seamless;
 
@@ -206,4 +207,112 @@ TEST_CASE("bad STEP/IGES files: one InputError naming the file", "[model][cad][e
         CHECK(err.find('\n') == std::string::npos);
     }
     CHECK_THAT(load_error(dir / "missing.step"), Catch::Contains("cannot open file"));
+}
+
+namespace {
+
+std::filesystem::path generated(const std::string& name) {
+    return cad("generated/" + name);
+}
+
+// Largest |f(point)| over a grid of parameters of `s`.
+template <class F> double worst_on_grid(const BSplineSurface& s, F f, int n = 24) {
+    double worst = 0;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+            const double u = s.u_min() + (s.u_max() - s.u_min()) * i / n;
+            const double v = s.v_min() + (s.v_max() - s.v_min()) * j / n;
+            worst = std::max(worst, std::abs(f(evaluate(s, u, v).point)));
+        }
+    return worst;
+}
+
+} // namespace
+
+TEST_CASE("planes, a sphere, a torus and a revolved B-spline curve convert exactly",
+          "[model][cad]") {
+    // generated/make_analytic.cpp: box (1,2,3) + (2,3,4); sphere r=2 about
+    // (1,0,0); torus R=3, r=1 about z; a cubic profile revolved half a turn about z.
+    const Model box = load_model(generated("box.step"));
+    REQUIRE(box.surfaces.size() == 6);
+    for (size_t k = 0; k < 6; ++k) {
+        CHECK(box.origins[k].kind == "plane");
+        CHECK(box.origins[k].exact);
+        const BSplineSurface& s = box.surfaces[k];
+        CHECK(s.degree_u == 1);
+        CHECK(s.degree_v == 1);
+        for (const Vec3& p : s.points) {
+            CHECK((p.x == 1 || p.x == 3));
+            CHECK((p.y == 2 || p.y == 5));
+            CHECK((p.z == 3 || p.z == 7));
+        }
+    }
+    const Model sphere = load_model(generated("sphere.step"));
+    REQUIRE(sphere.surfaces.size() == 1);
+    CHECK(sphere.origins[0].kind == "sphere");
+    CHECK(sphere.origins[0].exact);
+    CHECK(sphere.surfaces[0].rational());
+    CHECK(worst_on_grid(sphere.surfaces[0], [](Vec3 p) {
+              return distance(p, Vec3{1, 0, 0}) - 2;
+          }) <= 1e-13);
+    const Model torus = load_model(generated("torus.step"));
+    REQUIRE(torus.surfaces.size() == 1);
+    CHECK(torus.origins[0].kind == "torus");
+    CHECK(torus.origins[0].exact);
+    CHECK(worst_on_grid(torus.surfaces[0], [](Vec3 p) {
+              const double rho = std::hypot(p.x, p.y) - 3;
+              return rho * rho + p.z * p.z - 1;
+          }) <= 1e-13);
+    const Model revolved = load_model(generated("revolved.step"));
+    REQUIRE(revolved.surfaces.size() == 1);
+    CHECK(revolved.origins[0].kind == "surface of revolution");
+    CHECK(revolved.origins[0].exact);
+    // Half a turn from the xz plane through +y.
+    CHECK(worst_on_grid(revolved.surfaces[0], [](Vec3 p) { return std::min(p.y, 0.0); }) <= 1e-12);
+}
+
+TEST_CASE("a cylinder's side is whole, its disc caps are trimmed", "[model][cad]") {
+    CHECK_THAT(load_error(generated("cylinder.step")), Catch::Contains("2 trimmed faces"));
+    const Model side = load_model(generated("cylinder.step"), skipping_trimmed());
+    REQUIRE(side.surfaces.size() == 1);
+    CHECK(side.origins[0].kind == "cylinder");
+    CHECK(side.origins[0].exact);
+    CHECK(worst_on_grid(side.surfaces[0], [](Vec3 p) { return std::hypot(p.x, p.y) - 1; }) <=
+          1e-13);
+    const Box3 b = control_box(side);
+    CHECK(b.lo.z == Approx(0).margin(1e-15));
+    CHECK(b.hi.z == Approx(2));
+    ModelLoadOptions whole;
+    whole.trimmed = TrimmedFaces::whole_surface;
+    const Model all = load_model(generated("cylinder.step"), whole);
+    REQUIRE(all.surfaces.size() == 3);
+    CHECK(std::count_if(all.origins.begin(), all.origins.end(),
+                        [](const SurfaceOrigin& o) { return o.kind == "plane"; }) == 2);
+}
+
+TEST_CASE("surfaces without an exact form of degree <= 9 are approximated, the error reported",
+          "[model][cad]") {
+    // An offset (by 0.5) of the plane z = 0 written as a bicubic B-spline.
+    const Model offset = load_model(generated("offset.step"));
+    REQUIRE(offset.surfaces.size() == 1);
+    const SurfaceOrigin& o = offset.origins[0];
+    CHECK(o.kind == "offset B-spline");
+    CHECK_FALSE(o.exact);
+    CHECK(o.approximation_error <= 1e-7 * std::sqrt(5.0));
+    CHECK(worst_on_grid(offset.surfaces[0], [](Vec3 p) { return p.z - 0.5; }) <=
+          o.approximation_error + 1e-14);
+    REQUIRE(offset.warnings.size() == 1);
+    CHECK_THAT(offset.warnings[0], Catch::Contains("approximated 1 surface") &&
+                                       Catch::Contains(offset.surfaces[0].name));
+    // z = x y as a degree-11 Bezier patch.
+    const Model high = load_model(generated("degree11.igs"));
+    REQUIRE(high.surfaces.size() == 1);
+    const BSplineSurface& s = high.surfaces[0];
+    CHECK_FALSE(high.origins[0].exact);
+    CHECK(s.degree_u <= kMaxDegree);
+    CHECK(s.degree_v <= kMaxDegree);
+    CHECK(high.origins[0].approximation_error <= 1e-7 * std::sqrt(3.0));
+    CHECK(worst_on_grid(s, [](Vec3 p) { return p.z - p.x * p.y; }) <=
+          2 * high.origins[0].approximation_error + 1e-14);
+    REQUIRE(high.warnings.size() == 1);
 }
