@@ -193,8 +193,8 @@ BSplineSurface to_model(const Handle(Geom_BSplineSurface) & b, const std::string
     for (auto [knots, p] : {std::pair{&s.knots_u, s.degree_u}, std::pair{&s.knots_v, s.degree_v}}) {
         std::vector<double>& U = *knots;
         const size_t n = U.size();
-        if (p >= 2 && U[1] == U[p]) U.front() = U[p];
-        if (p >= 2 && U[n - 2] == U[n - 1 - p]) U.back() = U[n - 1 - p];
+        if (U[1] == U[p] && U[p] < U[p + 1]) U.front() = U[p];
+        if (U[n - 2] == U[n - 1 - p] && U[n - 2 - p] < U[n - 1 - p]) U.back() = U[n - 1 - p];
     }
     const bool rational = b->IsURational() || b->IsVRational();
     s.points.reserve(static_cast<size_t>(s.size_u) * s.size_v);
