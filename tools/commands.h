@@ -15,6 +15,7 @@ using Action = std::function<int()>;
 
 void add_info(CLI::App& app, Action& action);
 void add_tessellate(CLI::App& app, Action& action);
+void add_convert(CLI::App& app, Action& action);
 void add_check(CLI::App& app, Action& action);
 void add_render(CLI::App& app, Action& action);
 void add_sweep(CLI::App& app, Action& action);

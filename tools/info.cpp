@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // seamless info MODEL: what a model holds.
 #include "commands.h"
+#include "model_options.h"
 
 #include <seamless/model/model.h>
 #include <seamless/spline/knot_insertion.h>
@@ -45,16 +46,23 @@ void add_info(CLI::App& app, Action& action) {
                                            "patches, bounding box and d_max");
     auto model = std::make_shared<std::string>();
     auto as_json = std::make_shared<bool>(false);
-    cmd->add_option("MODEL", *model, "model file (.json version 1, or Newell .bpt)")->required();
+    auto load = std::make_shared<ModelLoadOptions>();
+    cmd->add_option("MODEL", *model,
+                    "model file (.json version 1, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
+        ->required();
     cmd->add_flag("--json", *as_json, "print the report as JSON");
-    cmd->callback([&action, model, as_json] {
-        action = [model, as_json] {
-            const Model m = load_model(*model);
+    add_model_options(cmd, *load);
+    cmd->callback([&action, model, as_json, load] {
+        action = [model, as_json, load] {
+            const Model m = load_model(*model, *load);
+            print_warnings(m);
             const Box3 box = control_box(m);
             int total = 0;
             nlohmann::json js;
             js["model"] = *model;
-            for (const BSplineSurface& s : m.surfaces) {
+            for (size_t k = 0; k < m.surfaces.size(); ++k) {
+                const BSplineSurface& s = m.surfaces[k];
+                const SurfaceOrigin* origin = k < m.origins.size() ? &m.origins[k] : nullptr;
                 const int patches = bezier_patch_count(s);
                 total += patches;
                 if (*as_json) {
@@ -65,13 +73,28 @@ void add_info(CLI::App& app, Action& action) {
                                               {"knots_v", s.knots_v},
                                               {"rational", s.rational()},
                                               {"bezier_patches", patches}});
+                    if (origin)
+                        js["surfaces"].back()["origin"] = {
+                            {"entity", origin->entity},
+                            {"kind", origin->kind},
+                            {"exact", origin->exact},
+                            {"approximation_error", origin->approximation_error}};
                 } else {
                     std::cout << s.name << ": degree " << s.degree_u << "x" << s.degree_v
                               << ", net " << s.size_u << "x" << s.size_v << ", "
                               << (s.rational() ? "rational" : "polynomial")
                               << ", knots_u " << summarise_knots(s.knots_u) << ", knots_v "
                               << summarise_knots(s.knots_v) << ", " << patches
-                              << " Bezier patch" << (patches == 1 ? "" : "es") << "\n";
+                              << " Bezier patch" << (patches == 1 ? "" : "es");
+                    if (origin) {
+                        std::cout << ", from " << origin->kind;
+                        if (origin->exact)
+                            std::cout << " (exact)";
+                        else
+                            std::cout << " (approximated, error "
+                                      << origin->approximation_error << ")";
+                    }
+                    std::cout << "\n";
                 }
             }
             const double dmax = box.max_extent();
@@ -81,6 +104,7 @@ void add_info(CLI::App& app, Action& action) {
                 js["bbox"] = {{"min", {box.lo.x, box.lo.y, box.lo.z}},
                               {"max", {box.hi.x, box.hi.y, box.hi.z}}};
                 js["d_max"] = dmax;
+                js["warnings"] = m.warnings;
                 std::cout << js.dump(2) << "\n";
             } else {
                 std::cout.precision(10);

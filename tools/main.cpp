@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     seamless::cli::Action action;
     seamless::cli::add_info(app, action);
     seamless::cli::add_tessellate(app, action);
+    seamless::cli::add_convert(app, action);
     seamless::cli::add_check(app, action);
     seamless::cli::add_render(app, action);
     seamless::cli::add_sweep(app, action);

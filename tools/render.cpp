@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // seamless render SCENE -o OUT.png: INTRACY, TRAY or the per-pixel reference.
 #include "commands.h"
+#include "model_options.h"
 #include "progress.h"
 
 #include <seamless/base/atomic_file.h>
@@ -83,6 +84,7 @@ void add_render(CLI::App& app, Action& action) {
                     throw InputError("", "--size", "width and height must be in 1..16384");
             }
             const Scene scene = load_scene(a->scene);
+            print_warnings(scene.model); // e.g. approximated STEP/IGES surfaces
             ProgressBar bar("render");
             opt.progress = [&bar](double f) { bar.update(f); };
             RenderStats st;

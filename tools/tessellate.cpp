@@ -2,6 +2,7 @@
 // seamless tessellate MODEL -o OUT: crack-free adaptive triangulation (paper
 // section 6) with the tolerances of section 8, written in OUT's format.
 #include "commands.h"
+#include "model_options.h"
 #include <seamless/base/error.h>
 
 #include <seamless/base/atomic_file.h>
@@ -26,9 +27,11 @@ void add_tessellate(CLI::App& app, Action& action) {
         std::string model, out, stats;
         double eps1 = -1, eps2 = -1, seam_tolerance = -1;
         int max_depth = TessellationOptions{}.max_depth;
+        ModelLoadOptions load;
     };
     auto args = std::make_shared<Args>();
-    cmd->add_option("MODEL", args->model, "model file (.json version 1, or Newell .bpt)")
+    cmd->add_option("MODEL", args->model,
+                    "model file (.json version 1, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
         ->required();
     cmd->add_option("-o,--output", args->out,
                     "mesh file; format by extension (.off .obj .ply .stl .gltf .glb)")
@@ -46,6 +49,7 @@ void add_tessellate(CLI::App& app, Action& action) {
     cmd->add_option("--max-depth", args->max_depth, "most halvings per Bezier patch")
         ->check(CLI::Range(0, 60));
     cmd->add_option("--stats", args->stats, "also write the statistics as JSON to this file");
+    add_model_options(cmd, args->load);
     cmd->callback([&action, args] {
         action = [args] {
             // Refuse an unknown output format before doing the work.
@@ -55,7 +59,8 @@ void add_tessellate(CLI::App& app, Action& action) {
                 throw InputError(args->out, "",
                                  "unknown mesh extension '" + ext +
                                      "' (expected .off .obj .ply .stl .gltf .glb)");
-            const Model m = load_model(args->model);
+            const Model m = load_model(args->model, args->load);
+            print_warnings(m);
             TessellationOptions opt;
             opt.eps1 = args->eps1;
             opt.eps2 = args->eps2;

@@ -2,6 +2,7 @@
 #include <seamless/model/model.h>
 
 #include <seamless/base/error.h>
+#include <seamless/model/step_iges.h>
 #include <seamless/spline/knot_insertion.h>
 
 #include <cerrno>
@@ -87,6 +88,13 @@ void validate_surface(const BSplineSurface& s, const std::string& file, const st
 }
 
 Model load_model(const std::filesystem::path& path, const ModelLimits& limits) {
+    ModelLoadOptions options;
+    options.limits = limits;
+    return load_model(path, options);
+}
+
+Model load_model(const std::filesystem::path& path, const ModelLoadOptions& options) {
+    const ModelLimits& limits = options.limits;
     const std::string file = path.string();
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
@@ -99,7 +107,9 @@ Model load_model(const std::filesystem::path& path, const ModelLimits& limits) {
     const std::string text = ss.str();
     std::string ext = path.extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    Model m = ext == ".bpt" ? parse_bpt(text, file, limits) : parse_model_json(text, file, limits);
+    Model m = is_step_iges_extension(ext) ? read_step_iges(path, options)
+              : ext == ".bpt"             ? parse_bpt(text, file, limits)
+                                          : parse_model_json(text, file, limits);
     m.source = file;
     return m;
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A model: the B-spline surfaces of one file. Readers for the version-1 JSON
-// model format and the Newell Bezier patch format (.bpt); docs/formats.md
-// documents both and their error messages.
+// model format, the Newell Bezier patch format (.bpt) and, through
+// OpenCASCADE, STEP and IGES (step_iges.h); docs/formats.md documents them and
+// their error messages.
 #pragma once
 
 #include <seamless/base/vec.h>
@@ -14,9 +15,20 @@
 
 namespace seamless {
 
+// Where a surface read from a CAD file came from (step_iges.h).
+struct SurfaceOrigin {
+    std::string entity;             // the file's entity, e.g. "#55" (STEP) or "DE9" (IGES)
+    std::string kind;               // "B-spline", "Bezier", "plane", "cylinder", "torus", ...
+    bool exact = true;              // converted to its exact NURBS form
+    double approximation_error = 0; // else: the approximation's largest distance from the
+                                    // file's surface, as OpenCASCADE measures it, model units
+};
+
 struct Model {
     std::string source; // file the model came from, for messages
     std::vector<BSplineSurface> surfaces;
+    std::vector<SurfaceOrigin> origins; // one per surface for STEP/IGES, empty otherwise
+    std::vector<std::string> warnings;  // what the reader left out or approximated, one line each
 };
 
 // Limits that reject absurd sizes before anything is allocated for them.
@@ -25,9 +37,28 @@ struct ModelLimits {
     long long max_control_points = 50'000'000; // per surface, nu * nv
 };
 
-// Reads a .json or .bpt model (by extension; anything else is tried as JSON).
-// Throws InputError naming the file and the field on any defect.
-Model load_model(const std::filesystem::path& path, const ModelLimits& limits = {});
+// What to do with a STEP/IGES face whose boundary is not its surface's
+// parameter rectangle (a trimmed face).
+enum class TrimmedFaces {
+    refuse,        // the file is refused with one line naming the trimmed faces
+    skip,          // they are left out (a warning names them)
+    whole_surface, // their whole underlying surfaces are taken (a warning names them)
+};
+
+struct ModelLoadOptions {
+    ModelLimits limits;
+    TrimmedFaces trimmed = TrimmedFaces::refuse;
+    // Surfaces without an exact NURBS form (offset surfaces, revolutions of
+    // offset curves, degrees above kMaxDegree) are approximated within this
+    // fraction of their bounding box diagonal; the error reached is reported.
+    double approximation_tolerance = 1e-7;
+};
+
+// Reads a model by extension: .json, .bpt, .step/.stp, .iges/.igs (anything
+// else is tried as JSON). Throws InputError naming the file and the field on
+// any defect.
+Model load_model(const std::filesystem::path& path, const ModelLoadOptions& options = {});
+Model load_model(const std::filesystem::path& path, const ModelLimits& limits);
 Model parse_model_json(const std::string& text, const std::string& file,
                        const ModelLimits& limits = {});
 Model parse_bpt(const std::string& text, const std::string& file, const ModelLimits& limits = {});

@@ -198,6 +198,7 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
                 r.fail(f + ".transform", "the last row must be 0 0 0 1 (affine transforms only)");
         }
         Model m = load_model(so.model_path); // errors name the model file
+        sc.model.warnings.insert(sc.model.warnings.end(), m.warnings.begin(), m.warnings.end());
         so.first_surface = static_cast<int>(sc.model.surfaces.size());
         so.surface_count = static_cast<int>(m.surfaces.size());
         for (BSplineSurface& s : m.surfaces) {
