@@ -85,6 +85,7 @@ void add_tessellate(CLI::App& app, Action& action) {
                                   {"collapsed_edges", s.collapsed_edges},
                                   {"seams", s.seams},
                                   {"seam_vertices", s.seam_vertices},
+                                  {"flipped_surfaces", s.flipped_surfaces},
                                   {"seam_tolerance", s.seam_tolerance},
                                   {"nonplanar_subpatches", s.nonplanar_subpatches},
                                   {"max_depth", s.max_depth},

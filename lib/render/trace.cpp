@@ -66,7 +66,11 @@ bool needs_secondary_rays(const Scene& scene) {
 
 TriangleScene build_triangle_scene(const Scene& scene) {
     TriangleScene ts;
-    ts.tess = tessellate(scene.model);
+    // The renderers shade with the surfaces' own normals (INTRACY on the
+    // patches, TRAY on the triangles' corner normals): keep every surface's side.
+    TessellationOptions to;
+    to.orient_surfaces = false;
+    ts.tess = tessellate(scene.model, to);
     const TriangleMesh& mesh = ts.tess.mesh;
     const int F = mesh.triangle_count();
     ts.triangle_material.resize(F);

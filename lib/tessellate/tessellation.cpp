@@ -2,6 +2,7 @@
 #include <seamless/tessellate/edge_graph.h>
 #include <seamless/tessellate/error_bound.h>
 #include <seamless/tessellate/shared_edges.h>
+#include <seamless/tessellate/surface_orientation.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <algorithm>
@@ -233,6 +234,9 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         for (int v : mesh.triangles[f]) bb.extend(mesh.positions[v]);
         return bb;
     });
+
+    // At unit scale: the signed volume of a closed component stays finite.
+    if (options.orient_surfaces) st.flipped_surfaces = orient_surfaces(mesh).flipped_surfaces;
 
     st.subpatches = static_cast<int>(out.subpatches.size());
     st.triangles = mesh.triangle_count();

@@ -34,12 +34,17 @@ struct TessellationOptions {
     // data whose surfaces meet only within the exporter's tolerance needs that
     // tolerance here, typically 1e-7 to 1e-3 model units.
     double seam_tolerance = -1;
+    // Flip whole surfaces so that every shared edge runs in opposite directions
+    // on its two sides and closed components face outward
+    // (surface_orientation.h); false keeps each surface's dP/du x dP/dv side.
+    bool orient_surfaces = true;
 };
 
 struct TessellationStats {
     int surfaces = 0, patches = 0, subpatches = 0, triangles = 0, vertices = 0;
     int shared_edges = 0, collapsed_edges = 0;
     int seams = 0, seam_vertices = 0; // boundaries matched geometrically (edge_graph.h)
+    int flipped_surfaces = 0;         // turned by orient_surfaces
     int nonplanar_subpatches = 0;     // stopped by max_depth
     int max_depth = 0;                // deepest subpatch
     double d_max = 0, eps1 = 0, eps2 = 0, seam_tolerance = 0;

@@ -4,8 +4,8 @@
 // closed with the right Euler characteristic, one open shell with one border
 // loop, separate sheets, and no crack along a seam two surfaces share.
 // The tire's surfaces (bare IGES 128 entities, no faces) are oriented
-// inconsistently in the file: neighbours' dP/du x dP/dv point to opposite
-// sides along 192 edges, so only its cracks are checked.
+// inconsistently in the file; the tessellation turns them consistent
+// (surface_orientation.h); tests/tools/cli_cad_test.cpp runs `check` on it.
 #include "mesh_properties.h"
 #include "test_util.h"
 

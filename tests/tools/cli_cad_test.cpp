@@ -7,6 +7,7 @@
 #include <seamless/model/model.h>
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 
@@ -132,5 +133,38 @@ TEST_CASE("bad STEP/IGES files: one line naming the file, exit 2, no output",
         }
         CHECK_FALSE(std::filesystem::exists(dir / "out.json"));
         CHECK_FALSE(std::filesystem::exists(dir / "out.off"));
+    }
+}
+
+// The tire's surfaces meet along four curves only within 1.2e-3 (the file's
+// tolerance; the tread and the shoulders are separate surfaces): by default
+// those seams stay apart and `check` names them with their width; with
+// --seam-tolerance 2e-3 they are stitched and the mesh passes `check`, its 12
+// surfaces that face the other way in the file flipped to agree.
+TEST_CASE("tire.iges: seams within 1.2e-3 reported by check, stitched by --seam-tolerance",
+          "[cli][cad]") {
+    const auto dir = test::scratch_dir("cli_cad_tire_seams");
+    const auto mesh = dir / "tire.off";
+    auto r = test::run_cli("tessellate --skip-trimmed " + q(cad("tire.iges")) + " -o " + q(mesh));
+    REQUIRE(r.status == 0);
+    r = test::run_cli("check --json " + q(mesh));
+    CHECK(r.status == 1);
+    auto j = nlohmann::json::parse(r.out);
+    CHECK(j["seams"]["count"] == 4);
+    CHECK(j["inconsistent_orientation"]["count"] == 0);
+    for (const auto& seam : j["seams"]["listed"]) {
+        CHECK(seam["gap"].get<double>() > 1e-3);
+        CHECK(seam["gap"].get<double>() < 2e-3);
+    }
+    for (const char* factor : {"", " --eps1 0.00003 --eps2 0.0006"}) {
+        r = test::run_cli("tessellate --skip-trimmed --seam-tolerance 2e-3" + std::string(factor) +
+                          " " + q(cad("tire.iges")) + " -o " + q(mesh));
+        REQUIRE(r.status == 0);
+        r = test::run_cli("check --json " + q(mesh));
+        CHECK(r.status == 0);
+        j = nlohmann::json::parse(r.out);
+        CHECK(j["passed"] == true);
+        CHECK(j["seams"]["count"] == 0);
+        CHECK(j["t_junctions"]["count"] == 0);
     }
 }
