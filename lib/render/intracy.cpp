@@ -41,10 +41,33 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <memory>
+#include <optional>
 
 namespace seamless {
 namespace {
+
+// CPU seconds of the calling thread: on a shared machine a step's own cost,
+// not the time other jobs held the core.
+double thread_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Adds the thread's CPU seconds from construction to destruction to `acc` (--stats).
+class StepClock {
+  public:
+    explicit StepClock(double& acc) : acc_(acc), t0_(thread_seconds()) {}
+    StepClock(const StepClock&) = delete;
+    StepClock& operator=(const StepClock&) = delete;
+    ~StepClock() { acc_ += thread_seconds() - t0_; }
+
+  private:
+    double& acc_;
+    double t0_;
+};
 
 struct Mark {
     int patch;
@@ -84,6 +107,7 @@ Hit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks,
         intersect(pp.forms, ray, marks[k].box, hits, RayPatchOptions{}, &rs);
         ++st.pixel_patch_solves;
         st.hs_iterations += rs.iterations;
+        st.hs_steps += rs.iterations;
         auto h = nearest_hit(hits, 0.0);
         if (!h || !(h->q.hi() > 0)) continue;
         if (best.patch < 0 || h->q.mid() < best.q)
@@ -163,6 +187,7 @@ class PartRenderer {
         for (size_t k = 0; k < ps_.patches.size(); ++k)
             arena_.push_back({static_cast<int>(k), ParamBox{}, ps_.patches[k].hull});
         stack_.push_back({x0, y0, x1, y1, 0, arena_.size()});
+        const long long enclosures0 = range_enclosure_count();
         while (!stack_.empty()) {
             SubScreen B = stack_.back();
             stack_.pop_back();
@@ -170,6 +195,8 @@ class PartRenderer {
             ++st.subscreens;
             step(B, st);
         }
+        st.range_enclosures += range_enclosure_count() - enclosures0;
+        st.shade_seconds -= st.secondary_seconds; // reported apart
     }
 
   private:
@@ -197,6 +224,8 @@ class PartRenderer {
         const size_t first = arena_.size();
         const double pitch_a = 2.0 * ps_.frame.tan_half * ps_.frame.aspect / ps_.frame.width;
         const double pitch_b = 2.0 * ps_.frame.tan_half / ps_.frame.height;
+        std::optional<StepClock> narrowing;
+        if (!thin) narrowing.emplace(st.narrow_seconds);
         for (size_t k = B.offset; k < B.offset + B.count; ++k) {
             // Covering method (section 5, remark 2 after Theorem 10): where Theorem 10
             // cannot narrow a box (its derivative hull holds 0, near a silhouette) and
@@ -250,6 +279,7 @@ class PartRenderer {
                 for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i], Q});
             }
         }
+        narrowing.reset();
         const size_t nmarks = arena_.size() - first;
         if (nmarks == 0) { // step 4: nothing marked
             paint_background(B.x0, B.y0, B.x1, B.y1, st);
@@ -294,6 +324,7 @@ class PartRenderer {
 
     // Step 6: a one-pixel B, solved by Hansen-Sengupta on its marked patches.
     void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
+        const StepClock clock(st.single_pixel_seconds);
         ++st.single_pixels;
         const Hit h =
             solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
@@ -578,16 +609,20 @@ class PartRenderer {
                 box.t = hull(box.t, arena_[k].box.t);
             }
         const ProjectedPatch& pp = ps_.patches[best_patch];
-        const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
-        cluster_system(pp.forms, a, b, sys_);
-        if (!certify_cluster(sys_, box)) return false;
-        const Interval qbest = enclose_point(pp.forms, box)[2];
-        if (!(qbest.lo() > 0)) return false;
-        for (size_t k = first; k < first + n; ++k) {
-            if (arena_[k].patch == best_patch) continue;
-            const Interval q = arena_[k].hull[2];
-            if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
+        {
+            const StepClock clock(st.certify_seconds);
+            const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
+            cluster_system(pp.forms, a, b, sys_);
+            if (!certify_cluster(sys_, box, &st.hs_steps)) return false;
+            const Interval qbest = enclose_point(pp.forms, box)[2];
+            if (!(qbest.lo() > 0)) return false;
+            for (size_t k = first; k < first + n; ++k) {
+                if (arena_[k].patch == best_patch) continue;
+                const Interval q = arena_[k].hull[2];
+                if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
+            }
         }
+        const StepClock shading(st.shade_seconds);
         const Mark m{best_patch, box, {}};
         // Step 8: SHADE over the hulls of the intersection points and normals.
         const PatchEnclosure e = enclose(pp.forms, box);
@@ -618,12 +653,14 @@ class PartRenderer {
             std::array<Interval, 3> more;
             if (mat.reflect > 0) {
                 IVec<3> R;
+                const StepClock clock(st.secondary_seconds);
                 if (!reflect_directions(D, Nw, R) || !secondary_cluster(Pw, R, m.patch, 1, more))
                     return false;
                 for (int c = 0; c < 3; ++c) I[c] += Interval(mat.reflect) * more[c];
             }
             if (mat.transmit > 0) {
                 IVec<3> T;
+                const StepClock clock(st.secondary_seconds);
                 if (!refract_directions(D, Nw, mat.ior, T) ||
                     !secondary_cluster(Pw, T, m.patch, 1, more))
                     return false;

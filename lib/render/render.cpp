@@ -22,6 +22,13 @@ void RenderStats::merge(const RenderStats& o) {
     background_pixels += o.background_pixels;
     secondary_clusters += o.secondary_clusters;
     shadowed_clusters += o.shadowed_clusters;
+    range_enclosures += o.range_enclosures;
+    hs_steps += o.hs_steps;
+    narrow_seconds += o.narrow_seconds;
+    certify_seconds += o.certify_seconds;
+    shade_seconds += o.shade_seconds;
+    secondary_seconds += o.secondary_seconds;
+    single_pixel_seconds += o.single_pixel_seconds;
 }
 
 Image render(const Scene& scene, const RenderOptions& opt, RenderStats* stats) {

@@ -44,6 +44,14 @@ struct RenderStats {
     // with a light certainly blocked for the whole cluster (step 2).
     long long secondary_clusters = 0, shadowed_clusters = 0;
     long long patches = 0, triangles = 0;
+    // INTRACY's cost: power-form range enclosures (enclosure.h, range_enclosure_count),
+    // Hansen-Sengupta steps of every kind (pixel solves and cluster certificates),
+    // and thread CPU seconds per step, summed over the parts (so over threads): step 3's
+    // narrowing, step 7's certificate, step 8's SHADE (without its secondary
+    // clusters), SHADE steps 3-4's secondary clusters, and step 6's single pixels.
+    long long range_enclosures = 0, hs_steps = 0;
+    double narrow_seconds = 0, certify_seconds = 0, shade_seconds = 0, secondary_seconds = 0,
+           single_pixel_seconds = 0;
 
     double single_pixel_fraction() const {
         return width > 0 && height > 0
@@ -55,6 +63,11 @@ struct RenderStats {
     }
     double patches_per_pixel() const {
         return single_pixels ? static_cast<double>(pixel_patch_solves) / single_pixels : 0;
+    }
+    double enclosures_per_pixel() const {
+        return width > 0 && height > 0
+                   ? static_cast<double>(range_enclosures) / (static_cast<double>(width) * height)
+                   : 0;
     }
     void merge(const RenderStats& o);
 };
