@@ -28,7 +28,9 @@
 // proof: a pixel painted from a cluster is never wrong by more than one level
 // (the enclosure holds the true intensity), and background is never painted
 // where a patch is hit.
+#include <seamless/render/mark.h>
 #include <seamless/render/parallel.h>
+#include <seamless/render/pixel_solve.h>
 #include <seamless/render/primary_cluster.h>
 #include <seamless/render/projection.h>
 #include <seamless/render/ray_cluster.h>
@@ -69,84 +71,17 @@ class StepClock {
     double t0_;
 };
 
-struct Mark {
-    int patch;
-    ParamBox box;
-    IVec3 hull; // camera-space enclosure of the patch over box (or a superset)
-};
-
 struct SubScreen {
     int x0, y0, x1, y1;   // inclusive pixel range
     size_t offset, count; // its marks in the arena
 };
-
-struct Hit {
-    int patch = -1;
-    double s = 0, t = 0, q = 0;
-};
-
-// Nearest intersection of one primary ray with the marked patches (step 6,
-// remark 1), each searched in its box with Hansen-Sengupta and the covering method.
-Hit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                RenderStats& st, std::vector<RayPatchHit>& hits,
-                std::vector<std::pair<double, int>>& order) {
-    Hit best;
-    double best_q = std::numeric_limits<double>::infinity(); // upper bound of the nearest depth
-    const Ray ray = ProjectedScene::primary_ray(a, b);
-    ++st.primary_rays;
-    // Nearest first; once a hit is found, marks that lie entirely beyond it are
-    // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
-    order.clear();
-    for (size_t k = 0; k < n; ++k) order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
-    std::sort(order.begin(), order.end());
-    for (const auto& [zlo, k] : order) {
-        if (zlo > best_q) break;
-        const ProjectedPatch& pp = ps.patches[marks[k].patch];
-        hits.clear();
-        RayPatchStats rs;
-        intersect(pp.forms, ray, marks[k].box, hits, RayPatchOptions{}, &rs);
-        ++st.pixel_patch_solves;
-        st.hs_iterations += rs.iterations;
-        st.hs_steps += rs.iterations;
-        auto h = nearest_hit(hits, 0.0);
-        if (!h || !(h->q.hi() > 0)) continue;
-        if (best.patch < 0 || h->q.mid() < best.q)
-            best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid()};
-        best_q = std::min(best_q, h->q.hi());
-    }
-    return best;
-}
-
-// A corner ray of a certified cluster hits the patch exactly once in `box`.
-// Its intensity only steers the bilinear form of step 9, whose levels are then
-// clamped to the certified enclosure, so plain Newton in doubles suffices here;
-// it falls back to Hansen-Sengupta (remark 2) when it does not converge.
-bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,
-                   double& t) {
-    s = box.s.mid();
-    t = box.t.mid();
-    for (int it = 0; it < 12; ++it) {
-        const SurfacePoint p = evaluate(b, s, t);
-        const double f0 = p.point.x - a * p.point.z, f1 = p.point.y - bb * p.point.z;
-        const double j00 = p.du.x - a * p.du.z, j01 = p.dv.x - a * p.dv.z;
-        const double j10 = p.du.y - bb * p.du.z, j11 = p.dv.y - bb * p.dv.z;
-        const double det = j00 * j11 - j01 * j10;
-        if (!(std::abs(det) > 0)) return false;
-        const double ds = (f0 * j11 - f1 * j01) / det, dt = (j00 * f1 - j10 * f0) / det;
-        s -= ds;
-        t -= dt;
-        if (!box.s.contains(s) || !box.t.contains(t)) return false;
-        if (std::abs(ds) + std::abs(dt) < 1e-12) return true;
-    }
-    return false;
-}
 
 // SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
 // secondary rays in play (a triangle scene), shadows, reflection and refraction
 // are traced against the triangles (section 7, SHADE); the local illumination
 // model is the same either way.
 std::array<double, 3> shade_hit(const ProjectedScene& ps, const Scene& scene,
-                                const TriangleScene* ts, const Hit& h) {
+                                const TriangleScene* ts, const PixelHit& h) {
     Vec3 P, N;
     const ProjectedPatch& pp = ps.patches[h.patch];
     surface_frame(pp.patch, h.s, h.t, P, N);
@@ -326,9 +261,9 @@ class PartRenderer {
     void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
         const StepClock clock(st.single_pixel_seconds);
         ++st.single_pixels;
-        const Hit h =
+        const PixelHit h =
             solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
-                        &arena_[first], n, st, hits_, order_);
+                        &arena_[first], n, pixel_, st);
         if (h.patch < 0) {
             paint_background(B.x0, B.y0, B.x0, B.y0, st);
         } else {
@@ -698,11 +633,10 @@ class PartRenderer {
             const double ca = ps_.frame.screen_a(cx[k] + 0.5), cb = ps_.frame.screen_b(cy[k] + 0.5);
             if (newton_corner(pp.patch, ca, cb, box, cs, ct)) {
                 ++st.primary_rays;
-                corner[k] = shade_hit(ps_, scene_, ts_, Hit{m.patch, cs, ct, 0});
+                corner[k] = shade_hit(ps_, scene_, ts_, PixelHit{m.patch, cs, ct, 0});
                 continue;
             }
-            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5),
-                                      ps_.frame.screen_b(cy[k] + 0.5), &only, 1, st, hits_, order_);
+            const PixelHit h = solve_pixel(ps_, ca, cb, &only, 1, pixel_, st);
             if (h.patch < 0) {
                 for (int c = 0; c < 3; ++c) corner[k][c] = I[c].mid();
             } else {
@@ -739,8 +673,7 @@ class PartRenderer {
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     std::vector<Mark> arena_, work_;
     std::vector<SubScreen> stack_;
-    std::vector<RayPatchHit> hits_;
-    std::vector<std::pair<double, int>> order_;
+    PixelScratch pixel_;
     Scene lighting_; // scratch: ambient and the lights that reach a cluster, camera coordinates
     // the same for secondary clusters' hits, one per depth, world coordinates
     std::vector<Scene> lighting_depth_;

@@ -10,9 +10,9 @@ namespace seamless {
 void cluster_system(const PatchForms& f, Interval a, Interval b, ClusterSystem& out) {
     const Interval m[2][PowerForm::kMaxDim] = {{Interval(1.0), Interval(0.0), -a, Interval(0.0)},
                                                {Interval(0.0), Interval(1.0), -b, Interval(0.0)}};
-    out.G = combine(f.X, m, 2);
-    out.Gs = combine(f.Xs, m, 2);
-    out.Gt = combine(f.Xt, m, 2);
+    combine(f.X, m, 2, out.G);
+    combine(f.Xs, m, 2, out.Gs);
+    combine(f.Xt, m, 2, out.Gt);
 }
 
 int solve_pieces(Interval n, Interval d, Interval X, double x0, Interval out[2]) {

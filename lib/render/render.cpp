@@ -17,6 +17,7 @@ void RenderStats::merge(const RenderStats& o) {
     subscreens += o.subscreens;
     single_pixels += o.single_pixels;
     pixel_patch_solves += o.pixel_patch_solves;
+    pixel_newton_certified += o.pixel_newton_certified;
     hs_iterations += o.hs_iterations;
     primary_rays += o.primary_rays;
     background_pixels += o.background_pixels;

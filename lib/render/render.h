@@ -36,6 +36,7 @@ struct RenderStats {
     long long subscreens = 0;         // sub-screens taken from the stacks
     long long single_pixels = 0;      // pixels solved as a one-pixel sub-screen
     long long pixel_patch_solves = 0; // single-ray Hansen-Sengupta solves (pixel x patch)
+    long long pixel_newton_certified = 0; // of those, certified Newton (pixel_solve.h)
     long long hs_iterations = 0;      // Hansen-Sengupta steps in those solves
     long long primary_rays = 0;       // single rays traced (pixels and corner rays)
     long long background_pixels = 0;
