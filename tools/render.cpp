@@ -40,6 +40,8 @@ nlohmann::json stats_json(const RenderStats& st) {
             {"range_enclosures", st.range_enclosures},
             {"enclosures_per_pixel", st.enclosures_per_pixel()},
             {"hs_steps", st.hs_steps},
+            {"marks_narrowed", st.marks_narrowed},
+            {"mark_bisections", st.mark_bisections},
             {"pixel_patch_solves", st.pixel_patch_solves},
             {"pixel_newton_certified", st.pixel_newton_certified},
             {"step_seconds",

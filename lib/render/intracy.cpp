@@ -154,6 +154,11 @@ class PartRenderer {
 
     void step(SubScreen B, RenderStats& st) {
         const bool thin = B.x0 == B.x1 && B.y0 == B.y1;
+        const long long area = static_cast<long long>(B.x1 - B.x0 + 1) * (B.y1 - B.y0 + 1);
+        if (!thin && area <= opt_.pixel_subscreen) {
+            paint_pixels(B, st);
+            return;
+        }
         const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
         // Step 3: hull comparison and Theorem 10 for every marked patch.
         const size_t first = arena_.size();
@@ -181,6 +186,7 @@ class PartRenderer {
                     continue;
                 }
                 cluster_system(pp.forms, a, b, sys_);
+                ++st.marks_narrowed;
                 if (!narrow(sys_, m.box)) continue;
                 const IVec3 Q = enclose_point(pp.forms, m.box);
                 m.hull = Q;
@@ -189,6 +195,7 @@ class PartRenderer {
                                   (Q[1] / Q[2]).width() > 2 * (b.width() + pitch_b);
                 if (wide && budget > 0 && std::max(m.box.s.width(), m.box.t.width()) > 1e-9) {
                     --budget;
+                    ++st.mark_bisections;
                     Mark lo = m, hi = m;
                     if (m.box.s.width() >= m.box.t.width()) {
                         const double sm = m.box.s.mid();
@@ -255,6 +262,34 @@ class PartRenderer {
         // All children share one mark list: a child's processing truncates the
         // arena to offset+count before appending, so the list survives for the next.
         for (int i = nk - 1; i >= 0; --i) stack_.push_back(kids[i]);
+    }
+
+    // A small B is solved pixel by pixel from its marks (those of its parent),
+    // without a cluster attempt: a few certified Newton solves cost less than
+    // narrowing, certificate and SHADE for a cluster of a handful of pixels.
+    void paint_pixels(const SubScreen& B, RenderStats& st) {
+        for (int y = B.y0; y <= B.y1; ++y)
+            for (int x = B.x0; x <= B.x1; ++x) {
+                const double a = ps_.frame.screen_a(x + 0.5), b = ps_.frame.screen_b(y + 0.5);
+                const size_t first = arena_.size();
+                for (size_t k = B.offset; k < B.offset + B.count; ++k) {
+                    const Mark m = arena_[k]; // a copy: push_back may move the arena
+                    const IVec3& P = m.hull;
+                    if (!(P[2].hi() > 0)) continue; // behind the eye
+                    if (!(P[0] - Interval(a) * P[2]).contains(0.0) ||
+                        !(P[1] - Interval(b) * P[2]).contains(0.0))
+                        continue;
+                    arena_.push_back(m);
+                }
+                const SubScreen pixel{x, y, x, y, 0, 0};
+                if (arena_.size() == first) {
+                    paint_background(x, y, x, y, st);
+                    count(pixel, st);
+                } else {
+                    paint_single_pixel(pixel, first, arena_.size() - first, st);
+                }
+                arena_.resize(first);
+            }
     }
 
     // Step 6: a one-pixel B, solved by Hansen-Sengupta on its marked patches.

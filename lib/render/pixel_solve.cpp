@@ -38,28 +38,36 @@ IMat<2> jacobian(const ClusterSystem& sys, const ParamBox& box) {
 
 } // namespace
 
-bool newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                      ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st) {
-    cluster_system(pp.forms, Interval(a), Interval(b), sys);
-    // At most one zero in box: ||I - C A||_inf < 1 makes every matrix of A regular.
+NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
+                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st) {
+    constexpr NewtonOutcome undecided = NewtonOutcome::undecided;
+    // One Hansen-Sengupta step over the whole box: empty means no zero there.
     const IMat<2> A = jacobian(sys, box);
+    const IVec<2> X{{box.s, box.t}};
+    const RVec<2> c = mid(X);
+    IVec<2> Fc;
+    for (int k = 0; k < 2; ++k) Fc[k] = horner(sys.G, k, ParamBox{Interval(c[0]), Interval(c[1])});
+    const HansenSenguptaStep<2> whole = hansen_sengupta<2>(A, Fc, X, c);
+    ++st.hs_steps;
+    if (whole.box.is_empty()) return NewtonOutcome::miss;
+    // At most one zero in box: ||I - C A||_inf < 1 makes every matrix of A regular.
     RMat<2> C;
-    if (!invert<2>(mid(A), C)) return false;
+    if (!invert<2>(mid(A), C)) return undecided;
     const IMat<2> CA = C * A;
     for (int i = 0; i < 2; ++i) {
         double row = 0;
         for (int k = 0; k < 2; ++k) row += (Interval(i == k ? 1.0 : 0.0) - CA(i, k)).mag();
-        if (!(next_up(row) < 1)) return false;
+        if (!(next_up(row) < 1)) return undecided;
     }
-    // Newton in doubles from the box's centre, kept inside the box.
-    double s = box.s.mid(), t = box.t.mid(), step = 1;
+    // Newton in doubles from the contracted box's centre, kept inside the box.
+    double s = whole.box[0].mid(), t = whole.box[1].mid(), step = 1;
     int it = 0;
     for (; it < 16 && step > 1e-13; ++it) {
-        if (!newton_step(pp.patch, a, b, s, t, step)) return false;
+        if (!newton_step(pp.patch, a, b, s, t, step)) return undecided;
         s = std::clamp(s, box.s.lo(), box.s.hi());
         t = std::clamp(t, box.t.lo(), box.t.hi());
     }
-    if (step > 1e-9) return false;
+    if (step > 1e-9) return undecided;
     // Epsilon inflation, then Theorem 6 iii on the small box Y: one zero in Y,
     // so the only zero in box.
     const double e = 1e-9;
@@ -69,15 +77,21 @@ bool newton_certified(const ProjectedPatch& pp, double a, double b, const ParamB
     IVec<2> F;
     const ParamBox centre{Interval(s), Interval(t)};
     for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, centre);
-    const HansenSenguptaStep<2> hs = hansen_sengupta<2>(jacobian(sys, Yb), F, Y, RVec<2>{s, t});
+    // A over the box bounds G' over Y too; only where it is too wide to
+    // certify is the Jacobian enclosed over Y itself.
+    HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
     ++st.hs_steps;
-    if (!hs.unique) return false;
+    if (!hs.unique) {
+        hs = hansen_sengupta<2>(jacobian(sys, Yb), F, Y, RVec<2>{s, t});
+        ++st.hs_steps;
+    }
+    if (!hs.unique) return undecided;
     hit = {hs.box[0], hs.box[1]};
     // Depth: camera z = X_2 / W over the hit's box.
     Interval Z = horner(pp.forms.X, 2, hit);
     if (pp.forms.rational) Z = Z / intersect(horner(pp.forms.X, 3, hit), pp.forms.w_hull);
     q = Z;
-    return true;
+    return NewtonOutcome::hit;
 }
 
 PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
@@ -96,26 +110,58 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
         if (zlo > best_q) break;
         const ProjectedPatch& pp = ps.patches[marks[k].patch];
         ++st.pixel_patch_solves;
-        ParamBox hb;
-        Interval q;
-        if (newton_certified(pp, a, b, marks[k].box, scratch.sys, hb, q, st)) {
-            ++st.pixel_newton_certified;
-            if (!(q.hi() > 0)) continue;
-            if (best.patch < 0 || q.mid() < best.q)
-                best = {marks[k].patch, hb.s.mid(), hb.t.mid(), q.mid()};
-            best_q = std::min(best_q, q.hi());
-            continue;
+        // Certified Newton on the mark's box; where undecided, on its halves
+        // (a covering method with the cheap test), and the full covering
+        // method of ray_patch.h only on boxes still undecided at depth kDepth.
+        constexpr int kDepth = 6;
+        cluster_system(pp.forms, Interval(a), Interval(b), scratch.sys);
+        auto& todo = scratch.boxes;
+        todo.clear();
+        todo.push_back({marks[k].box, 0});
+        while (!todo.empty()) {
+            const auto [box, depth] = todo.back();
+            todo.pop_back();
+            ParamBox hb;
+            Interval q;
+            const NewtonOutcome nc = newton_certified(pp, a, b, box, scratch.sys, hb, q, st);
+            if (nc == NewtonOutcome::miss) {
+                ++st.pixel_newton_certified;
+                continue;
+            }
+            if (nc == NewtonOutcome::hit) {
+                ++st.pixel_newton_certified;
+                if (!(q.hi() > 0)) continue;
+                if (best.patch < 0 || q.mid() < best.q)
+                    best = {marks[k].patch, hb.s.mid(), hb.t.mid(), q.mid()};
+                best_q = std::min(best_q, q.hi());
+                continue;
+            }
+            if (depth < kDepth) {
+                ParamBox lo = box, hi = box;
+                if (box.s.width() >= box.t.width()) {
+                    const double m = box.s.mid();
+                    lo.s = {box.s.lo(), m};
+                    hi.s = {m, box.s.hi()};
+                } else {
+                    const double m = box.t.mid();
+                    lo.t = {box.t.lo(), m};
+                    hi.t = {m, box.t.hi()};
+                }
+                todo.push_back({hi, depth + 1});
+                todo.push_back({lo, depth + 1});
+                continue;
+            }
+            scratch.hits.clear();
+            RayPatchStats rs;
+            intersect(pp.forms, ray, box, scratch.hits, RayPatchOptions{}, &rs);
+            st.hs_iterations += rs.iterations;
+            st.hs_steps += rs.iterations;
+            auto h = nearest_hit(scratch.hits, 0.0);
+            if (!h || !(h->q.hi() > 0)) continue;
+            if (best.patch < 0 || h->q.mid() < best.q)
+                best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid()};
+            best_q = std::min(best_q, h->q.hi());
         }
-        scratch.hits.clear();
-        RayPatchStats rs;
-        intersect(pp.forms, ray, marks[k].box, scratch.hits, RayPatchOptions{}, &rs);
-        st.hs_iterations += rs.iterations;
-        st.hs_steps += rs.iterations;
-        auto h = nearest_hit(scratch.hits, 0.0);
-        if (!h || !(h->q.hi() > 0)) continue;
-        if (best.patch < 0 || h->q.mid() < best.q)
-            best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid()};
-        best_q = std::min(best_q, h->q.hi());
     }
     return best;
 }

@@ -34,13 +34,16 @@ struct PixelScratch {
     ClusterSystem sys;
     std::vector<RayPatchHit> hits;
     std::vector<std::pair<double, int>> order;
+    std::vector<std::pair<ParamBox, int>> boxes; // boxes still to solve, with their depth
 };
 
 // The certified Newton solve above for the ray through screen point (a, b) and
-// patch pp in `box`. true: exactly one hit in box, in `hit` (local (s, t)),
-// at depth `q` (camera z, enclosed). false: undecided (take the covering method).
-bool newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                      ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st);
+// patch pp in `box`; sys: cluster_system(pp.forms, a, b). hit: exactly one hit in box, in `hit`
+// (local (s, t)), at depth `q` (camera z, enclosed); miss: certainly none in box (a Hansen-Sengupta
+// step over the box is empty, Theorem 6 ii); undecided: take the covering method.
+enum class NewtonOutcome { hit, miss, undecided };
+NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
+                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st);
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)
 // with the marked patches, nearest marks first; marks beyond a found hit are

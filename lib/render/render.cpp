@@ -25,6 +25,8 @@ void RenderStats::merge(const RenderStats& o) {
     shadowed_clusters += o.shadowed_clusters;
     range_enclosures += o.range_enclosures;
     hs_steps += o.hs_steps;
+    marks_narrowed += o.marks_narrowed;
+    mark_bisections += o.mark_bisections;
     narrow_seconds += o.narrow_seconds;
     certify_seconds += o.certify_seconds;
     shade_seconds += o.shade_seconds;

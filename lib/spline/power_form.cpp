@@ -82,8 +82,7 @@ PowerForm combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], in
     return g;
 }
 
-void combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows,
-             PowerForm& g) {
+void combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows, PowerForm& g) {
     assert(rows >= 1 && rows <= PowerForm::kMaxDim);
     g.p = f.p;
     g.q = f.q;
