@@ -46,7 +46,8 @@ TEST_CASE("Certified Newton agrees with the covering method", "[pixel_solve]") {
         ParamBox box;
         if (n % 3) {
             const double s0 = S(rng), t0 = S(rng), w = 0.05 + 0.5 * S(rng);
-            box = {Interval(s0 * (1 - w), s0 * (1 - w) + w), Interval(t0 * (1 - w), t0 * (1 - w) + w)};
+            box = {Interval(s0 * (1 - w), s0 * (1 - w) + w),
+                   Interval(t0 * (1 - w), t0 * (1 - w) + w)};
         }
         ClusterSystem sys;
         cluster_system(pp.forms, Interval(a), Interval(b), sys);
