@@ -10,8 +10,10 @@
 //          a patch whose intervals become empty is unmarked;
 //  step 5: B shrinks to the hull of the projections of the marked patches; the
 //          rest of B is background, certainly;
-//  step 6: a one-pixel B is solved by Hansen-Sengupta with the covering method
-//          on every marked patch (remark 1: the nearest intersection);
+//  step 6: a one-pixel B is solved on every marked patch, nearest first
+//          (remark 1), by certified Newton with the covering method as the
+//          fallback (pixel_solve.h); so is every pixel of a B of at most
+//          RenderOptions::pixel_subscreen pixels, without a cluster attempt;
 //  step 7: otherwise, if the nearest marked patch is q-separated from all the
 //          others (a nearest q-connected set, Theorem 10 remark 4), and the
 //          Hansen-Sengupta operator over the whole cluster maps its box into

@@ -41,13 +41,21 @@ TEST_CASE("Certified Newton agrees with the covering method", "[pixel_solve]") {
     int hits = 0, misses = 0;
     for (int n = 0; n < 400; ++n) {
         const ProjectedPatch pp = dome(rng, n % 2 ? 0.8 : 3.0);
-        const double a = U(rng), b = U(rng);
         // A random sub-box of [0,1]^2, sometimes the whole square.
         ParamBox box;
         if (n % 3) {
             const double s0 = S(rng), t0 = S(rng), w = 0.05 + 0.5 * S(rng);
             box = {Interval(s0 * (1 - w), s0 * (1 - w) + w),
                    Interval(t0 * (1 - w), t0 * (1 - w) + w)};
+        }
+        // Half the rays aimed at a point of the patch inside the box, half at random.
+        double a = U(rng), b = U(rng);
+        if (n % 4 < 2) {
+            const double s = box.s.lo() + S(rng) * (box.s.hi() - box.s.lo());
+            const double t = box.t.lo() + S(rng) * (box.t.hi() - box.t.lo());
+            const Vec3 P = evaluate(pp.patch, s, t).point;
+            a = P.x / P.z;
+            b = P.y / P.z;
         }
         ClusterSystem sys;
         cluster_system(pp.forms, Interval(a), Interval(b), sys);
