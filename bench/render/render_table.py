@@ -12,6 +12,10 @@ scaling = [("320x240", 16), ("640x480", 16), ("1280x1024", 16)]
 # the tables above are regenerated, this section is not.
 ASSESSMENT = """## Issue 10: before and after, and where the goals stand
 
+The figures of 2026-12-01 come from a reduced run for lack of time on a loaded machine
+(`REPS=1`, all scenes at `CONFIGS=640x480:16`, the teapot also at `1280x1024:256 320x240:16
+1280x1024:16`); `bench/render/bench_render.sh` without settings does the full run.
+
 Before (landed main, same machine, `--threads 0`): teapot 640x480 x 16 INTRACY 3.98 s,
 TRAY 0.13 s (ratio 0.03); 1280x1024 x 256 22.0 s against 0.40 s (0.02); scenes 1, 2, 2a, 3
 at 640x480 x 16: ratios 0.10, 0.11, 0.11, 0.06. After, in the table above (one run each,
