@@ -37,7 +37,20 @@ nlohmann::json stats_json(const RenderStats& st) {
             {"primary_rays", st.primary_rays},
             {"background_pixels", st.background_pixels},
             {"secondary_clusters", st.secondary_clusters},
-            {"shadowed_clusters", st.shadowed_clusters}};
+            {"shadowed_clusters", st.shadowed_clusters},
+            {"range_enclosures", st.range_enclosures},
+            {"enclosures_per_pixel", st.enclosures_per_pixel()},
+            {"hs_steps", st.hs_steps},
+            {"marks_narrowed", st.marks_narrowed},
+            {"mark_bisections", st.mark_bisections},
+            {"pixel_patch_solves", st.pixel_patch_solves},
+            {"pixel_newton_certified", st.pixel_newton_certified},
+            {"step_seconds",
+             {{"narrowing", st.narrow_seconds},
+              {"certificate", st.certify_seconds},
+              {"shade", st.shade_seconds},
+              {"secondary_clusters", st.secondary_seconds},
+              {"single_pixels", st.single_pixel_seconds}}}};
 }
 
 void add_render(CLI::App& app, Action& action) {

@@ -10,8 +10,10 @@
 //          a patch whose intervals become empty is unmarked;
 //  step 5: B shrinks to the hull of the projections of the marked patches; the
 //          rest of B is background, certainly;
-//  step 6: a one-pixel B is solved by Hansen-Sengupta with the covering method
-//          on every marked patch (remark 1: the nearest intersection);
+//  step 6: a one-pixel B is solved on every marked patch, nearest first
+//          (remark 1), by certified Newton with the covering method as the
+//          fallback (pixel_solve.h); so is every pixel of a B of at most
+//          RenderOptions::pixel_subscreen pixels, without a cluster attempt;
 //  step 7: otherwise, if the nearest marked patch is q-separated from all the
 //          others (a nearest q-connected set, Theorem 10 remark 4), and the
 //          Hansen-Sengupta operator over the whole cluster maps its box into
@@ -28,7 +30,9 @@
 // proof: a pixel painted from a cluster is never wrong by more than one level
 // (the enclosure holds the true intensity), and background is never painted
 // where a patch is hit.
+#include <seamless/render/mark.h>
 #include <seamless/render/parallel.h>
+#include <seamless/render/pixel_solve.h>
 #include <seamless/render/primary_cluster.h>
 #include <seamless/render/projection.h>
 #include <seamless/render/ray_cluster.h>
@@ -41,15 +45,32 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <memory>
+#include <optional>
 
 namespace seamless {
 namespace {
 
-struct Mark {
-    int patch;
-    ParamBox box;
-    IVec3 hull; // camera-space enclosure of the patch over box (or a superset)
+// CPU seconds of the calling thread: on a shared machine a step's own cost,
+// not the time other jobs held the core.
+double thread_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Adds the thread's CPU seconds from construction to destruction to `acc` (--stats).
+class StepClock {
+  public:
+    explicit StepClock(double& acc) : acc_(acc), t0_(thread_seconds()) {}
+    StepClock(const StepClock&) = delete;
+    StepClock& operator=(const StepClock&) = delete;
+    ~StepClock() { acc_ += thread_seconds() - t0_; }
+
+  private:
+    double& acc_;
+    double t0_;
 };
 
 struct SubScreen {
@@ -57,72 +78,12 @@ struct SubScreen {
     size_t offset, count; // its marks in the arena
 };
 
-struct Hit {
-    int patch = -1;
-    double s = 0, t = 0, q = 0;
-};
-
-// Nearest intersection of one primary ray with the marked patches (step 6,
-// remark 1), each searched in its box with Hansen-Sengupta and the covering method.
-Hit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                RenderStats& st, std::vector<RayPatchHit>& hits,
-                std::vector<std::pair<double, int>>& order) {
-    Hit best;
-    double best_q = std::numeric_limits<double>::infinity(); // upper bound of the nearest depth
-    const Ray ray = ProjectedScene::primary_ray(a, b);
-    ++st.primary_rays;
-    // Nearest first; once a hit is found, marks that lie entirely beyond it are
-    // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
-    order.clear();
-    for (size_t k = 0; k < n; ++k) order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
-    std::sort(order.begin(), order.end());
-    for (const auto& [zlo, k] : order) {
-        if (zlo > best_q) break;
-        const ProjectedPatch& pp = ps.patches[marks[k].patch];
-        hits.clear();
-        RayPatchStats rs;
-        intersect(pp.forms, ray, marks[k].box, hits, RayPatchOptions{}, &rs);
-        ++st.pixel_patch_solves;
-        st.hs_iterations += rs.iterations;
-        auto h = nearest_hit(hits, 0.0);
-        if (!h || !(h->q.hi() > 0)) continue;
-        if (best.patch < 0 || h->q.mid() < best.q)
-            best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid()};
-        best_q = std::min(best_q, h->q.hi());
-    }
-    return best;
-}
-
-// A corner ray of a certified cluster hits the patch exactly once in `box`.
-// Its intensity only steers the bilinear form of step 9, whose levels are then
-// clamped to the certified enclosure, so plain Newton in doubles suffices here;
-// it falls back to Hansen-Sengupta (remark 2) when it does not converge.
-bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,
-                   double& t) {
-    s = box.s.mid();
-    t = box.t.mid();
-    for (int it = 0; it < 12; ++it) {
-        const SurfacePoint p = evaluate(b, s, t);
-        const double f0 = p.point.x - a * p.point.z, f1 = p.point.y - bb * p.point.z;
-        const double j00 = p.du.x - a * p.du.z, j01 = p.dv.x - a * p.dv.z;
-        const double j10 = p.du.y - bb * p.du.z, j11 = p.dv.y - bb * p.dv.z;
-        const double det = j00 * j11 - j01 * j10;
-        if (!(std::abs(det) > 0)) return false;
-        const double ds = (f0 * j11 - f1 * j01) / det, dt = (j00 * f1 - j10 * f0) / det;
-        s -= ds;
-        t -= dt;
-        if (!box.s.contains(s) || !box.t.contains(t)) return false;
-        if (std::abs(ds) + std::abs(dt) < 1e-12) return true;
-    }
-    return false;
-}
-
 // SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
 // secondary rays in play (a triangle scene), shadows, reflection and refraction
 // are traced against the triangles (section 7, SHADE); the local illumination
 // model is the same either way.
 std::array<double, 3> shade_hit(const ProjectedScene& ps, const Scene& scene,
-                                const TriangleScene* ts, const Hit& h) {
+                                const TriangleScene* ts, const PixelHit& h) {
     Vec3 P, N;
     const ProjectedPatch& pp = ps.patches[h.patch];
     surface_frame(pp.patch, h.s, h.t, P, N);
@@ -163,6 +124,7 @@ class PartRenderer {
         for (size_t k = 0; k < ps_.patches.size(); ++k)
             arena_.push_back({static_cast<int>(k), ParamBox{}, ps_.patches[k].hull});
         stack_.push_back({x0, y0, x1, y1, 0, arena_.size()});
+        const long long enclosures0 = range_enclosure_count();
         while (!stack_.empty()) {
             SubScreen B = stack_.back();
             stack_.pop_back();
@@ -170,6 +132,8 @@ class PartRenderer {
             ++st.subscreens;
             step(B, st);
         }
+        st.range_enclosures += range_enclosure_count() - enclosures0;
+        st.shade_seconds -= st.secondary_seconds; // reported apart
     }
 
   private:
@@ -192,11 +156,18 @@ class PartRenderer {
 
     void step(SubScreen B, RenderStats& st) {
         const bool thin = B.x0 == B.x1 && B.y0 == B.y1;
+        const long long area = static_cast<long long>(B.x1 - B.x0 + 1) * (B.y1 - B.y0 + 1);
+        if (!thin && area <= opt_.pixel_subscreen) {
+            paint_pixels(B, st);
+            return;
+        }
         const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
         // Step 3: hull comparison and Theorem 10 for every marked patch.
         const size_t first = arena_.size();
         const double pitch_a = 2.0 * ps_.frame.tan_half * ps_.frame.aspect / ps_.frame.width;
         const double pitch_b = 2.0 * ps_.frame.tan_half / ps_.frame.height;
+        std::optional<StepClock> narrowing;
+        if (!thin) narrowing.emplace(st.narrow_seconds);
         for (size_t k = B.offset; k < B.offset + B.count; ++k) {
             // Covering method (section 5, remark 2 after Theorem 10): where Theorem 10
             // cannot narrow a box (its derivative hull holds 0, near a silhouette) and
@@ -217,6 +188,7 @@ class PartRenderer {
                     continue;
                 }
                 cluster_system(pp.forms, a, b, sys_);
+                ++st.marks_narrowed;
                 if (!narrow(sys_, m.box)) continue;
                 const IVec3 Q = enclose_point(pp.forms, m.box);
                 m.hull = Q;
@@ -225,6 +197,7 @@ class PartRenderer {
                                   (Q[1] / Q[2]).width() > 2 * (b.width() + pitch_b);
                 if (wide && budget > 0 && std::max(m.box.s.width(), m.box.t.width()) > 1e-9) {
                     --budget;
+                    ++st.mark_bisections;
                     Mark lo = m, hi = m;
                     if (m.box.s.width() >= m.box.t.width()) {
                         const double sm = m.box.s.mid();
@@ -250,6 +223,7 @@ class PartRenderer {
                 for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i], Q});
             }
         }
+        narrowing.reset();
         const size_t nmarks = arena_.size() - first;
         if (nmarks == 0) { // step 4: nothing marked
             paint_background(B.x0, B.y0, B.x1, B.y1, st);
@@ -292,12 +266,41 @@ class PartRenderer {
         for (int i = nk - 1; i >= 0; --i) stack_.push_back(kids[i]);
     }
 
+    // A small B is solved pixel by pixel from its marks (those of its parent),
+    // without a cluster attempt: a few certified Newton solves cost less than
+    // narrowing, certificate and SHADE for a cluster of a handful of pixels.
+    void paint_pixels(const SubScreen& B, RenderStats& st) {
+        for (int y = B.y0; y <= B.y1; ++y)
+            for (int x = B.x0; x <= B.x1; ++x) {
+                const double a = ps_.frame.screen_a(x + 0.5), b = ps_.frame.screen_b(y + 0.5);
+                const size_t first = arena_.size();
+                for (size_t k = B.offset; k < B.offset + B.count; ++k) {
+                    const Mark m = arena_[k]; // a copy: push_back may move the arena
+                    const IVec3& P = m.hull;
+                    if (!(P[2].hi() > 0)) continue; // behind the eye
+                    if (!(P[0] - Interval(a) * P[2]).contains(0.0) ||
+                        !(P[1] - Interval(b) * P[2]).contains(0.0))
+                        continue;
+                    arena_.push_back(m);
+                }
+                const SubScreen pixel{x, y, x, y, 0, 0};
+                if (arena_.size() == first) {
+                    paint_background(x, y, x, y, st);
+                    count(pixel, st);
+                } else {
+                    paint_single_pixel(pixel, first, arena_.size() - first, st);
+                }
+                arena_.resize(first);
+            }
+    }
+
     // Step 6: a one-pixel B, solved by Hansen-Sengupta on its marked patches.
     void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
+        const StepClock clock(st.single_pixel_seconds);
         ++st.single_pixels;
-        const Hit h =
+        const PixelHit h =
             solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
-                        &arena_[first], n, st, hits_, order_);
+                        &arena_[first], n, pixel_, st);
         if (h.patch < 0) {
             paint_background(B.x0, B.y0, B.x0, B.y0, st);
         } else {
@@ -578,16 +581,20 @@ class PartRenderer {
                 box.t = hull(box.t, arena_[k].box.t);
             }
         const ProjectedPatch& pp = ps_.patches[best_patch];
-        const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
-        cluster_system(pp.forms, a, b, sys_);
-        if (!certify_cluster(sys_, box)) return false;
-        const Interval qbest = enclose_point(pp.forms, box)[2];
-        if (!(qbest.lo() > 0)) return false;
-        for (size_t k = first; k < first + n; ++k) {
-            if (arena_[k].patch == best_patch) continue;
-            const Interval q = arena_[k].hull[2];
-            if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
+        {
+            const StepClock clock(st.certify_seconds);
+            const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
+            cluster_system(pp.forms, a, b, sys_);
+            if (!certify_cluster(sys_, box, &st.hs_steps)) return false;
+            const Interval qbest = enclose_point(pp.forms, box)[2];
+            if (!(qbest.lo() > 0)) return false;
+            for (size_t k = first; k < first + n; ++k) {
+                if (arena_[k].patch == best_patch) continue;
+                const Interval q = arena_[k].hull[2];
+                if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
+            }
         }
+        const StepClock shading(st.shade_seconds);
         const Mark m{best_patch, box, {}};
         // Step 8: SHADE over the hulls of the intersection points and normals.
         const PatchEnclosure e = enclose(pp.forms, box);
@@ -618,12 +625,14 @@ class PartRenderer {
             std::array<Interval, 3> more;
             if (mat.reflect > 0) {
                 IVec<3> R;
+                const StepClock clock(st.secondary_seconds);
                 if (!reflect_directions(D, Nw, R) || !secondary_cluster(Pw, R, m.patch, 1, more))
                     return false;
                 for (int c = 0; c < 3; ++c) I[c] += Interval(mat.reflect) * more[c];
             }
             if (mat.transmit > 0) {
                 IVec<3> T;
+                const StepClock clock(st.secondary_seconds);
                 if (!refract_directions(D, Nw, mat.ior, T) ||
                     !secondary_cluster(Pw, T, m.patch, 1, more))
                     return false;
@@ -661,11 +670,10 @@ class PartRenderer {
             const double ca = ps_.frame.screen_a(cx[k] + 0.5), cb = ps_.frame.screen_b(cy[k] + 0.5);
             if (newton_corner(pp.patch, ca, cb, box, cs, ct)) {
                 ++st.primary_rays;
-                corner[k] = shade_hit(ps_, scene_, ts_, Hit{m.patch, cs, ct, 0});
+                corner[k] = shade_hit(ps_, scene_, ts_, PixelHit{m.patch, cs, ct, 0});
                 continue;
             }
-            const Hit h = solve_pixel(ps_, ps_.frame.screen_a(cx[k] + 0.5),
-                                      ps_.frame.screen_b(cy[k] + 0.5), &only, 1, st, hits_, order_);
+            const PixelHit h = solve_pixel(ps_, ca, cb, &only, 1, pixel_, st);
             if (h.patch < 0) {
                 for (int c = 0; c < 3; ++c) corner[k][c] = I[c].mid();
             } else {
@@ -702,8 +710,7 @@ class PartRenderer {
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     std::vector<Mark> arena_, work_;
     std::vector<SubScreen> stack_;
-    std::vector<RayPatchHit> hits_;
-    std::vector<std::pair<double, int>> order_;
+    PixelScratch pixel_;
     Scene lighting_; // scratch: ambient and the lights that reach a cluster, camera coordinates
     // the same for secondary clusters' hits, one per depth, world coordinates
     std::vector<Scene> lighting_depth_;

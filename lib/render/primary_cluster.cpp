@@ -10,9 +10,9 @@ namespace seamless {
 void cluster_system(const PatchForms& f, Interval a, Interval b, ClusterSystem& out) {
     const Interval m[2][PowerForm::kMaxDim] = {{Interval(1.0), Interval(0.0), -a, Interval(0.0)},
                                                {Interval(0.0), Interval(1.0), -b, Interval(0.0)}};
-    out.G = combine(f.X, m, 2);
-    out.Gs = combine(f.Xs, m, 2);
-    out.Gt = combine(f.Xt, m, 2);
+    combine(f.X, m, 2, out.G);
+    combine(f.Xs, m, 2, out.Gs);
+    combine(f.Xt, m, 2, out.Gt);
 }
 
 int solve_pieces(Interval n, Interval d, Interval X, double x0, Interval out[2]) {
@@ -99,7 +99,7 @@ int separate(const ClusterSystem& sys, const ParamBox& box, ParamBox out[2]) {
     return 1;
 }
 
-bool certify_cluster(const ClusterSystem& sys, ParamBox& box) {
+bool certify_cluster(const ClusterSystem& sys, ParamBox& box, long long* steps) {
     const Interval unit(0.0, 1.0);
     auto inflate = [&](Interval x) {
         const double d = 0.1 * x.width() + 1e-12;
@@ -119,6 +119,7 @@ bool certify_cluster(const ClusterSystem& sys, ParamBox& box) {
         const double cs = x[0].mid(), ct = x[1].mid();
         for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, ParamBox{Interval(cs), Interval(ct)});
         const HansenSenguptaStep<2> step = hansen_sengupta<2>(A, F, x, RVec<2>{cs, ct});
+        if (steps) ++*steps;
         if (step.box.is_empty()) return false;
         if (step.unique) {
             box = {step.box[0], step.box[1]};

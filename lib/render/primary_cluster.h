@@ -32,6 +32,7 @@ int separate(const ClusterSystem& sys, const ParamBox& box, ParamBox out[2]);
 
 // Theorem 6 iii over the whole cluster: true when every ray of the cluster has
 // exactly one zero of G in `box`, which is then contracted around them.
-bool certify_cluster(const ClusterSystem& sys, ParamBox& box);
+// Adds the Hansen-Sengupta steps taken to *steps when given.
+bool certify_cluster(const ClusterSystem& sys, ParamBox& box, long long* steps = nullptr);
 
 } // namespace seamless

@@ -17,11 +17,21 @@ void RenderStats::merge(const RenderStats& o) {
     subscreens += o.subscreens;
     single_pixels += o.single_pixels;
     pixel_patch_solves += o.pixel_patch_solves;
+    pixel_newton_certified += o.pixel_newton_certified;
     hs_iterations += o.hs_iterations;
     primary_rays += o.primary_rays;
     background_pixels += o.background_pixels;
     secondary_clusters += o.secondary_clusters;
     shadowed_clusters += o.shadowed_clusters;
+    range_enclosures += o.range_enclosures;
+    hs_steps += o.hs_steps;
+    marks_narrowed += o.marks_narrowed;
+    mark_bisections += o.mark_bisections;
+    narrow_seconds += o.narrow_seconds;
+    certify_seconds += o.certify_seconds;
+    shade_seconds += o.shade_seconds;
+    secondary_seconds += o.secondary_seconds;
+    single_pixel_seconds += o.single_pixel_seconds;
 }
 
 Image render(const Scene& scene, const RenderOptions& opt, RenderStats* stats) {

@@ -23,6 +23,10 @@ struct RenderOptions {
     int threads = 0;           // 0: every core; 1: sequential. The image is the same either way.
     bool dither = true;        // step 9 with remark 2; false: split until one level per channel
     int prepartition = 8;      // remark 4: the screen is prepartitioned into 8 x 8 parts
+    // INTRACY: a sub-screen of at most this many pixels is solved pixel by
+    // pixel (certified Newton) without a cluster attempt; 1: never. 16 was the
+    // fastest of 1, 4, 16, 64 on the teapot at 320x240 (docs/results/render.md).
+    int pixel_subscreen = 16;
     // Called with the fraction done (0..1), from any thread, at most a few hundred times.
     std::function<void(double)> progress;
 };
@@ -36,14 +40,26 @@ struct RenderStats {
     long long subscreens = 0;         // sub-screens taken from the stacks
     long long single_pixels = 0;      // pixels solved as a one-pixel sub-screen
     long long pixel_patch_solves = 0; // single-ray Hansen-Sengupta solves (pixel x patch)
-    long long hs_iterations = 0;      // Hansen-Sengupta steps in those solves
-    long long primary_rays = 0;       // single rays traced (pixels and corner rays)
+    long long pixel_newton_certified =
+        0;                       // of those, decided without the covering method (pixel_solve.h)
+    long long hs_iterations = 0; // Hansen-Sengupta steps in those solves
+    long long primary_rays = 0;  // single rays traced (pixels and corner rays)
     long long background_pixels = 0;
     // INTRACY: mirror or glass sub-screens painted with certified reflected or
     // refracted clusters (SHADE steps 3.3-3.4 and 4), and sub-screens painted
     // with a light certainly blocked for the whole cluster (step 2).
     long long secondary_clusters = 0, shadowed_clusters = 0;
     long long patches = 0, triangles = 0;
+    // INTRACY's cost: power-form range enclosures (enclosure.h, range_enclosure_count),
+    // Hansen-Sengupta steps of every kind (pixel solves and cluster certificates),
+    // and thread CPU seconds per step, summed over the parts (so over threads): step 3's
+    // narrowing, step 7's certificate, step 8's SHADE (without its secondary
+    // clusters), SHADE steps 3-4's secondary clusters, and step 6's single pixels.
+    long long range_enclosures = 0, hs_steps = 0;
+    long long marks_narrowed = 0,
+              mark_bisections = 0; // step 3: Theorem 10 calls, covering bisections
+    double narrow_seconds = 0, certify_seconds = 0, shade_seconds = 0, secondary_seconds = 0,
+           single_pixel_seconds = 0;
 
     double single_pixel_fraction() const {
         return width > 0 && height > 0
@@ -55,6 +71,11 @@ struct RenderStats {
     }
     double patches_per_pixel() const {
         return single_pixels ? static_cast<double>(pixel_patch_solves) / single_pixels : 0;
+    }
+    double enclosures_per_pixel() const {
+        return width > 0 && height > 0
+                   ? static_cast<double>(range_enclosures) / (static_cast<double>(width) * height)
+                   : 0;
     }
     void merge(const RenderStats& o);
 };

@@ -10,6 +10,8 @@ namespace {
 
 constexpr int K = PowerForm::kMaxOrder;
 
+thread_local long long range_enclosures = 0;
+
 // Horner with interval coefficients.
 Interval horner1(const Interval* c, int n, Interval u) {
     Interval r = c[n];
@@ -89,7 +91,12 @@ Interval polynomial_range(const Interval* c, int n, Interval u) {
     return {rl.lo(), rh.hi()};
 }
 
+long long range_enclosure_count() {
+    return range_enclosures;
+}
+
 Interval horner(const PowerForm& f, int c, ParamBox box) {
+    ++range_enclosures;
     Interval b[K], inner[K];
     // Section 5: sum_i b_i(t) s^i if [t] is narrower, else sum_j c_j(s) t^j.
     if (box.t.rad() <= box.s.rad()) {

@@ -53,6 +53,10 @@ Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, i
 IVec3 enclose_point(const PatchForms& f, ParamBox box);
 PatchEnclosure enclose(const PatchForms& f, ParamBox box);
 
+// Range enclosures (horner calls) made on this thread so far: a statistic
+// for the renderer's --stats (differences around a piece of work).
+long long range_enclosure_count();
+
 // Cross product of interval vectors (the normal of section 5).
 IVec3 cross(const IVec3& a, const IVec3& b);
 

@@ -77,19 +77,25 @@ PowerForm derivative_t(const PowerForm& f) {
 }
 
 PowerForm combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows) {
-    assert(rows >= 1 && rows <= PowerForm::kMaxDim);
     PowerForm g;
+    combine(f, m, rows, g);
+    return g;
+}
+
+void combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows, PowerForm& g) {
+    assert(rows >= 1 && rows <= PowerForm::kMaxDim);
     g.p = f.p;
     g.q = f.q;
     g.dim = rows;
     for (int k = 0; k < rows; ++k)
         for (int i = 0; i <= f.p; ++i)
             for (int j = 0; j <= f.q; ++j) {
+                // Exact zeros in m (the primary-ray system's 0 and 1) cost nothing.
                 Interval s(0.0);
-                for (int c = 0; c < f.dim; ++c) s += m[k][c] * f.at(c, i, j);
+                for (int c = 0; c < f.dim; ++c)
+                    if (!(m[k][c].lo() == 0 && m[k][c].hi() == 0)) s += m[k][c] * f.at(c, i, j);
                 g.at(k, i, j) = s;
             }
-    return g;
 }
 
 Interval evaluate(const PowerForm& f, int c, double s, double t) {

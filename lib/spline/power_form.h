@@ -33,6 +33,9 @@ PowerForm derivative_t(const PowerForm& f);
 // Linear combination g_k = sum_c m[k][c] f_c, k < rows, of the coordinates of f
 // (e.g. the ray equations e.X - (e.O) W of ray_patch.h). Coefficients are intervals.
 PowerForm combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows);
+// The same into `out`, writing only the coefficients of f's degrees: nothing
+// zeroed or copied (out's other coefficients are never read for those degrees).
+void combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows, PowerForm& out);
 
 // Enclosure of coordinate c at a point (Horner, interval arithmetic).
 Interval evaluate(const PowerForm& f, int c, double s, double t);

@@ -113,6 +113,7 @@ TEST_CASE("A glass plate is painted by refracted clusters", "[mirror]") {
     RenderOptions big;
     big.width = 160;
     big.height = 120;
+    big.pixel_subscreen = 1; // the cluster path itself, not the small-sub-screen shortcut
     render(scene, big, &dithered);
     CHECK(dithered.secondary_clusters > 0);
 }
@@ -137,6 +138,7 @@ TEST_CASE("A mirror facing a wall is painted by reflected clusters", "[mirror]")
     RenderOptions big;
     big.width = 160;
     big.height = 120;
+    big.pixel_subscreen = 1; // the cluster path itself, not the small-sub-screen shortcut
     render(scene, big, &dithered);
     CHECK(dithered.secondary_clusters > 0);
     // The mirror's centre shows the red wall.

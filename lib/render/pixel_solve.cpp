@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/render/pixel_solve.h>
+
+#include <seamless/interval/hansen_sengupta.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace seamless {
+namespace {
+
+// One Newton step for X - aZ = 0, Y - bZ = 0 at (s, t) in doubles.
+// false where the Jacobian is singular.
+bool newton_step(const BezierPatch& p, double a, double b, double& s, double& t, double& step) {
+    const SurfacePoint sp = evaluate(p, s, t);
+    const double f0 = sp.point.x - a * sp.point.z, f1 = sp.point.y - b * sp.point.z;
+    const double j00 = sp.du.x - a * sp.du.z, j01 = sp.dv.x - a * sp.dv.z;
+    const double j10 = sp.du.y - b * sp.du.z, j11 = sp.dv.y - b * sp.dv.z;
+    const double det = j00 * j11 - j01 * j10;
+    if (!(std::abs(det) > 0)) return false;
+    const double ds = (f0 * j11 - f1 * j01) / det, dt = (j00 * f1 - j10 * f0) / det;
+    s -= ds;
+    t -= dt;
+    step = std::abs(ds) + std::abs(dt);
+    return std::isfinite(step);
+}
+
+// The interval Jacobian of G over a box.
+IMat<2> jacobian(const ClusterSystem& sys, const ParamBox& box) {
+    IMat<2> A;
+    for (int k = 0; k < 2; ++k) {
+        A(k, 0) = horner(sys.Gs, k, box);
+        A(k, 1) = horner(sys.Gt, k, box);
+    }
+    return A;
+}
+
+} // namespace
+
+NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
+                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st) {
+    constexpr NewtonOutcome undecided = NewtonOutcome::undecided;
+    // One Hansen-Sengupta step over the whole box: empty means no zero there.
+    const IMat<2> A = jacobian(sys, box);
+    const IVec<2> X{{box.s, box.t}};
+    const RVec<2> c = mid(X);
+    IVec<2> Fc;
+    for (int k = 0; k < 2; ++k) Fc[k] = horner(sys.G, k, ParamBox{Interval(c[0]), Interval(c[1])});
+    const HansenSenguptaStep<2> whole = hansen_sengupta<2>(A, Fc, X, c);
+    ++st.hs_steps;
+    if (whole.box.is_empty()) return NewtonOutcome::miss;
+    // At most one zero in box: ||I - C A||_inf < 1 makes every matrix of A regular.
+    RMat<2> C;
+    if (!invert<2>(mid(A), C)) return undecided;
+    const IMat<2> CA = C * A;
+    for (int i = 0; i < 2; ++i) {
+        double row = 0;
+        for (int k = 0; k < 2; ++k) row += (Interval(i == k ? 1.0 : 0.0) - CA(i, k)).mag();
+        if (!(next_up(row) < 1)) return undecided;
+    }
+    // Newton in doubles from the contracted box's centre, kept inside the box.
+    double s = whole.box[0].mid(), t = whole.box[1].mid(), step = 1;
+    int it = 0;
+    for (; it < 16 && step > 1e-13; ++it) {
+        if (!newton_step(pp.patch, a, b, s, t, step)) return undecided;
+        s = std::clamp(s, box.s.lo(), box.s.hi());
+        t = std::clamp(t, box.t.lo(), box.t.hi());
+    }
+    if (step > 1e-9) return undecided;
+    // Epsilon inflation, then Theorem 6 iii on the small box Y: one zero in Y,
+    // so the only zero in box.
+    const double e = 1e-9;
+    const IVec<2> Y{{intersect(Interval(next_down(s - e), next_up(s + e)), box.s),
+                     intersect(Interval(next_down(t - e), next_up(t + e)), box.t)}};
+    const ParamBox Yb{Y[0], Y[1]};
+    IVec<2> F;
+    const ParamBox centre{Interval(s), Interval(t)};
+    for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, centre);
+    // A over the box bounds G' over Y too; only where it is too wide to
+    // certify is the Jacobian enclosed over Y itself.
+    HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
+    ++st.hs_steps;
+    if (!hs.unique) {
+        hs = hansen_sengupta<2>(jacobian(sys, Yb), F, Y, RVec<2>{s, t});
+        ++st.hs_steps;
+    }
+    if (!hs.unique) return undecided;
+    hit = {hs.box[0], hs.box[1]};
+    // Depth: camera z = X_2 / W over the hit's box.
+    Interval Z = horner(pp.forms.X, 2, hit);
+    if (pp.forms.rational) Z = Z / intersect(horner(pp.forms.X, 3, hit), pp.forms.w_hull);
+    q = Z;
+    return NewtonOutcome::hit;
+}
+
+PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
+                     PixelScratch& scratch, RenderStats& st) {
+    PixelHit best;
+    double best_q = std::numeric_limits<double>::infinity(); // upper bound of the nearest depth
+    const Ray ray = ProjectedScene::primary_ray(a, b);
+    ++st.primary_rays;
+    // Nearest first; once a hit is found, marks that lie entirely beyond it are
+    // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
+    auto& order = scratch.order;
+    order.clear();
+    for (size_t k = 0; k < n; ++k) order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
+    std::sort(order.begin(), order.end());
+    for (const auto& [zlo, k] : order) {
+        if (zlo > best_q) break;
+        const ProjectedPatch& pp = ps.patches[marks[k].patch];
+        ++st.pixel_patch_solves;
+        // Certified Newton on the mark's box; where undecided, on its halves
+        // (a covering method with the cheap test), and the full covering
+        // method of ray_patch.h only on boxes still undecided at depth kDepth.
+        constexpr int kDepth = 6;
+        cluster_system(pp.forms, Interval(a), Interval(b), scratch.sys);
+        auto& todo = scratch.boxes;
+        todo.clear();
+        todo.push_back({marks[k].box, 0});
+        while (!todo.empty()) {
+            const auto [box, depth] = todo.back();
+            todo.pop_back();
+            ParamBox hb;
+            Interval q;
+            const NewtonOutcome nc = newton_certified(pp, a, b, box, scratch.sys, hb, q, st);
+            if (nc == NewtonOutcome::miss) {
+                ++st.pixel_newton_certified;
+                continue;
+            }
+            if (nc == NewtonOutcome::hit) {
+                ++st.pixel_newton_certified;
+                if (!(q.hi() > 0)) continue;
+                if (best.patch < 0 || q.mid() < best.q)
+                    best = {marks[k].patch, hb.s.mid(), hb.t.mid(), q.mid()};
+                best_q = std::min(best_q, q.hi());
+                continue;
+            }
+            if (depth < kDepth) {
+                ParamBox lo = box, hi = box;
+                if (box.s.width() >= box.t.width()) {
+                    const double m = box.s.mid();
+                    lo.s = {box.s.lo(), m};
+                    hi.s = {m, box.s.hi()};
+                } else {
+                    const double m = box.t.mid();
+                    lo.t = {box.t.lo(), m};
+                    hi.t = {m, box.t.hi()};
+                }
+                todo.push_back({hi, depth + 1});
+                todo.push_back({lo, depth + 1});
+                continue;
+            }
+            scratch.hits.clear();
+            RayPatchStats rs;
+            intersect(pp.forms, ray, box, scratch.hits, RayPatchOptions{}, &rs);
+            st.hs_iterations += rs.iterations;
+            st.hs_steps += rs.iterations;
+            auto h = nearest_hit(scratch.hits, 0.0);
+            if (!h || !(h->q.hi() > 0)) continue;
+            if (best.patch < 0 || h->q.mid() < best.q)
+                best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid()};
+            best_q = std::min(best_q, h->q.hi());
+        }
+    }
+    return best;
+}
+
+bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,
+                   double& t) {
+    s = box.s.mid();
+    t = box.t.mid();
+    for (int it = 0; it < 12; ++it) {
+        double step = 0;
+        if (!newton_step(b, a, bb, s, t, step)) return false;
+        if (!box.s.contains(s) || !box.t.contains(t)) return false;
+        if (step < 1e-12) return true;
+    }
+    return false;
+}
+
+} // namespace seamless

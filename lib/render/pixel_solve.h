@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// Single primary rays against marked patches: INTRACY step 6 (a one-pixel
+// sub-screen, remark 1: the nearest intersection) and the corner rays of step
+// 9 (remark 2).
+//
+// A ray first tries Newton's method in doubles from the mark's box, certified
+// afterwards: when the interval Jacobian A of G = (X - aZ, Y - bZ) over the
+// whole box satisfies ||I - C A|| < 1 (C = mid(A)^-1), every matrix of A is
+// regular and G is one-to-one on the box (G(x) - G(y) = J (x - y) with J in A,
+// row by row by the mean value theorem), so the ray meets the patch at most
+// once there; one Hansen-Sengupta step on a small box around Newton's result
+// (epsilon inflation, as kv's kraw-approx) then proves that it meets it once,
+// inside the step's box (Theorem 6 iii). Only where this fails does the ray
+// take the full covering method of ray_patch.h.
+#pragma once
+
+#include <seamless/render/mark.h>
+#include <seamless/render/primary_cluster.h>
+#include <seamless/render/projection.h>
+#include <seamless/render/render.h>
+
+#include <utility>
+#include <vector>
+
+namespace seamless {
+
+struct PixelHit {
+    int patch = -1; // -1: the ray certainly misses every marked patch
+    double s = 0, t = 0, q = 0;
+};
+
+// Scratch space reused from ray to ray (nothing allocated per ray once grown).
+struct PixelScratch {
+    ClusterSystem sys;
+    std::vector<RayPatchHit> hits;
+    std::vector<std::pair<double, int>> order;
+    std::vector<std::pair<ParamBox, int>> boxes; // boxes still to solve, with their depth
+};
+
+// The certified Newton solve above for the ray through screen point (a, b) and
+// patch pp in `box`; sys: cluster_system(pp.forms, a, b). hit: exactly one hit in box, in `hit`
+// (local (s, t)), at depth `q` (camera z, enclosed); miss: certainly none in box (a Hansen-Sengupta
+// step over the box is empty, Theorem 6 ii); undecided: take the covering method.
+enum class NewtonOutcome { hit, miss, undecided };
+NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
+                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st);
+
+// Step 6 with remark 1: the nearest intersection of the ray through (a, b)
+// with the marked patches, nearest marks first; marks beyond a found hit are
+// dropped (section 5, remark 2 after Theorem 10).
+PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
+                     PixelScratch& scratch, RenderStats& st);
+
+// A corner ray of a certified cluster hits the patch exactly once in `box`;
+// its intensity only steers the bilinear form of step 9, whose levels are
+// clamped to the certified enclosure, so plain Newton in doubles suffices.
+// false when it does not converge inside the box.
+bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,
+                   double& t);
+
+} // namespace seamless

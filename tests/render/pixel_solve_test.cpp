@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// The certified Newton solve of a single primary ray never contradicts the
+// covering method: a box it declares missed holds no hit, a hit it certifies
+// is the only hit in the box and lies in its small box.
+#include <seamless/render/pixel_solve.h>
+#include <seamless/spline/ray_patch.h>
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace seamless;
+
+namespace {
+
+// A bicubic dome in front of the eye (camera coordinates: Z forward), bulging
+// towards it, so that rays near its rim meet folds of the silhouette.
+ProjectedPatch dome(std::mt19937& rng, double bulge) {
+    std::uniform_real_distribution<double> J(-0.05, 0.05);
+    BezierPatch b;
+    b.p = b.q = 3;
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 3; ++j) {
+            const bool inner = (i == 1 || i == 2) && (j == 1 || j == 2);
+            b.at(i, j) = HPoint::from({-1 + 2.0 * i / 3 + J(rng), -1 + 2.0 * j / 3 + J(rng),
+                                       5 - (inner ? bulge : 0.0) + J(rng)},
+                                      1.0);
+        }
+    ProjectedPatch pp;
+    pp.patch = b;
+    pp.forms = patch_forms(b);
+    pp.hull = enclose_point(pp.forms, ParamBox{});
+    return pp;
+}
+
+} // namespace
+
+TEST_CASE("Certified Newton agrees with the covering method", "[pixel_solve]") {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> U(-0.25, 0.25), S(0.0, 1.0);
+    int hits = 0, misses = 0;
+    for (int n = 0; n < 400; ++n) {
+        const ProjectedPatch pp = dome(rng, n % 2 ? 0.8 : 3.0);
+        // A random sub-box of [0,1]^2, sometimes the whole square.
+        ParamBox box;
+        if (n % 3) {
+            const double s0 = S(rng), t0 = S(rng), w = 0.05 + 0.5 * S(rng);
+            box = {Interval(s0 * (1 - w), s0 * (1 - w) + w),
+                   Interval(t0 * (1 - w), t0 * (1 - w) + w)};
+        }
+        // Half the rays aimed at a point of the patch inside the box, half at random.
+        double a = U(rng), b = U(rng);
+        if (n % 4 < 2) {
+            const double s = box.s.lo() + S(rng) * (box.s.hi() - box.s.lo());
+            const double t = box.t.lo() + S(rng) * (box.t.hi() - box.t.lo());
+            const Vec3 P = evaluate(pp.patch, s, t).point;
+            a = P.x / P.z;
+            b = P.y / P.z;
+        }
+        ClusterSystem sys;
+        cluster_system(pp.forms, Interval(a), Interval(b), sys);
+        RenderStats st;
+        ParamBox hb;
+        Interval q;
+        const NewtonOutcome r = newton_certified(pp, a, b, box, sys, hb, q, st);
+        RayPatchOptions opt;
+        std::vector<RayPatchHit> all;
+        intersect(pp.forms, ProjectedScene::primary_ray(a, b), box, all, opt);
+        if (r == NewtonOutcome::miss) {
+            ++misses;
+            CHECK(all.empty());
+        } else if (r == NewtonOutcome::hit) {
+            ++hits;
+            REQUIRE(all.size() == 1);
+            CHECK(hb.s.overlaps(all[0].box.s));
+            CHECK(hb.t.overlaps(all[0].box.t));
+            CHECK(hb.s.width() < 1e-8);
+            CHECK(q.overlaps(all[0].q));
+        }
+    }
+    CHECK(hits > 50);
+    CHECK(misses > 50);
+}
