@@ -6,6 +6,9 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
 
 namespace seamless {
 namespace {
@@ -106,10 +109,12 @@ struct Param {
     double s = 0, t = 0;
 };
 
-// One Gauss-Newton step from u toward the foot of x on S; returns the new
-// parameter, clamped to [0,1]^2.
-Param foot(const BezierPatch& b, Vec3 x, Param u) {
+// One Gauss-Newton step from u toward the foot of x on S, each coordinate's
+// step at most `limit` (near a pole the foot is ill-determined), kept only when
+// it brings S closer to x; clamped to [0,1]^2. `g` receives S(result) - x.
+Param foot(const BezierPatch& b, Vec3 x, Param u, double limit, Vec3& g) {
     const SurfacePoint sp = evaluate(b, u.s, u.t);
+    g = sp.point - x;
     const Vec3 r = x - sp.point;
     const double a11 = dot(sp.du, sp.du), a22 = dot(sp.dv, sp.dv), a12 = dot(sp.du, sp.dv);
     const double reg = 1e-12 * (a11 + a22);
@@ -118,19 +123,48 @@ Param foot(const BezierPatch& b, Vec3 x, Param u) {
     if (!(det > 0) || !std::isfinite(det)) return u;
     const double ds = ((a22 + reg) * g1 - a12 * g2) / det, dt = ((a11 + reg) * g2 - a12 * g1) / det;
     if (!std::isfinite(ds) || !std::isfinite(dt)) return u;
-    return {std::clamp(u.s + ds, 0.0, 1.0), std::clamp(u.t + dt, 0.0, 1.0)};
+    const Param v{std::clamp(u.s + std::clamp(ds, -limit, limit), 0.0, 1.0),
+                  std::clamp(u.t + std::clamp(dt, -limit, limit), 0.0, 1.0)};
+    const Vec3 gv = evaluate(b, v.s, v.t).point - x;
+    if (!(dot(gv, gv) < dot(g, g))) return u;
+    g = gv;
+    return v;
 }
 
-// Same along side k of [0,1]^2 (corner k to corner k+1), parameter tau in [lo, 1].
-double foot_on_side(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau, double lo) {
-    const Param u{c0.s + tau * (c1.s - c0.s), c0.t + tau * (c1.t - c0.t)};
+// Same along the line u(tau) = c0 + tau (c1 - c0), tau in [lo, hi].
+double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau, double lo,
+                    double hi, double limit, Vec3& g) {
+    auto at = [&](double z) {
+        return Param{c0.s + z * (c1.s - c0.s), c0.t + z * (c1.t - c0.t)};
+    };
+    tau = std::clamp(tau, lo, hi);
+    const Param u = at(tau);
     const SurfacePoint sp = evaluate(b, u.s, u.t);
+    g = sp.point - x;
     const Vec3 d = (c1.s - c0.s) * sp.du + (c1.t - c0.t) * sp.dv;
     const double dd = dot(d, d);
-    if (!(dd > 0) || !std::isfinite(dd)) return std::clamp(tau, lo, 1.0);
+    if (!(dd > 0) || !std::isfinite(dd)) return tau;
     const double step = dot(d, x - sp.point) / dd;
-    if (!std::isfinite(step)) return std::clamp(tau, lo, 1.0);
-    return std::clamp(tau + step, lo, 1.0);
+    if (!std::isfinite(step)) return tau;
+    const double z = std::clamp(tau + std::clamp(step, -limit, limit), lo, hi);
+    const Param v = at(z);
+    const Vec3 gv = evaluate(b, v.s, v.t).point - x;
+    if (!(dot(gv, gv) < dot(g, g))) return tau;
+    g = gv;
+    return z;
+}
+
+// Up to `iterations` steps of foot, the total move at most `limit` per coordinate.
+Param foot_iterated(const BezierPatch& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
+    Param u = w;
+    for (int it = 0; it < iterations; ++it) {
+        const double left = limit - std::max(std::abs(u.s - w.s), std::abs(u.t - w.t));
+        const Param v = foot(b, x, u, std::max(left, 0.0), g);
+        if (v.s == u.s && v.t == u.t) break;
+        u = v;
+    }
+    if (iterations == 0) g = evaluate(b, u.s, u.t).point - x;
+    return u;
 }
 
 constexpr Param kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -186,13 +220,14 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
                           kCentre.t + f * (kCorner[k].t - kCentre.t)};
             const Vec3 x = centre + f * (V[k] - centre);
             Param u = w;
-            if (a == 0)
-                u = kCentre;
-            else if (a == m)
-                u = kCorner[k];
-            else
-                u = foot(b, x, w);
-            radial[k][a] = {u, evaluate(b, u.s, u.t).point - x};
+            Vec3 g;
+            if (a == 0 || a == m) {
+                u = a == 0 ? kCentre : kCorner[k];
+                g = evaluate(b, u.s, u.t).point - x;
+            } else {
+                u = foot(b, x, w, 0.5 / m, g);
+            }
+            radial[k][a] = {u, g};
         }
 
     double bound = 0;
@@ -207,10 +242,11 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
             const int a = m - c;
             const double tau = static_cast<double>(c) / m;
             const Vec3 x = V[k] + tau * (V[k1] - V[k]);
-            lo = foot_on_side(b, x, kCorner[k], kCorner[k1], tau, lo);
+            Vec3 g;
+            lo = foot_on_line(b, x, kCorner[k], kCorner[k1], tau, lo, 1.0, 0.5 / m, g);
             const Param u{kCorner[k].s + lo * (kCorner[k1].s - kCorner[k].s),
                           kCorner[k].t + lo * (kCorner[k1].t - kCorner[k].t)};
-            grid[a][c] = {u, evaluate(b, u.s, u.t).point - x};
+            grid[a][c] = {u, g};
         }
         // Interior.
         for (int a = 1; a < m; ++a)
@@ -221,8 +257,9 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
                               kCentre.t + fa * (kCorner[k].t - kCentre.t) +
                                   fc * (kCorner[k1].t - kCentre.t)};
                 const Vec3 x = centre + fa * (V[k] - centre) + fc * (V[k1] - centre);
-                const Param u = foot(b, x, w);
-                grid[a][c] = {u, evaluate(b, u.s, u.t).point - x};
+                Vec3 g;
+                const Param u = foot(b, x, w, 0.5 / m, g);
+                grid[a][c] = {u, g};
             }
         // Refined triangles: up (a,c),(a+1,c),(a,c+1); down (a+1,c),(a+1,c+1),(a,c+1).
         auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
@@ -252,9 +289,11 @@ double rounding_allowance(int depth, double scale) {
 }
 
 BezierPatch extract_subpatch(const BezierPatch& patch, const ParamRect& r) {
+    return extract_box(patch, param_of(r.s0), param_of(r.s1), param_of(r.t0), param_of(r.t1));
+}
+
+BezierPatch extract_box(const BezierPatch& patch, double s0, double s1, double t0, double t1) {
     BezierPatch cur = patch, lo, hi;
-    const double s0 = param_of(r.s0), s1 = param_of(r.s1);
-    const double t0 = param_of(r.t0), t1 = param_of(r.t1);
     if (s0 > 0) {
         split_u(cur, s0, lo, hi);
         cur = hi;
@@ -274,40 +313,215 @@ BezierPatch extract_subpatch(const BezierPatch& patch, const ParamRect& r) {
     return cur;
 }
 
-double certified_fan_bound(const BezierPatch& patch, const Subpatch& sp, Vec3 centre,
-                           std::span<const FanVertex> ring, double scale) {
-    std::array<Vec3, 4> V{};
-    std::array<int, 4> at{};
-    int corner = 0;
-    for (size_t i = 0; i < ring.size(); ++i) {
-        const FanVertex& v = ring[i];
-        if ((v.s == 0 || v.s == 1) && (v.t == 0 || v.t == 1)) {
-            assert(corner < 4);
-            V[corner] = v.position;
-            at[corner] = static_cast<int>(i);
-            ++corner;
+namespace {
+
+// Sides shared by two fans are split into kSideRefinement pieces, the same
+// for both; phi is linear between those points. Inside, a fan triangle is
+// refined m = kSideRefinement * 2^k times (k chosen from its derivative bounds).
+constexpr int kSideRefinement = 4;
+constexpr int kMaxCertifyRefinement = 16;
+
+// phi at a mesh vertex, a function of its grid point and position alone, so
+// every fan sharing the vertex agrees and phi is continuous over the patch.
+// Vertices on the patch's sides stay; inner vertices move toward their foot,
+// at most the spacing of the coarsest dyadic grid line through them.
+Node vertex_phi(const BezierPatch& b, int gs, int gt, Vec3 x) {
+    const Param w{param_of(gs), param_of(gt)};
+    Vec3 g = evaluate(b, w.s, w.t).point - x;
+    const bool s_side = gs == 0 || gs == kParamOne, t_side = gt == 0 || gt == kParamOne;
+    if (s_side && t_side) return {w, g};
+    auto spacing = [](int i) { return param_of(i & -i); }; // lowest set bit
+    const double limit = std::max(spacing(gs), spacing(gt));
+    if (s_side || t_side) return {w, g};
+    const Param u = foot_iterated(b, x, w, limit, 3, g);
+    return {u, g};
+}
+
+bool on_patch_side(const RingPoint& a, const RingPoint& b) {
+    return (a.s == b.s && (a.s == 0 || a.s == kParamOne)) ||
+           (a.t == b.t && (a.t == 0 || a.t == kParamOne));
+}
+
+} // namespace
+
+double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
+                           std::span<const RingPoint> ring, double scale) {
+    const size_t n = ring.size();
+    assert(n >= 3);
+    // Derivative bounds over the subpatch grown by its size on every side
+    // (phi may reach into the neighbours), or over the whole patch.
+    const long long ws = r.s1 - r.s0, wt = r.t1 - r.t0;
+    ParamRect e;
+    e.s0 = static_cast<int>(std::max<long long>(0, r.s0 - ws));
+    e.s1 = static_cast<int>(std::min<long long>(kParamOne, r.s1 + ws));
+    e.t0 = static_cast<int>(std::max<long long>(0, r.t0 - wt));
+    e.t1 = static_cast<int>(std::min<long long>(kParamOne, r.t1 + wt));
+    const double es0 = param_of(e.s0), es1 = param_of(e.s1);
+    const double et0 = param_of(e.t0), et1 = param_of(e.t1);
+    const BezierPatch grown = extract_subpatch(patch, e);
+    const Net net = make_net(grown, centre);
+    const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
+    std::optional<Net> whole;
+    DerivativeBounds whole_full;
+
+    // m: the tangential remainder of an unrefined fan triangle of the subpatch
+    // against its normal remainder (about the geometric deviation).
+    int m = kSideRefinement;
+    {
+        const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
+        const double lw = (param_of(r.s1) - param_of(r.s0)) / (es1 - es0);
+        const double lt = (param_of(r.t1) - param_of(r.t0)) / (et1 - et0);
+        const double R1 = remainder(full, lw, lt);
+        const double Rn1 = norm(nz) > 0
+                               ? remainder(derivative_bounds(
+                                               net, [&](Vec3 v) { return std::abs(dot(v, nz)); }),
+                                           lw, lt)
+                               : R1;
+        while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
+    }
+    const int side_step = m / kSideRefinement;
+    const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+    const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+    const Node centre_node{{sc, tc}, evaluate(patch, sc, tc).point - centre};
+    const double inner_limit =
+        0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
+
+    constexpr int K = kMaxCertifyRefinement + 1;
+    std::vector<std::array<Node, K>> radial(n);
+    for (size_t i = 0; i < n; ++i) {
+        radial[i][0] = centre_node;
+        radial[i][m] = vertex_phi(patch, ring[i].s, ring[i].t, ring[i].position);
+        const Param p{param_of(ring[i].s), param_of(ring[i].t)};
+        for (int a = 1; a < m; ++a) {
+            const double f = static_cast<double>(a) / m;
+            const Param w{sc + f * (p.s - sc), tc + f * (p.t - tc)};
+            const Vec3 x = centre + f * (ring[i].position - centre);
+            Vec3 g;
+            const Param u = foot_iterated(patch, x, w, inner_limit, 3, g);
+            radial[i][a] = {u, g};
         }
     }
-    assert(corner == 4);
-    // Moving a vertex by d moves the union of its triangles by at most d.
-    double shift = distance(centre, sp.centre);
-    for (int k = 0; k < 4; ++k) shift = std::max(shift, distance(V[k], sp.corners[k]));
-    double base = sp.fan_error + shift;
-    int depth = sp.depth;
-    if (shift > 0.05 * sp.fan_error) {
-        // Neighbours moved a corner (onto their straight edge): recompute.
-        const BezierPatch sub = extract_subpatch(patch, sp.rect);
-        base = std::min(base, fan_bound(sub, centre, V));
-        depth += 4 * BezierPatch::kMaxOrder;
+
+    const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
+    double bound = 0;
+    Node grid[K][K];
+    for (size_t k = 0; k < n; ++k) {
+        const size_t k1 = (k + 1) % n;
+        const RingPoint &P = ring[k], &Q = ring[k1];
+        Vec3 nk = cross(P.position - centre, Q.position - centre);
+        const double len = norm(nk);
+        nk = len > 1e-300 && std::isfinite(len) ? nk / len : normalize(diag);
+        const DerivativeBounds nb =
+            norm(nk) > 0 ? derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, nk)); })
+                         : full;
+        for (int a = 0; a <= m; ++a) grid[a][0] = radial[k][a];
+        for (int c = 0; c <= m; ++c) grid[0][c] = radial[k1][c];
+        // The side P Q: points in a canonical order (from the endpoint with the
+        // smaller grid point), the same for the fan on its other side.
+        const bool forward = std::pair(P.s, P.t) < std::pair(Q.s, Q.t);
+        const RingPoint& lo = forward ? P : Q;
+        const RingPoint& hi = forward ? Q : P;
+        const Node& nlo = forward ? grid[m][0] : grid[0][m];
+        const Node& nhi = forward ? grid[0][m] : grid[m][0];
+        const Param plo{param_of(lo.s), param_of(lo.t)}, phi_{param_of(hi.s), param_of(hi.t)};
+        const bool side = on_patch_side(lo, hi);
+        const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
+        double prev = 0;
+        Node canon[kSideRefinement + 1];
+        canon[0] = nlo;
+        canon[kSideRefinement] = nhi;
+        for (int j = 1; j < kSideRefinement; ++j) {
+            const double f = static_cast<double>(j) / kSideRefinement;
+            const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
+            const Vec3 x = lo.position + f * (hi.position - lo.position);
+            Node& node = canon[j];
+            if (side) {
+                // Along the patch's side, between phi(lo) and phi(hi).
+                prev = foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement,
+                                    node.g);
+                node.u = {nlo.u.s + prev * (nhi.u.s - nlo.u.s),
+                          nlo.u.t + prev * (nhi.u.t - nlo.u.t)};
+            } else {
+                node.u = foot_iterated(patch, x, w, seg_limit, 3, node.g);
+            }
+        }
+        // The refined points between: phi linear between the shared points.
+        for (int j = 1; j < m; ++j) {
+            const int c = forward ? j : m - j;
+            if (j % side_step == 0) {
+                grid[m - c][c] = canon[j / side_step];
+                continue;
+            }
+            const Node& a0 = canon[j / side_step];
+            const Node& a1 = canon[j / side_step + 1];
+            const double f = static_cast<double>(j % side_step) / side_step;
+            const double fx = static_cast<double>(j) / m;
+            Node node;
+            node.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
+            node.g = evaluate(patch, node.u.s, node.u.t).point -
+                     (lo.position + fx * (hi.position - lo.position));
+            grid[m - c][c] = node;
+        }
+        // Inside the fan triangle.
+        const Param pp{param_of(P.s), param_of(P.t)}, pq{param_of(Q.s), param_of(Q.t)};
+        for (int a = 1; a < m; ++a)
+            for (int c = 1; a + c < m; ++c) {
+                const double fa = static_cast<double>(a) / m, fc = static_cast<double>(c) / m;
+                const Param w{sc + fa * (pp.s - sc) + fc * (pq.s - sc),
+                              tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
+                const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
+                Vec3 g;
+                const Param u = foot_iterated(patch, x, w, inner_limit, 3, g);
+                grid[a][c] = {u, g};
+            }
+        auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
+            double gn = 0, gt = 0;
+            for (const Node* q : {&p0, &p1, &p2}) {
+                const double dn = dot(q->g, nk);
+                gn = std::max(gn, std::abs(dn));
+                gt = std::max(gt, norm(q->g - dn * nk));
+            }
+            const double s0 = std::min({p0.u.s, p1.u.s, p2.u.s});
+            const double s1 = std::max({p0.u.s, p1.u.s, p2.u.s});
+            const double t0 = std::min({p0.u.t, p1.u.t, p2.u.t});
+            const double t1 = std::max({p0.u.t, p1.u.t, p2.u.t});
+            double Rn = 0, R = 0;
+            if (s0 >= es0 && s1 <= es1 && t0 >= et0 && t1 <= et1) {
+                const double ds = (s1 - s0) / (es1 - es0), dt = (t1 - t0) / (et1 - et0);
+                Rn = remainder(nb, ds, dt);
+                R = remainder(full, ds, dt);
+            } else {
+                // phi left the grown rectangle: bounds over the whole patch.
+                if (!whole) {
+                    whole = make_net(patch, centre);
+                    whole_full = derivative_bounds(*whole, [](Vec3 v) { return norm(v); });
+                }
+                const DerivativeBounds wn =
+                    derivative_bounds(*whole, [&](Vec3 v) { return std::abs(dot(v, nk)); });
+                Rn = remainder(wn, s1 - s0, t1 - t0);
+                R = remainder(whole_full, s1 - s0, t1 - t0);
+            }
+            if (R > gn + Rn && s1 > s0 && t1 > t0) {
+                // The tangential remainder dominates (a pole's sector, a
+                // strongly varying speed): bounds over phi(sigma)'s box alone.
+                const Net local = make_net(extract_box(patch, s0, s1, t0, t1), centre);
+                const DerivativeBounds lf = derivative_bounds(local, [](Vec3 v) { return norm(v); });
+                const DerivativeBounds ln =
+                    derivative_bounds(local, [&](Vec3 v) { return std::abs(dot(v, nk)); });
+                Rn = std::min(Rn, remainder(ln, 1, 1));
+                R = std::min(R, remainder(lf, 1, 1));
+            }
+            const double en = gn + Rn, et = gt + R;
+            bound = std::max(bound, std::sqrt(en * en + et * et));
+        };
+        for (int a = 0; a < m; ++a)
+            for (int c = 0; a + c < m; ++c) {
+                tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
+                if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
+            }
     }
-    // Extra vertices on side k: their distance to the segment V[k] V[k+1].
-    double off = 0;
-    for (int k = 0; k < 4; ++k) {
-        const int end = k < 3 ? at[k + 1] : static_cast<int>(ring.size());
-        for (int i = at[k] + 1; i < end; ++i)
-            off = std::max(off, point_segment_distance(ring[i].position, V[k], V[(k + 1) % 4]));
-    }
-    return (base + off) * (1 + 64 * kEps) + rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
+    return bound * (1 + 64 * kEps) +
+           rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
 }
 
 } // namespace seamless

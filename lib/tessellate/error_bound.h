@@ -8,8 +8,8 @@
 // subpatch and F the piecewise linear map of Q onto the fan: the centre
 // (1/2,1/2) to the centre vertex, the corners to the corner vertices, linear on
 // the four parameter triangles (centre, corner k, corner k+1). For any
-// continuous phi: Q -> Q that maps each side of Q onto itself monotonically
-// with the corners fixed, phi is onto (its boundary map has degree 1), so
+// continuous phi: Q -> Q that maps each side of Q into itself with the
+// corners fixed, phi is onto (its boundary map has degree 1), so
 //   H(S(Q), F(Q)) <= sup_w |S(phi(w)) - F(w)|
 // both ways: every S(u) is S(phi(w)) for some w, beside F(w), and every F(w)
 // is beside S(phi(w)). phi is piecewise linear on an m x m refinement of each
@@ -45,31 +45,35 @@ inline constexpr int kMaxFanRefinement = 8;
 double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V,
                  double target = 0);
 
-// A vertex of a subpatch's fan: local parameters on the subpatch and position.
-struct FanVertex {
-    double s = 0, t = 0;
+// A vertex of a subpatch's ring: grid point on its patch and position.
+struct RingPoint {
+    int s = 0, t = 0;
     Vec3 position;
 };
 
-// The certified bound of a planar subpatch and its final fan from `centre`
-// over `ring` (counterclockwise from local corner (0,0), every vertex the
-// neighbours put on a side): the four-triangle bound fan_bound computed at
-// subdivision time (Subpatch::fan_error, for the exact corners and centre),
-// or recomputed on `patch` when neighbours moved a corner onto their straight
-// edge (the smaller of that and the old bound plus the shifts: both hold), plus
-// the largest distance of a side's extra vertex from the segment between that
-// side's corners (extra vertices on the segment leave the union of triangles
-// unchanged; one off it moves the union by at most its distance), plus the
-// rounding allowance. `scale`: magnitude of the coordinates.
-double certified_fan_bound(const BezierPatch& patch, const Subpatch& sp, Vec3 centre,
-                           std::span<const FanVertex> ring, double scale);
+// The certified bound of a subpatch's final fan from `centre` over `ring`
+// (counterclockwise from the rectangle's corner (s0, t0), with every vertex the
+// neighbours put on a side, on straight edges or not). The construction above,
+// with phi continuous over the whole Bezier patch instead of one subpatch:
+// phi at a vertex or side point shared with a neighbouring fan depends on that
+// point alone, and only the patch's own sides must map into themselves, so
+// phi may slide a vertex a neighbour moved onto its straight edge toward its
+// foot. Hence with B_f this bound for every fan f of a patch, the patch and
+// its triangles are within max_f B_f of each other both ways; each point of
+// this fan's triangles is within this bound of the patch. m = 4; derivative
+// bounds over the subpatch grown by its size on every side (or the whole
+// patch where phi reaches further). Includes the rounding allowance.
+double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
+                           std::span<const RingPoint> ring, double scale);
 
 // Allowance for rounding in de Casteljau (depth halvings), evaluation and the
 // bound's own arithmetic at the coordinates' magnitude `scale`: a few ulps per
 // operation.
 double rounding_allowance(int depth, double scale);
 
-// The subpatch of `patch` over the dyadic rectangle r, by de Casteljau.
+// The subpatch of `patch` over the dyadic rectangle r, or over the box
+// [s0, s1] x [t0, t1] of its local parameters, by de Casteljau.
 BezierPatch extract_subpatch(const BezierPatch& patch, const ParamRect& r);
+BezierPatch extract_box(const BezierPatch& patch, double s0, double s1, double t0, double t1);
 
 } // namespace seamless

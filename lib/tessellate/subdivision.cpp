@@ -71,7 +71,8 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
     const Vec3 centre = evaluate(b, 0.5, 0.5).point;
     double fan_error = -1;
-    const bool planar = planarity(b).planar(cx.options.eps1, cx.options.eps2) &&
+    const bool forced = cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
+    const bool planar = !forced && planarity(b).planar(cx.options.eps1, cx.options.eps2) &&
                         fan_accepted(cx.options, b, centre, V, fan_error);
     // A side can only be halved while it spans more than one grid step.
     const bool can_u = r.s1 - r.s0 > 1, can_v = r.t1 - r.t0 > 1;
@@ -84,7 +85,7 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
         leaf.planar = planar;
         leaf.corners = V;
         leaf.centre = centre;
-        leaf.fan_error = fan_error >= 0 ? fan_error : fan_bound(b, centre, V);
+        leaf.fan_error = std::max(fan_error, 0.0);
         cx.trees.nodes[id].subpatch = static_cast<int>(cx.out.size());
         cx.out.push_back(leaf);
         return id;
@@ -114,6 +115,13 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
 }
 
 } // namespace
+
+std::uint64_t subpatch_key(int patch, const ParamRect& r) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (int x : {patch, r.s0, r.s1, r.t0, r.t1})
+        h = (h ^ static_cast<std::uint32_t>(x)) * 0xBF58476D1CE4E5B9ull + (h >> 29);
+    return h;
+}
 
 int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
               PatchTrees& trees, std::vector<Subpatch>& out) {

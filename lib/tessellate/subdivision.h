@@ -10,6 +10,8 @@
 #include <seamless/tessellate/patch_tree.h>
 
 #include <array>
+#include <cstdint>
+#include <unordered_set>
 #include <vector>
 
 namespace seamless {
@@ -38,6 +40,9 @@ struct SubdivisionOptions {
     // the surface normals at its three parameter corners (radians), so that two
     // triangles meeting at a surface vertex differ by at most `angle`.
     double angle = 0;
+    // Subpatches to split whatever the criteria say (subpatch_key): those a
+    // previous pass left above the tolerance. Not owned; may be null.
+    const std::unordered_set<std::uint64_t>* split = nullptr;
 };
 
 // A leaf of the split tree: a planar subpatch (or one stopped by max_depth).
@@ -48,8 +53,8 @@ struct Subpatch {
     int depth = 0;
     bool planar = true; // false when max_depth stopped the subdivision
     // The subpatch's corner points (order of BezierPatch::corner), its centre
-    // S(1/2, 1/2), and fan_bound (error_bound.h) for the four triangles from
-    // that centre over those corners, without rounding allowance.
+    // S(1/2, 1/2), and (with a tolerance, else 0) the fan_bound (error_bound.h)
+    // for the four triangles from that centre over those corners that accepted it.
     std::array<Vec3, 4> corners{};
     Vec3 centre;
     double fan_error = 0;
@@ -57,6 +62,10 @@ struct Subpatch {
     int first_triangle = 0, triangle_count = 0;
     double error_bound = 0;
 };
+
+// Identity of the subpatch `r` of patch `patch` (a hash: a collision only
+// splits one more subpatch).
+std::uint64_t subpatch_key(int patch, const ParamRect& r);
 
 // Splits `patch` (index `patch_index`) recursively, appending its tree's nodes
 // to `trees.nodes` (root first) and its planar subpatches to `out`; returns the

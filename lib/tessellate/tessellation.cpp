@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <unordered_set>
 
 namespace seamless {
 namespace {
@@ -74,8 +75,9 @@ Tessellation tessellate(const Model& model, const TessellationOptions& options) 
 
 namespace {
 
-Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
-                                      const TessellationOptions& options) {
+Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
+                             const TessellationOptions& options,
+                             const std::unordered_set<std::uint64_t>& split) {
     const auto start = std::chrono::steady_clock::now();
     Tessellation out;
     TessellationStats& st = out.stats;
@@ -101,6 +103,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     sub.tolerance = st.tolerance;
     sub.angle = options.angle;
     sub.max_depth = options.max_depth;
+    sub.split = &split;
     out.trees.roots.reserve(patches.size());
     for (size_t i = 0; i < patches.size(); ++i)
         out.trees.roots.push_back(
@@ -140,7 +143,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     vr.index.reserve(out.subpatches.size() + expected / 8);
     std::vector<int> scratch;
     std::vector<RingVertex> ring;
-    std::vector<FanVertex> fan;
+    std::vector<RingPoint> fan;
     std::vector<Vec3> ring_normals;
     for (Subpatch& sp : out.subpatches) {
         const BezierPatch& b = patches[sp.patch];
@@ -157,13 +160,10 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         const Vec3 centre_normal = unit_normal(b, sc, tc, sc, tc);
 
         // Certified two-way distance of the subpatch and its fan (error_bound.h).
-        const double s0 = param_of(r.s0), t0 = param_of(r.t0);
-        const double ws = param_of(r.s1) - s0, wt = param_of(r.t1) - t0;
         fan.clear();
-        for (const RingVertex& v : ring)
-            fan.push_back({(param_of(v.s) - s0) / ws, (param_of(v.t) - t0) / wt,
-                           vr.positions[v.vertex]});
-        sp.error_bound = certified_fan_bound(b, sp, centre_point.point, fan, scale);
+        for (const RingVertex& v : ring) fan.push_back({v.s, v.t, vr.positions[v.vertex]});
+        sp.error_bound =
+            certified_fan_bound(b, r, sp.depth, centre_point.point, fan, scale);
         if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
         st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
 
@@ -207,6 +207,25 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     st.vertices = mesh.vertex_count();
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+// With a tolerance: a subpatch accepted by its four-triangle bound can end
+// above the tolerance once neighbours move its corners onto their straight
+// edges; such subpatches are split in another pass (at most a few).
+Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
+                                      const TessellationOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    std::unordered_set<std::uint64_t> split;
+    Tessellation t;
+    for (int pass = 0;; ++pass) {
+        t = tessellate_pass(model, patches, options, split);
+        if (options.tolerance <= 0 || t.stats.above_tolerance == 0 || pass == 4) break;
+        for (const Subpatch& sp : t.subpatches)
+            if (sp.error_bound > t.stats.tolerance && sp.depth < options.max_depth)
+                split.insert(subpatch_key(sp.patch, sp.rect));
+    }
+    t.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return t;
 }
 
 } // namespace

@@ -232,29 +232,25 @@ TEST_CASE("a flat patch has a rounding-size bound whatever its parametrisation",
     CHECK(fan_bound(b, centre, V) < 0.05);
 }
 
-TEST_CASE("certified_fan_bound adds the distance of extra side vertices from the side",
-          "[error_bound]") {
+TEST_CASE("certified_fan_bound counts a side vertex off the straight side", "[error_bound]") {
     BezierPatch b;
     b.p = b.q = 1;
     b.at(0, 0) = HPoint::from({0, 0, 0}, 1);
     b.at(1, 0) = HPoint::from({1, 0, 0}, 1);
     b.at(0, 1) = HPoint::from({0, 1, 0}, 1);
     b.at(1, 1) = HPoint::from({1, 1, 0}, 1);
-    Subpatch sp;
-    sp.corners = {b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
-    sp.centre = evaluate(b, 0.5, 0.5).point;
-    sp.fan_error = fan_bound(b, sp.centre, sp.corners);
-    CHECK(sp.fan_error < 1e-14);
-    std::vector<FanVertex> ring{{0, 0, sp.corners[0]},
-                                {0.5, 0, {0.5, 0, 0}},
-                                {1, 0, sp.corners[1]},
-                                {1, 1, sp.corners[2]},
-                                {0, 1, sp.corners[3]},
-                                {0, 0.25, {0, 0.25, 0}}};
-    const double on = certified_fan_bound(b, sp, sp.centre, ring, 1);
-    CHECK(on < 1e-12);
+    const int one = kParamOne, half = kParamOne / 2, quarter = kParamOne / 4;
+    const Vec3 centre = evaluate(b, 0.5, 0.5).point;
+    std::vector<RingPoint> ring{{0, 0, b.corner(0)},       {half, 0, {0.5, 0, 0}},
+                                {one, 0, b.corner(1)},     {one, one, b.corner(2)},
+                                {0, one, b.corner(3)},     {0, quarter, {0, 0.25, 0}}};
+    const ParamRect all;
+    CHECK(certified_fan_bound(b, all, 0, centre, ring, 1) < 1e-12);
     ring[5].position = {0, 0.25, 0.01};
-    CHECK(certified_fan_bound(b, sp, sp.centre, ring, 1) >= 0.01);
+    CHECK(certified_fan_bound(b, all, 0, centre, ring, 1) >= 0.01);
+    ring[5].position = {0, 0.25, 0};
+    ring[1].position = {0.5, -0.02, 0}; // off the patch's side, in its plane
+    CHECK(certified_fan_bound(b, all, 0, centre, ring, 1) >= 0.02);
 }
 
 TEST_CASE("the rational quarter cylinder: every vertex within the bound of the cylinder",
