@@ -109,26 +109,35 @@ struct Param {
     double s = 0, t = 0;
 };
 
-// One Gauss-Newton step from u toward the foot of x on S, each coordinate's
-// step at most `limit` (near a pole the foot is ill-determined), kept only when
-// it brings S closer to x; clamped to [0,1]^2. `g` receives S(result) - x.
-Param foot(const BezierPatch& b, Vec3 x, Param u, double limit, Vec3& g) {
-    const SurfacePoint sp = evaluate(b, u.s, u.t);
-    g = sp.point - x;
+// One Gauss-Newton step from u (sp = S and its derivatives there) toward the
+// foot of x on S, each coordinate's step at most `limit` (near a pole the foot
+// is ill-determined), kept only when it brings S closer to x; clamped to
+// [0,1]^2. Returns whether it moved; u and sp follow.
+bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
     const Vec3 r = x - sp.point;
     const double a11 = dot(sp.du, sp.du), a22 = dot(sp.dv, sp.dv), a12 = dot(sp.du, sp.dv);
     const double reg = 1e-12 * (a11 + a22);
     const double g1 = dot(sp.du, r), g2 = dot(sp.dv, r);
     const double det = (a11 + reg) * (a22 + reg) - a12 * a12;
-    if (!(det > 0) || !std::isfinite(det)) return u;
+    if (!(det > 0) || !std::isfinite(det) || !(limit > 0)) return false;
     const double ds = ((a22 + reg) * g1 - a12 * g2) / det, dt = ((a11 + reg) * g2 - a12 * g1) / det;
-    if (!std::isfinite(ds) || !std::isfinite(dt)) return u;
+    if (!std::isfinite(ds) || !std::isfinite(dt)) return false;
     const Param v{std::clamp(u.s + std::clamp(ds, -limit, limit), 0.0, 1.0),
                   std::clamp(u.t + std::clamp(dt, -limit, limit), 0.0, 1.0)};
-    const Vec3 gv = evaluate(b, v.s, v.t).point - x;
-    if (!(dot(gv, gv) < dot(g, g))) return u;
-    g = gv;
-    return v;
+    if (v.s == u.s && v.t == u.t) return false;
+    const SurfacePoint sv = evaluate(b, v.s, v.t);
+    const Vec3 gv = sv.point - x;
+    if (!(dot(gv, gv) < dot(r, r))) return false;
+    u = v;
+    sp = sv;
+    return true;
+}
+
+Param foot(const BezierPatch& b, Vec3 x, Param u, double limit, Vec3& g) {
+    SurfacePoint sp = evaluate(b, u.s, u.t);
+    foot_step(b, x, u, sp, limit);
+    g = sp.point - x;
+    return u;
 }
 
 // Same along the line u(tau) = c0 + tau (c1 - c0), tau in [lo, hi].
@@ -154,16 +163,16 @@ double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau
     return z;
 }
 
-// Up to `iterations` steps of foot, the total move at most `limit` per coordinate.
+// Up to `iterations` steps toward the foot, the total move at most `limit`
+// per coordinate.
 Param foot_iterated(const BezierPatch& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
     Param u = w;
+    SurfacePoint sp = evaluate(b, u.s, u.t);
     for (int it = 0; it < iterations; ++it) {
         const double left = limit - std::max(std::abs(u.s - w.s), std::abs(u.t - w.t));
-        const Param v = foot(b, x, u, std::max(left, 0.0), g);
-        if (v.s == u.s && v.t == u.t) break;
-        u = v;
+        if (!foot_step(b, x, u, sp, left)) break;
     }
-    if (iterations == 0) g = evaluate(b, u.s, u.t).point - x;
+    g = sp.point - x;
     return u;
 }
 
@@ -318,7 +327,7 @@ namespace {
 // Sides shared by two fans are split into kSideRefinement pieces, the same
 // for both; phi is linear between those points. Inside, a fan triangle is
 // refined m = kSideRefinement * 2^k times (k chosen from its derivative bounds).
-constexpr int kSideRefinement = 4;
+constexpr int kSideRefinement = 2;
 constexpr int kMaxCertifyRefinement = 16;
 
 // phi at a mesh vertex, a function of its grid point and position alone, so
@@ -397,7 +406,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             const Param w{sc + f * (p.s - sc), tc + f * (p.t - tc)};
             const Vec3 x = centre + f * (ring[i].position - centre);
             Vec3 g;
-            const Param u = foot_iterated(patch, x, w, inner_limit, 3, g);
+            const Param u = foot_iterated(patch, x, w, inner_limit, 2, g);
             radial[i][a] = {u, g};
         }
     }
@@ -442,7 +451,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                 node.u = {nlo.u.s + prev * (nhi.u.s - nlo.u.s),
                           nlo.u.t + prev * (nhi.u.t - nlo.u.t)};
             } else {
-                node.u = foot_iterated(patch, x, w, seg_limit, 3, node.g);
+                node.u = foot_iterated(patch, x, w, seg_limit, 2, node.g);
             }
         }
         // The refined points between: phi linear between the shared points.
@@ -471,7 +480,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                               tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
                 const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
                 Vec3 g;
-                const Param u = foot_iterated(patch, x, w, inner_limit, 3, g);
+                const Param u = foot_iterated(patch, x, w, inner_limit, 2, g);
                 grid[a][c] = {u, g};
             }
         auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {

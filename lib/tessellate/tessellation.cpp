@@ -217,13 +217,15 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     const auto start = std::chrono::steady_clock::now();
     std::unordered_set<std::uint64_t> split;
     Tessellation t;
-    for (int pass = 0;; ++pass) {
+    int pass = 0;
+    for (;; ++pass) {
         t = tessellate_pass(model, patches, options, split);
         if (options.tolerance <= 0 || t.stats.above_tolerance == 0 || pass == 4) break;
         for (const Subpatch& sp : t.subpatches)
             if (sp.error_bound > t.stats.tolerance && sp.depth < options.max_depth)
                 split.insert(subpatch_key(sp.patch, sp.rect));
     }
+    t.stats.passes = pass + 1;
     t.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return t;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Crack-free adaptive tessellation of a model (paper section 6): every Bezier
-// patch is split by the planarity test (subdivision.h), shared boundaries are
+// patch is split by the planarity test, or until a requested deviation is
+// certified (subdivision.h, error_bound.h), shared boundaries are
 // matched across patches and surfaces (shared_edges.h), vertices follow the
 // straight-midpoint rule of Fig. 3, each planar subpatch becomes a fan from
 // its centre over every vertex on its sides, and the binary patch trees of
@@ -63,6 +64,7 @@ struct TessellationStats {
     // corner onto their straight edge after the subpatch passed), or that
     // max_depth stopped.
     int above_tolerance = 0;
+    int passes = 1; // tessellation passes (a tolerance may need more than one)
     double seconds = 0;
 };
 
