@@ -187,6 +187,18 @@ struct Node {
 
 } // namespace
 
+namespace {
+
+struct FanResult {
+    double bound = 0, largest_g = 0;
+};
+
+FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
+                       const std::array<Vec3, 4>& n, const DerivativeBounds& full,
+                       const std::array<DerivativeBounds, 4>& nb);
+
+} // namespace
+
 double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, double target) {
     const Net net = make_net(b, centre);
     const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
@@ -218,6 +230,20 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     if (R1 > 0)
         m = want > 0 ? static_cast<int>(std::ceil(std::sqrt(R1 / want))) : kMaxFanRefinement;
     m = std::clamp(m, 1, kMaxFanRefinement);
+    if (target > 0 && m > 2) {
+        // Cheap first: m = 2 may already certify the target, or its refined
+        // vertices, about as far from the surface as it lies, already exceed it.
+        const FanResult r = fan_bound_at(b, centre, V, 2, n, full, nb);
+        if (r.bound <= target || r.largest_g > target) return r.bound;
+    }
+    return fan_bound_at(b, centre, V, m, n, full, nb).bound;
+}
+
+namespace {
+
+FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
+                       const std::array<Vec3, 4>& n, const DerivativeBounds& full,
+                       const std::array<DerivativeBounds, 4>& nb) {
 
     // phi on the radial edges (centre to corner k), shared by two fan triangles.
     constexpr int K = kMaxFanRefinement + 1;
@@ -239,7 +265,7 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
             radial[k][a] = {u, g};
         }
 
-    double bound = 0;
+    double bound = 0, largest_g = 0;
     Node grid[K][K]; // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre)
     for (int k = 0; k < 4; ++k) {
         const int k1 = (k + 1) % 4;
@@ -274,6 +300,7 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
         auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
             double gn = 0, gt = 0;
             for (const Node* q : {&p0, &p1, &p2}) {
+                largest_g = std::max(largest_g, norm(q->g));
                 const double dn = dot(q->g, n[k]);
                 gn = std::max(gn, std::abs(dn));
                 gt = std::max(gt, norm(q->g - dn * n[k]));
@@ -290,8 +317,10 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
             }
     }
     // Relative rounding of the sums above.
-    return bound * (1 + 64 * kEps);
+    return {bound * (1 + 64 * kEps), largest_g};
 }
+
+} // namespace
 
 double rounding_allowance(int depth, double scale) {
     return (8.0 * (depth + 8)) * kEps * scale;
