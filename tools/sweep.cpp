@@ -68,8 +68,8 @@ void add_sweep(CLI::App& app, Action& action) {
                     text << "  f " << r.factor << ": " << r.tess.triangles << " triangles, "
                          << r.tess.seconds << " s, bound " << r.tess.max_error_bound
                          << ", measured " << r.deviation.max() << " (measured/bound "
-                         << r.tightness() << ")"
-                         << (r.within_bound() ? "" : "  EXCEEDS THE BOUND") << "\n";
+                         << r.tightness() << ")" << (r.within_bound() ? "" : "  EXCEEDS THE BOUND")
+                         << "\n";
                     ok = ok && r.within_bound();
                 }
                 all.push_back({{"model", path},

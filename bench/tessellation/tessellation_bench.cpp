@@ -318,8 +318,8 @@ std::vector<OccPoint> occ_sweep(const Model& model, const std::vector<double>& D
         std::vector<double> s;
         for (int r = 0; r < runs; ++r) s.push_back(occ_seconds(occ, D, false));
         const TriangleMesh mesh = occ_mesh(occ, model);
-        pts.push_back({D, double(mesh.triangle_count()), median(s),
-                       measure_deviation(model, mesh).max()});
+        pts.push_back(
+            {D, double(mesh.triangle_count()), median(s), measure_deviation(model, mesh).max()});
         std::cout << "OpenCASCADE sweep D " << D << ": " << mesh.triangle_count() << " triangles"
                   << std::endl;
     }
@@ -587,8 +587,8 @@ int main(int argc, char** argv) {
             std::cout << name << ": sweeps done" << std::endl;
             sweeps.push_back(std::move(ms));
         }
-        const std::vector<OccPoint> occ = occ_sweep(
-            teapot, std::vector<double>{0.03, 0.01, 0.003, 0.001, 0.0003, 0.0001}, runs);
+        const std::vector<OccPoint> occ =
+            occ_sweep(teapot, std::vector<double>{0.03, 0.01, 0.003, 0.001, 0.0003, 0.0001}, runs);
         std::string command = "seamless_bench_tessellation --docs " + docs;
         if (runs != 3) command += " --runs " + std::to_string(runs);
         if (quick) command += " --quick";

@@ -144,7 +144,8 @@ Deviation measure(const Model& model, const std::vector<BezierPatch>& patches,
     grid.reserve(patches.size() * n * n + samples.size());
     for (int p = 0; p < static_cast<int>(patches.size()); ++p)
         for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) grid.push_back({p, double(i) / (n - 1), double(j) / (n - 1)});
+            for (int j = 0; j < n; ++j)
+                grid.push_back({p, double(i) / (n - 1), double(j) / (n - 1)});
     grid.insert(grid.end(), samples.begin(), samples.end());
     if (!triangles.empty()) {
         Tree tree(triangles.begin(), triangles.end());

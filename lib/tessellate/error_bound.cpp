@@ -82,8 +82,8 @@ template <class Mag> DerivativeBounds derivative_bounds(const Net& n, Mag&& mag)
             if (i < p && j < q) {
                 Xst = std::max(Xst,
                                mag(n.X(i + 1, j + 1) - n.X(i + 1, j) - n.X(i, j + 1) + n.X(i, j)));
-                Wst = std::max(Wst, std::abs(n.W(i + 1, j + 1) - n.W(i + 1, j) - n.W(i, j + 1) +
-                                             n.W(i, j)));
+                Wst = std::max(
+                    Wst, std::abs(n.W(i + 1, j + 1) - n.W(i + 1, j) - n.W(i, j + 1) + n.W(i, j)));
             }
         }
     Xs *= p, Ws *= p, Xt *= q, Wt *= q;
@@ -143,9 +143,7 @@ Param foot(const BezierPatch& b, Vec3 x, Param u, double limit, Vec3& g) {
 // Same along the line u(tau) = c0 + tau (c1 - c0), tau in [lo, hi].
 double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau, double lo,
                     double hi, double limit, Vec3& g) {
-    auto at = [&](double z) {
-        return Param{c0.s + z * (c1.s - c0.s), c0.t + z * (c1.t - c0.t)};
-    };
+    auto at = [&](double z) { return Param{c0.s + z * (c1.s - c0.s), c0.t + z * (c1.t - c0.t)}; };
     tau = std::clamp(tau, lo, hi);
     const Param u = at(tau);
     const SurfacePoint sp = evaluate(b, u.s, u.t);
@@ -214,8 +212,9 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     }
     std::array<DerivativeBounds, 4> nb{};
     for (int k = 0; k < 4; ++k)
-        nb[k] = norm(n[k]) > 0 ? derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, n[k])); })
-                               : full;
+        nb[k] = norm(n[k]) > 0
+                    ? derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, n[k])); })
+                    : full;
 
     // m: the tangential remainder of an unrefined fan triangle (extents 1 x 1/2)
     // against its normal remainder (about the geometric deviation) or the target.
@@ -287,10 +286,9 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
         for (int a = 1; a < m; ++a)
             for (int c = 1; a + c < m; ++c) {
                 const double fa = static_cast<double>(a) / m, fc = static_cast<double>(c) / m;
-                const Param w{kCentre.s + fa * (kCorner[k].s - kCentre.s) +
-                                  fc * (kCorner[k1].s - kCentre.s),
-                              kCentre.t + fa * (kCorner[k].t - kCentre.t) +
-                                  fc * (kCorner[k1].t - kCentre.t)};
+                const Param w{
+                    kCentre.s + fa * (kCorner[k].s - kCentre.s) + fc * (kCorner[k1].s - kCentre.s),
+                    kCentre.t + fa * (kCorner[k].t - kCentre.t) + fc * (kCorner[k1].t - kCentre.t)};
                 const Vec3 x = centre + fa * (V[k] - centre) + fc * (V[k1] - centre);
                 Vec3 g;
                 const Param u = foot(b, x, w, 0.5 / m, g);
@@ -305,8 +303,10 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
                 gn = std::max(gn, std::abs(dn));
                 gt = std::max(gt, norm(q->g - dn * n[k]));
             }
-            const double ds = std::max({p0.u.s, p1.u.s, p2.u.s}) - std::min({p0.u.s, p1.u.s, p2.u.s});
-            const double dt = std::max({p0.u.t, p1.u.t, p2.u.t}) - std::min({p0.u.t, p1.u.t, p2.u.t});
+            const double ds =
+                std::max({p0.u.s, p1.u.s, p2.u.s}) - std::min({p0.u.s, p1.u.s, p2.u.s});
+            const double dt =
+                std::max({p0.u.t, p1.u.t, p2.u.t}) - std::min({p0.u.t, p1.u.t, p2.u.t});
             const double en = gn + remainder(nb[k], ds, dt), et = gt + remainder(full, ds, dt);
             bound = std::max(bound, std::sqrt(en * en + et * et));
         };
@@ -410,11 +410,11 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         const double lw = (param_of(r.s1) - param_of(r.s0)) / (es1 - es0);
         const double lt = (param_of(r.t1) - param_of(r.t0)) / (et1 - et0);
         const double R1 = remainder(full, lw, lt);
-        const double Rn1 = norm(nz) > 0
-                               ? remainder(derivative_bounds(
-                                               net, [&](Vec3 v) { return std::abs(dot(v, nz)); }),
-                                           lw, lt)
-                               : R1;
+        const double Rn1 =
+            norm(nz) > 0
+                ? remainder(derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, nz)); }),
+                            lw, lt)
+                : R1;
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     const int side_step = m / kSideRefinement;
@@ -543,7 +543,8 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
                 const Net local = make_net(extract_box(patch, s0, s1, t0, t1), centre);
-                const DerivativeBounds lf = derivative_bounds(local, [](Vec3 v) { return norm(v); });
+                const DerivativeBounds lf =
+                    derivative_bounds(local, [](Vec3 v) { return norm(v); });
                 const DerivativeBounds ln =
                     derivative_bounds(local, [&](Vec3 v) { return std::abs(dot(v, nk)); });
                 Rn = std::min(Rn, remainder(ln, 1, 1));
@@ -558,8 +559,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                 if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
             }
     }
-    return bound * (1 + 64 * kEps) +
-           rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
+    return bound * (1 + 64 * kEps) + rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
 }
 
 } // namespace seamless

@@ -71,7 +71,8 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
     const Vec3 centre = evaluate(b, 0.5, 0.5).point;
     double fan_error = -1;
-    const bool forced = cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
+    const bool forced =
+        cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
     const bool planar = !forced && planarity(b).planar(cx.options.eps1, cx.options.eps2) &&
                         fan_accepted(cx.options, b, centre, V, fan_error);
     // A side can only be halved while it spans more than one grid step.

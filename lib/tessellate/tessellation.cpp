@@ -162,8 +162,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         // Certified two-way distance of the subpatch and its fan (error_bound.h).
         fan.clear();
         for (const RingVertex& v : ring) fan.push_back({v.s, v.t, vr.positions[v.vertex]});
-        sp.error_bound =
-            certified_fan_bound(b, r, sp.depth, centre_point.point, fan, scale);
+        sp.error_bound = certified_fan_bound(b, r, sp.depth, centre_point.point, fan, scale);
         if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
         st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
 
@@ -226,7 +225,8 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
                 split.insert(subpatch_key(sp.patch, sp.rect));
     }
     t.stats.passes = pass + 1;
-    t.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    t.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return t;
 }
 

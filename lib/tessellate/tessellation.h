@@ -53,10 +53,10 @@ struct TessellationOptions {
 struct TessellationStats {
     int surfaces = 0, patches = 0, subpatches = 0, triangles = 0, vertices = 0;
     int shared_edges = 0, collapsed_edges = 0;
-    int nonplanar_subpatches = 0; // stopped by max_depth
-    int max_depth = 0;            // deepest subpatch
+    int nonplanar_subpatches = 0;         // stopped by max_depth
+    int max_depth = 0;                    // deepest subpatch
     double d_max = 0, eps1 = 0, eps2 = 0; // eps: 0 when the planarity test was off
-    double tolerance = 0;                  // requested (0: none), model units
+    double tolerance = 0;                 // requested (0: none), model units
     // Largest Subpatch::error_bound: the certified two-way distance between the
     // surfaces and the mesh, model units.
     double max_error_bound = 0;

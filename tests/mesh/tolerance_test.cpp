@@ -51,9 +51,8 @@ void check_tolerance(const Model& m, double relative, bool tight) {
 } // namespace
 
 TEST_CASE("a requested tolerance is certified and met within a factor 2", "[tolerance]") {
-    for (const char* name :
-         {"teapot.json", "teacup.json", "teaspoon.json", "torus.json", "sphere.json",
-          "torus_exact.json"})
+    for (const char* name : {"teapot.json", "teacup.json", "teaspoon.json", "torus.json",
+                             "sphere.json", "torus_exact.json"})
         for (double relative : {1e-2, 1e-3}) {
             const Model m = load_model(test::model_path(name));
             check_tolerance(m, relative, true);

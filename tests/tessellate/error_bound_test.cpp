@@ -161,7 +161,8 @@ void check_subpatches(const Model& m, const TessellationOptions& opt, int grid, 
             for (int u = 0; u <= n; ++u)
                 for (int v = 0; u + v <= n; ++v) {
                     const Vec3 x = a + (double(u) / n) * (bb - a) + (double(v) / n) * (c - a);
-                    to_surface = std::max(to_surface, distance_to_patch(b, x, 40, ns0, ns1, nt0, nt1));
+                    to_surface =
+                        std::max(to_surface, distance_to_patch(b, x, 40, ns0, ns1, nt0, nt1));
                 }
         }
         // Subpatch -> the patch's triangles.
@@ -175,13 +176,13 @@ void check_subpatches(const Model& m, const TessellationOptions& opt, int grid, 
                     d = std::min(d, distance(x, closest_on_triangle(x, tr.a, tr.b, tr.c)));
                 to_mesh = std::max(to_mesh, d);
             }
-        INFO("subpatch " << i << " triangles->patch " << to_surface << " bound "
-                         << sp.error_bound << ", subpatch->triangles " << to_mesh
-                         << " patch bound " << patch_bound[sp.patch]);
+        INFO("subpatch " << i << " triangles->patch " << to_surface << " bound " << sp.error_bound
+                         << ", subpatch->triangles " << to_mesh << " patch bound "
+                         << patch_bound[sp.patch]);
         CHECK(to_surface <= sp.error_bound);
         CHECK(to_mesh <= patch_bound[sp.patch]);
-        worst_ratio = std::max({worst_ratio, to_surface / sp.error_bound,
-                                to_mesh / patch_bound[sp.patch]});
+        worst_ratio =
+            std::max({worst_ratio, to_surface / sp.error_bound, to_mesh / patch_bound[sp.patch]});
     }
 }
 
@@ -266,9 +267,9 @@ TEST_CASE("certified_fan_bound counts a side vertex off the straight side", "[er
     b.at(1, 1) = HPoint::from({1, 1, 0}, 1);
     const int one = kParamOne, half = kParamOne / 2, quarter = kParamOne / 4;
     const Vec3 centre = evaluate(b, 0.5, 0.5).point;
-    std::vector<RingPoint> ring{{0, 0, b.corner(0)},       {half, 0, {0.5, 0, 0}},
-                                {one, 0, b.corner(1)},     {one, one, b.corner(2)},
-                                {0, one, b.corner(3)},     {0, quarter, {0, 0.25, 0}}};
+    std::vector<RingPoint> ring{{0, 0, b.corner(0)},   {half, 0, {0.5, 0, 0}},
+                                {one, 0, b.corner(1)}, {one, one, b.corner(2)},
+                                {0, one, b.corner(3)}, {0, quarter, {0, 0.25, 0}}};
     const ParamRect all;
     CHECK(certified_fan_bound(b, all, 0, centre, ring, 1) < 1e-12);
     ring[5].position = {0, 0.25, 0.01};
