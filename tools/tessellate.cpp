@@ -25,7 +25,7 @@ void add_tessellate(CLI::App& app, Action& action) {
                       "straight-midpoint edge vertices, fans of four or more triangles)");
     struct Args {
         std::string model, out, stats;
-        double eps1 = -1, eps2 = -1, seam_tolerance = -1;
+        double eps1 = -1, eps2 = -1, seam_tolerance = -1, tolerance = 0, angle = 0;
         int max_depth = TessellationOptions{}.max_depth;
         ModelLoadOptions load;
     };
@@ -46,6 +46,14 @@ void add_tessellate(CLI::App& app, Action& action) {
                     "surfaces whose boundaries are closer than this (model units) share their "
                     "vertices there (default 1e-9 * d_max)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--tolerance", args->tolerance,
+                    "requested deviation in model units: subdivide until the certified two-way "
+                    "distance between surfaces and mesh is at most this (planarity test off "
+                    "unless --eps1/--eps2 are given)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--angle", args->angle,
+                    "also bound the angle between the normals of neighbouring triangles, degrees")
+        ->check(CLI::Range(0.0, 180.0));
     cmd->add_option("--max-depth", args->max_depth, "most halvings per Bezier patch")
         ->check(CLI::Range(0, 60));
     cmd->add_option("--stats", args->stats, "also write the statistics as JSON to this file");
@@ -66,13 +74,18 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.eps2 = args->eps2;
             opt.max_depth = args->max_depth;
             opt.seam_tolerance = args->seam_tolerance;
+            opt.tolerance = args->tolerance;
+            opt.angle = args->angle * 3.14159265358979323846 / 180;
             const Tessellation t = tessellate(m, opt);
             write_mesh(args->out, t.mesh);
             const TessellationStats& s = t.stats;
             std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches
                       << " subpatches, " << s.triangles << " triangles, " << s.vertices
-                      << " vertices, max_error_bound " << s.max_error_bound << ", " << s.seconds
-                      << " s\n";
+                      << " vertices, certified bound " << s.max_error_bound;
+            if (s.tolerance > 0)
+                std::cout << " (tolerance " << s.tolerance << ", " << s.above_tolerance
+                          << " subpatches above)";
+            std::cout << ", " << s.seconds << " s\n";
             if (!args->stats.empty()) {
                 nlohmann::json js{{"model", args->model},
                                   {"output", args->out},
@@ -92,7 +105,11 @@ void add_tessellate(CLI::App& app, Action& action) {
                                   {"d_max", s.d_max},
                                   {"eps1", s.eps1},
                                   {"eps2", s.eps2},
+                                  {"tolerance", s.tolerance},
+                                  {"angle_degrees", args->angle},
                                   {"max_error_bound", s.max_error_bound},
+                                  {"certified_bound", s.max_error_bound},
+                                  {"above_tolerance", s.above_tolerance},
                                   {"seconds", s.seconds}};
                 write_text_atomically(args->stats, js.dump(2) + "\n");
             }

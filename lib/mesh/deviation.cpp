@@ -65,11 +65,12 @@ template <class F> void for_chunks(long long n, long long chunk, int threads, F&
     for (std::thread& th : pool) th.join();
 }
 
-// Local minimum of |S(s,t) - x| over the patch domain by damped Gauss-Newton
-// from (s, t), clamped to [0,1]^2; returns the smallest distance reached.
-double project(const BezierPatch& b, Vec3 x, double s, double t, int iterations) {
-    s = std::clamp(s, 0.0, 1.0);
-    t = std::clamp(t, 0.0, 1.0);
+// Local minimum of |S(u,v) - x| over the surface's domain by damped
+// Gauss-Newton from (u, v), clamped to the domain; returns the smallest
+// distance reached.
+double project(const BSplineSurface& b, Vec3 x, double u, double v, int iterations) {
+    const double u0 = b.u_min(), u1 = b.u_max(), v0 = b.v_min(), v1 = b.v_max();
+    double s = std::clamp(u, u0, u1), t = std::clamp(v, v0, v1);
     SurfacePoint sp = evaluate(b, s, t);
     double best = distance(sp.point, x);
     for (int it = 0; it < iterations && best > 0; ++it) {
@@ -84,7 +85,7 @@ double project(const BezierPatch& b, Vec3 x, double s, double t, int iterations)
         double ds = -(a22 * g1 - a12 * g2) / det, dt = -(a11 * g2 - a12 * g1) / det;
         bool improved = false;
         for (int halving = 0; halving < 6 && !improved; ++halving) {
-            const double ns = std::clamp(s + ds, 0.0, 1.0), nt = std::clamp(t + dt, 0.0, 1.0);
+            const double ns = std::clamp(s + ds, u0, u1), nt = std::clamp(t + dt, v0, v1);
             const SurfacePoint np = evaluate(b, ns, nt);
             const double d = distance(np.point, x);
             if (d < best) {
@@ -97,10 +98,16 @@ double project(const BezierPatch& b, Vec3 x, double s, double t, int iterations)
             ds *= 0.5;
             dt *= 0.5;
         }
-        if (!improved || std::max(std::abs(ds), std::abs(dt)) < 1e-15) break;
+        if (!improved || std::max(std::abs(ds) / (u1 - u0), std::abs(dt) / (v1 - v0)) < 1e-15)
+            break;
     }
     return best;
 }
+
+struct Sample {
+    int patch = 0;
+    double s = 0, t = 0;
+};
 
 int thread_count(int requested) {
     if (requested > 0) return requested;
@@ -110,14 +117,15 @@ int thread_count(int requested) {
 } // namespace
 
 double Deviation::max() const {
-    return std::max({surface_to_mesh.max, mesh_to_surface.max, mesh_same_parameter.max});
+    return std::max(surface_to_mesh.max, mesh_to_surface.max);
 }
 
-Deviation measure_deviation(const Model& model, const Tessellation& t,
-                            const DeviationOptions& options) {
+namespace {
+
+Deviation measure(const Model& model, const std::vector<BezierPatch>& patches,
+                  const TriangleMesh& mesh, std::vector<Sample> samples,
+                  const DeviationOptions& options) {
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<BezierPatch> patches = bezier_patches(model);
-    const TriangleMesh& mesh = t.mesh;
     const int threads = thread_count(options.threads);
     constexpr long long kChunk = 4096;
     Deviation out;
@@ -131,34 +139,23 @@ Deviation measure_deviation(const Model& model, const Tessellation& t,
         triangles.emplace_back(K::Point_3(a.x, a.y, a.z), K::Point_3(b.x, b.y, b.z),
                                K::Point_3(c.x, c.y, c.z));
     }
-    struct Sample {
-        int patch = 0;
-        double s = 0, t = 0;
-    };
-    std::vector<Sample> samples;
     const int n = std::max(2, options.patch_grid);
+    std::vector<Sample> grid;
+    grid.reserve(patches.size() * n * n + samples.size());
     for (int p = 0; p < static_cast<int>(patches.size()); ++p)
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j)
-                samples.push_back({p, double(i) / (n - 1), double(j) / (n - 1)});
-    const int k = std::max(0, options.subpatch_grid);
-    for (const Subpatch& sp : t.subpatches) {
-        const double s0 = param_of(sp.rect.s0), s1 = param_of(sp.rect.s1);
-        const double t0 = param_of(sp.rect.t0), t1 = param_of(sp.rect.t1);
-        for (int i = 0; i < k; ++i)
-            for (int j = 0; j < k; ++j)
-                samples.push_back(
-                    {sp.patch, s0 + (i + 0.5) / k * (s1 - s0), t0 + (j + 0.5) / k * (t1 - t0)});
-    }
+                grid.push_back({p, double(i) / (n - 1), double(j) / (n - 1)});
+    grid.insert(grid.end(), samples.begin(), samples.end());
     if (!triangles.empty()) {
         Tree tree(triangles.begin(), triangles.end());
         tree.build();
         tree.accelerate_distance_queries();
-        const long long count = static_cast<long long>(samples.size());
+        const long long count = static_cast<long long>(grid.size());
         std::vector<Accumulator> acc((count + kChunk - 1) / kChunk);
         for_chunks(count, kChunk, threads, [&](long long b, long long e, long long c) {
             for (long long i = b; i < e; ++i) {
-                const Sample& q = samples[i];
+                const Sample& q = grid[i];
                 const Vec3 p = evaluate(patches[q.patch], q.s, q.t).point;
                 acc[c].add(std::sqrt(tree.squared_distance(K::Point_3(p.x, p.y, p.z))));
             }
@@ -166,26 +163,25 @@ Deviation measure_deviation(const Model& model, const Tessellation& t,
         out.surface_to_mesh = combine(acc);
     }
 
-    // Mesh -> surface: barycentric samples of each triangle, on its Bezier patch.
-    std::vector<int> triangle_patch(mesh.triangles.size(), -1);
-    for (const Subpatch& sp : t.subpatches)
-        for (int f = sp.first_triangle; f < sp.first_triangle + sp.triangle_count; ++f)
-            triangle_patch[f] = sp.patch;
+    // Mesh -> surface: barycentric samples of each triangle, on its source surface.
+    const bool has_uv = mesh.corner_uvs.size() == mesh.triangles.size() &&
+                        mesh.triangle_surface.size() == mesh.triangles.size();
     std::vector<std::array<double, 3>> bary;
     const int level = std::max(1, options.triangle_level);
     for (int i = 0; i <= level; ++i)
         for (int j = 0; i + j <= level; ++j)
             bary.push_back({double(i) / level, double(j) / level, double(level - i - j) / level});
     if (level % 3 != 0) bary.push_back({1.0 / 3, 1.0 / 3, 1.0 / 3});
-    const long long count = mesh.triangle_count();
+    const long long count = has_uv ? mesh.triangle_count() : 0;
     const size_t chunks = static_cast<size_t>((count + kChunk - 1) / kChunk);
     std::vector<Accumulator> proj(chunks), same(chunks);
     for_chunks(count, kChunk, threads, [&](long long b, long long e, long long c) {
         for (long long f = b; f < e; ++f) {
-            const int pi = triangle_patch[f];
-            if (pi < 0 || mesh.corner_uvs.size() != mesh.triangles.size()) continue;
-            const BezierPatch& bp = patches[pi];
+            const int si = mesh.triangle_surface[f];
+            if (si < 0 || si >= static_cast<int>(model.surfaces.size())) continue;
+            const BSplineSurface& surf = model.surfaces[si];
             const auto& tri = mesh.triangles[f];
+            if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
             const auto& uv = mesh.corner_uvs[f];
             for (const auto& w : bary) {
                 Vec3 x{};
@@ -195,11 +191,9 @@ Deviation measure_deviation(const Model& model, const Tessellation& t,
                     u += w[m] * uv[m][0];
                     v += w[m] * uv[m][1];
                 }
-                const double s = std::clamp((u - bp.u0) / (bp.u1 - bp.u0), 0.0, 1.0);
-                const double tt = std::clamp((v - bp.v0) / (bp.v1 - bp.v0), 0.0, 1.0);
-                const double d_same = distance(evaluate(bp, s, tt).point, x);
+                const double d_same = distance(evaluate(surf, u, v).point, x);
                 same[c].add(d_same);
-                proj[c].add(std::min(d_same, project(bp, x, s, tt, options.newton_iterations)));
+                proj[c].add(std::min(d_same, project(surf, x, u, v, options.newton_iterations)));
             }
         }
     });
@@ -209,31 +203,26 @@ Deviation measure_deviation(const Model& model, const Tessellation& t,
     return out;
 }
 
-std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& options) {
-    std::vector<SweepRow> rows;
-    const double dm = d_max(model);
-    const int steps = std::max(1, options.steps_per_decade);
-    for (int k = 0; k <= options.decades * steps; ++k) {
-        const double factor = std::pow(10.0, options.first_decade - double(k) / steps);
-        if (!rows.empty()) {
-            // Triangles grow like 1/eps (deviation ~ h^2): predict from the last step.
-            double ratio = std::pow(10.0, 1.0 / steps);
-            if (rows.size() >= 2 && rows[rows.size() - 2].tess.triangles > 0)
-                ratio = std::max(ratio, double(rows.back().tess.triangles) /
-                                            rows[rows.size() - 2].tess.triangles);
-            if (rows.back().tess.triangles * ratio > double(options.max_triangles)) break;
-        }
-        TessellationOptions topt;
-        topt.eps1 = factor * 0.001 * dm;
-        topt.eps2 = factor * 0.02 * dm;
-        const Tessellation t = tessellate(model, topt);
-        SweepRow row;
-        row.factor = factor;
-        row.tess = t.stats;
-        row.deviation = measure_deviation(model, t, options.deviation);
-        rows.push_back(row);
+} // namespace
+
+Deviation measure_deviation(const Model& model, const TriangleMesh& mesh,
+                            const DeviationOptions& options) {
+    return measure(model, bezier_patches(model), mesh, {}, options);
+}
+
+Deviation measure_deviation(const Model& model, const Tessellation& t,
+                            const DeviationOptions& options) {
+    std::vector<Sample> samples;
+    const int k = std::max(0, options.subpatch_grid);
+    for (const Subpatch& sp : t.subpatches) {
+        const double s0 = param_of(sp.rect.s0), s1 = param_of(sp.rect.s1);
+        const double t0 = param_of(sp.rect.t0), t1 = param_of(sp.rect.t1);
+        for (int i = 0; i < k; ++i)
+            for (int j = 0; j < k; ++j)
+                samples.push_back(
+                    {sp.patch, s0 + (i + 0.5) / k * (s1 - s0), t0 + (j + 0.5) / k * (t1 - t0)});
     }
-    return rows;
+    return measure(model, bezier_patches(model), t.mesh, std::move(samples), options);
 }
 
 } // namespace seamless

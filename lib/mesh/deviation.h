@@ -5,12 +5,13 @@
 //   surface -> mesh: exact points S(s,t) on a grid of every Bezier patch and of
 //     every planar subpatch, to the closest point of the mesh (CGAL AABB tree);
 //   mesh -> surface: barycentric samples of every triangle, projected onto the
-//     triangle's Bezier patch by Newton's method from the parameter the
+//     triangle's B-spline surface by Newton's method from the parameter the
 //     corner_uvs interpolate (a local minimum distance), and the plain
-//     same-parameter distance |S(uv(x)) - x| (an upper estimate, which the
-//     parametric bound of error_bound.h bounds directly).
-// Both are lower estimates of the Hausdorff distance (finite samples) and must
-// stay below max_error_bound.
+//     same-parameter distance |S(uv(x)) - x| (an upper estimate of the
+//     distance to the surface, with the parametrisation's tangential drift:
+//     reported beside, not bounded).
+// The first two are lower estimates of the Hausdorff distance (finite samples)
+// and must stay below the certified bound max_error_bound (error_bound.h).
 #pragma once
 
 #include <seamless/model/model.h>
@@ -45,7 +46,8 @@ struct Deviation {
     DeviationStats mesh_to_surface;     // mesh points to their Newton projection
     DeviationStats mesh_same_parameter; // mesh points to S at their interpolated (u,v)
     double seconds = 0;
-    // Largest of the three maxima; <= the tessellation's max_error_bound.
+    // The measured two-way distance, max(surface_to_mesh, mesh_to_surface);
+    // <= the tessellation's max_error_bound.
     double max() const;
 };
 
@@ -53,27 +55,10 @@ struct Deviation {
 // mesh's corner_uvs are used).
 Deviation measure_deviation(const Model& model, const Tessellation& t,
                             const DeviationOptions& options = {});
-
-// One row of an accuracy-against-run-time sweep.
-struct SweepRow {
-    double factor = 0;      // eps1 = factor * 0.001 d_max, eps2 = factor * 0.02 d_max
-    TessellationStats tess; // triangles, seconds, max_error_bound, ...
-    Deviation deviation;
-    bool within_bound() const { return deviation.max() <= tess.max_error_bound; }
-};
-
-struct SweepOptions {
-    // factor = 10^(first_decade - k / steps_per_decade), k = 0 .. decades * steps_per_decade.
-    double first_decade = 1; // start at factor 10
-    int decades = 5;
-    int steps_per_decade = 2;
-    // Stop before a step whose predicted triangle count (the last count times
-    // the last growth ratio) exceeds this.
-    long long max_triangles = 2'000'000;
-    DeviationOptions deviation;
-};
-
-// Section 8's tolerances scaled together by factor over the decades.
-std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& options = {});
+// Any mesh of the model's surfaces (another tessellator's, for comparison):
+// triangle_surface and corner_uvs (the source surface's (u,v)) give each
+// triangle's surface; without them only surface -> mesh is measured.
+Deviation measure_deviation(const Model& model, const TriangleMesh& mesh,
+                            const DeviationOptions& options = {});
 
 } // namespace seamless

@@ -1,85 +1,573 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/planarity.h>
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
 
 namespace seamless {
 namespace {
 
-double binomial(int n, int k) {
-    double r = 1;
-    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// Bounds over [0,1]^2 of S' = S - c and its first and second partial
+// derivatives, measured by `mag` (the Euclidean norm, or |n . v| for a unit n).
+// X' = X - W c is the homogeneous form of S'; its derivatives' Bernstein
+// coefficients are differences of the control net, bounded by their largest
+// magnitude (convex hull property); the quotient rule with W >= wlo > 0 gives
+//   S_s  = (X'_s - S' W_s) / W,
+//   S_ss = (X'_ss - 2 S_s W_s - S' W_ss) / W,
+//   S_st = (X'_st - S_s W_t - S_t W_s - S' W_st) / W.
+struct DerivativeBounds {
+    double A = 0, B = 0, C = 0; // |S_ss|, |S_st|, |S_tt|
+};
+
+struct Net {
+    int p = 0, q = 0;
+    std::array<Vec3, BezierPatch::kMaxOrder * BezierPatch::kMaxOrder> x{}; // w (P - c)
+    std::array<double, BezierPatch::kMaxOrder * BezierPatch::kMaxOrder> w{};
+    std::array<Vec3, BezierPatch::kMaxOrder * BezierPatch::kMaxOrder> d{}; // P - c
+    double wlo = 1;
+    const Vec3& X(int i, int j) const { return x[i * BezierPatch::kMaxOrder + j]; }
+    double W(int i, int j) const { return w[i * BezierPatch::kMaxOrder + j]; }
+    const Vec3& D(int i, int j) const { return d[i * BezierPatch::kMaxOrder + j]; }
+};
+
+Net make_net(const BezierPatch& b, Vec3 c) {
+    Net n;
+    n.p = b.p;
+    n.q = b.q;
+    n.wlo = std::numeric_limits<double>::infinity();
+    for (int i = 0; i <= b.p; ++i)
+        for (int j = 0; j <= b.q; ++j) {
+            const HPoint& h = b.at(i, j);
+            const int k = i * BezierPatch::kMaxOrder + j;
+            n.x[k] = h.xyz() - h.w * c;
+            n.w[k] = h.w;
+            n.d[k] = h.point() - c;
+            n.wlo = std::min(n.wlo, h.w);
+        }
+    assert(n.wlo > 0);
+    return n;
+}
+
+template <class Mag> DerivativeBounds derivative_bounds(const Net& n, Mag&& mag) {
+    const int p = n.p, q = n.q;
+    double P0 = 0, Xs = 0, Xt = 0, Xss = 0, Xst = 0, Xtt = 0;
+    double Ws = 0, Wt = 0, Wss = 0, Wst = 0, Wtt = 0;
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
+            P0 = std::max(P0, mag(n.D(i, j)));
+            if (i < p) {
+                Xs = std::max(Xs, mag(n.X(i + 1, j) - n.X(i, j)));
+                Ws = std::max(Ws, std::abs(n.W(i + 1, j) - n.W(i, j)));
+            }
+            if (j < q) {
+                Xt = std::max(Xt, mag(n.X(i, j + 1) - n.X(i, j)));
+                Wt = std::max(Wt, std::abs(n.W(i, j + 1) - n.W(i, j)));
+            }
+            if (i + 1 < p) {
+                Xss = std::max(Xss, mag(n.X(i + 2, j) - 2 * n.X(i + 1, j) + n.X(i, j)));
+                Wss = std::max(Wss, std::abs(n.W(i + 2, j) - 2 * n.W(i + 1, j) + n.W(i, j)));
+            }
+            if (j + 1 < q) {
+                Xtt = std::max(Xtt, mag(n.X(i, j + 2) - 2 * n.X(i, j + 1) + n.X(i, j)));
+                Wtt = std::max(Wtt, std::abs(n.W(i, j + 2) - 2 * n.W(i, j + 1) + n.W(i, j)));
+            }
+            if (i < p && j < q) {
+                Xst = std::max(Xst,
+                               mag(n.X(i + 1, j + 1) - n.X(i + 1, j) - n.X(i, j + 1) + n.X(i, j)));
+                Wst = std::max(
+                    Wst, std::abs(n.W(i + 1, j + 1) - n.W(i + 1, j) - n.W(i, j + 1) + n.W(i, j)));
+            }
+        }
+    Xs *= p, Ws *= p, Xt *= q, Wt *= q;
+    Xss *= p * (p - 1), Wss *= p * (p - 1);
+    Xtt *= q * (q - 1), Wtt *= q * (q - 1);
+    Xst *= p * q, Wst *= p * q;
+    const double Ps = (Xs + P0 * Ws) / n.wlo, Pt = (Xt + P0 * Wt) / n.wlo;
+    DerivativeBounds r;
+    r.A = (Xss + 2 * Ps * Ws + P0 * Wss) / n.wlo;
+    r.B = (Xst + Ps * Wt + Pt * Ws + P0 * Wst) / n.wlo;
+    r.C = (Xtt + 2 * Pt * Wt + P0 * Wtt) / n.wlo;
+    // Rounding of the differences and products: relative, a few ulps each.
+    const double inflate = 1 + 64 * kEps;
+    r.A *= inflate, r.B *= inflate, r.C *= inflate;
     return r;
 }
 
-Vec3 bilinear(const std::array<Vec3, 4>& V, double s, double t) {
-    return (1 - s) * (1 - t) * V[0] + s * (1 - t) * V[1] + s * t * V[2] + (1 - s) * t * V[3];
+double remainder(const DerivativeBounds& d, double ds, double dt) {
+    return (d.A * ds * ds + 2 * d.B * ds * dt + d.C * dt * dt) / 8;
+}
+
+struct Param {
+    double s = 0, t = 0;
+};
+
+// One Gauss-Newton step from u (sp = S and its derivatives there) toward the
+// foot of x on S, each coordinate's step at most `limit` (near a pole the foot
+// is ill-determined), kept only when it brings S closer to x; clamped to
+// [0,1]^2. Returns whether it moved; u and sp follow.
+bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
+    const Vec3 r = x - sp.point;
+    const double a11 = dot(sp.du, sp.du), a22 = dot(sp.dv, sp.dv), a12 = dot(sp.du, sp.dv);
+    const double reg = 1e-12 * (a11 + a22);
+    const double g1 = dot(sp.du, r), g2 = dot(sp.dv, r);
+    const double det = (a11 + reg) * (a22 + reg) - a12 * a12;
+    if (!(det > 0) || !std::isfinite(det) || !(limit > 0)) return false;
+    const double ds = ((a22 + reg) * g1 - a12 * g2) / det, dt = ((a11 + reg) * g2 - a12 * g1) / det;
+    if (!std::isfinite(ds) || !std::isfinite(dt)) return false;
+    const Param v{std::clamp(u.s + std::clamp(ds, -limit, limit), 0.0, 1.0),
+                  std::clamp(u.t + std::clamp(dt, -limit, limit), 0.0, 1.0)};
+    if (v.s == u.s && v.t == u.t) return false;
+    const SurfacePoint sv = evaluate(b, v.s, v.t);
+    const Vec3 gv = sv.point - x;
+    if (!(dot(gv, gv) < dot(r, r))) return false;
+    u = v;
+    sp = sv;
+    return true;
+}
+
+Param foot(const BezierPatch& b, Vec3 x, Param u, double limit, Vec3& g) {
+    SurfacePoint sp = evaluate(b, u.s, u.t);
+    foot_step(b, x, u, sp, limit);
+    g = sp.point - x;
+    return u;
+}
+
+// Same along the line u(tau) = c0 + tau (c1 - c0), tau in [lo, hi].
+double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau, double lo,
+                    double hi, double limit, Vec3& g) {
+    auto at = [&](double z) { return Param{c0.s + z * (c1.s - c0.s), c0.t + z * (c1.t - c0.t)}; };
+    tau = std::clamp(tau, lo, hi);
+    const Param u = at(tau);
+    const SurfacePoint sp = evaluate(b, u.s, u.t);
+    g = sp.point - x;
+    const Vec3 d = (c1.s - c0.s) * sp.du + (c1.t - c0.t) * sp.dv;
+    const double dd = dot(d, d);
+    if (!(dd > 0) || !std::isfinite(dd)) return tau;
+    const double step = dot(d, x - sp.point) / dd;
+    if (!std::isfinite(step)) return tau;
+    const double z = std::clamp(tau + std::clamp(step, -limit, limit), lo, hi);
+    const Param v = at(z);
+    const Vec3 gv = evaluate(b, v.s, v.t).point - x;
+    if (!(dot(gv, gv) < dot(g, g))) return tau;
+    g = gv;
+    return z;
+}
+
+// Up to `iterations` steps toward the foot, the total move at most `limit`
+// per coordinate.
+Param foot_iterated(const BezierPatch& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
+    Param u = w;
+    SurfacePoint sp = evaluate(b, u.s, u.t);
+    for (int it = 0; it < iterations; ++it) {
+        const double left = limit - std::max(std::abs(u.s - w.s), std::abs(u.t - w.t));
+        if (!foot_step(b, x, u, sp, left)) break;
+    }
+    g = sp.point - x;
+    return u;
+}
+
+constexpr Param kCorner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+constexpr Param kCentre{0.5, 0.5};
+
+// A refined vertex: its parameter under phi and g = S(phi(w)) - F(w).
+struct Node {
+    Param u;
+    Vec3 g;
+};
+
+} // namespace
+
+namespace {
+
+struct FanResult {
+    double bound = 0, largest_g = 0;
+};
+
+FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
+                       const std::array<Vec3, 4>& n, const DerivativeBounds& full,
+                       const std::array<DerivativeBounds, 4>& nb);
+
+} // namespace
+
+double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, double target) {
+    const Net net = make_net(b, centre);
+    const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
+
+    // Unit normals of the fan triangles (any unit vector keeps the bound valid:
+    // degenerate triangles borrow the subpatch's corner normal).
+    std::array<Vec3, 4> n{};
+    const Vec3 diag = cross(V[2] - V[0], V[3] - V[1]);
+    for (int k = 0; k < 4; ++k) {
+        const Vec3 c = cross(V[k] - centre, V[(k + 1) % 4] - centre);
+        const double len = norm(c);
+        n[k] = len > 1e-300 && std::isfinite(len) ? c / len : normalize(diag);
+    }
+    std::array<DerivativeBounds, 4> nb{};
+    for (int k = 0; k < 4; ++k)
+        nb[k] = norm(n[k]) > 0
+                    ? derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, n[k])); })
+                    : full;
+
+    // m: the tangential remainder of an unrefined fan triangle (extents 1 x 1/2)
+    // against its normal remainder (about the geometric deviation) or the target.
+    double R1 = 0, Rn1 = 0;
+    for (int k = 0; k < 4; ++k) {
+        const double ds = k % 2 == 0 ? 1.0 : 0.5, dt = k % 2 == 0 ? 0.5 : 1.0;
+        R1 = std::max(R1, remainder(full, ds, dt));
+        Rn1 = std::max(Rn1, remainder(nb[k], ds, dt));
+    }
+    const double want = std::max(0.4 * Rn1, 0.2 * target);
+    int m = 1;
+    if (R1 > 0)
+        m = want > 0 ? static_cast<int>(std::ceil(std::sqrt(R1 / want))) : kMaxFanRefinement;
+    m = std::clamp(m, 1, kMaxFanRefinement);
+    if (target > 0 && m > 2) {
+        // Cheap first: m = 2 may already certify the target, or its refined
+        // vertices, about as far from the surface as it lies, already exceed it.
+        const FanResult r = fan_bound_at(b, centre, V, 2, n, full, nb);
+        if (r.bound <= target || r.largest_g > target) return r.bound;
+    }
+    return fan_bound_at(b, centre, V, m, n, full, nb).bound;
+}
+
+namespace {
+
+FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
+                       const std::array<Vec3, 4>& n, const DerivativeBounds& full,
+                       const std::array<DerivativeBounds, 4>& nb) {
+
+    // phi on the radial edges (centre to corner k), shared by two fan triangles.
+    constexpr int K = kMaxFanRefinement + 1;
+    Node radial[4][K];
+    for (int k = 0; k < 4; ++k)
+        for (int a = 0; a <= m; ++a) {
+            const double f = static_cast<double>(a) / m;
+            const Param w{kCentre.s + f * (kCorner[k].s - kCentre.s),
+                          kCentre.t + f * (kCorner[k].t - kCentre.t)};
+            const Vec3 x = centre + f * (V[k] - centre);
+            Param u = w;
+            Vec3 g;
+            if (a == 0 || a == m) {
+                u = a == 0 ? kCentre : kCorner[k];
+                g = evaluate(b, u.s, u.t).point - x;
+            } else {
+                u = foot(b, x, w, 0.5 / m, g);
+            }
+            radial[k][a] = {u, g};
+        }
+
+    double bound = 0, largest_g = 0;
+    Node grid[K][K]; // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre)
+    for (int k = 0; k < 4; ++k) {
+        const int k1 = (k + 1) % 4;
+        for (int a = 0; a <= m; ++a) grid[a][0] = radial[k][a];
+        for (int c = 0; c <= m; ++c) grid[0][c] = radial[k1][c];
+        // Side k: a + c = m, tau = c / m from corner k; monotone in tau.
+        double lo = 0;
+        for (int c = 1; c < m; ++c) {
+            const int a = m - c;
+            const double tau = static_cast<double>(c) / m;
+            const Vec3 x = V[k] + tau * (V[k1] - V[k]);
+            Vec3 g;
+            lo = foot_on_line(b, x, kCorner[k], kCorner[k1], tau, lo, 1.0, 0.5 / m, g);
+            const Param u{kCorner[k].s + lo * (kCorner[k1].s - kCorner[k].s),
+                          kCorner[k].t + lo * (kCorner[k1].t - kCorner[k].t)};
+            grid[a][c] = {u, g};
+        }
+        // Interior.
+        for (int a = 1; a < m; ++a)
+            for (int c = 1; a + c < m; ++c) {
+                const double fa = static_cast<double>(a) / m, fc = static_cast<double>(c) / m;
+                const Param w{
+                    kCentre.s + fa * (kCorner[k].s - kCentre.s) + fc * (kCorner[k1].s - kCentre.s),
+                    kCentre.t + fa * (kCorner[k].t - kCentre.t) + fc * (kCorner[k1].t - kCentre.t)};
+                const Vec3 x = centre + fa * (V[k] - centre) + fc * (V[k1] - centre);
+                Vec3 g;
+                const Param u = foot(b, x, w, 0.5 / m, g);
+                grid[a][c] = {u, g};
+            }
+        // Refined triangles: up (a,c),(a+1,c),(a,c+1); down (a+1,c),(a+1,c+1),(a,c+1).
+        auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
+            double gn = 0, gt = 0;
+            for (const Node* q : {&p0, &p1, &p2}) {
+                largest_g = std::max(largest_g, norm(q->g));
+                const double dn = dot(q->g, n[k]);
+                gn = std::max(gn, std::abs(dn));
+                gt = std::max(gt, norm(q->g - dn * n[k]));
+            }
+            const double ds =
+                std::max({p0.u.s, p1.u.s, p2.u.s}) - std::min({p0.u.s, p1.u.s, p2.u.s});
+            const double dt =
+                std::max({p0.u.t, p1.u.t, p2.u.t}) - std::min({p0.u.t, p1.u.t, p2.u.t});
+            const double en = gn + remainder(nb[k], ds, dt), et = gt + remainder(full, ds, dt);
+            bound = std::max(bound, std::sqrt(en * en + et * et));
+        };
+        for (int a = 0; a < m; ++a)
+            for (int c = 0; a + c < m; ++c) {
+                tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
+                if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
+            }
+    }
+    // Relative rounding of the sums above.
+    return {bound * (1 + 64 * kEps), largest_g};
 }
 
 } // namespace
 
-double bilinear_deviation(const BezierPatch& b) {
-    const std::array<Vec3, 4> C{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
-    const int p = b.p, q = b.q;
-    double dev = 0;
-    if (!b.rational) {
-        for (int i = 0; i <= p; ++i)
-            for (int j = 0; j <= q; ++j)
-                dev = std::max(dev,
-                               distance(b.point(i, j), bilinear(C, double(i) / p, double(j) / q)));
-        return dev;
-    }
-    // Corner (a, c) of the degree (1,1) factor: C[0] (0,0), C[1] (1,0), C[2] (1,1), C[3] (0,1).
-    auto corner = [&](int a, int c) { return C[a == 0 ? (c == 0 ? 0 : 3) : (c == 0 ? 1 : 2)]; };
-    double wmin = std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) wmin = std::min(wmin, b.at(i, j).w);
-    assert(wmin > 0);
-    for (int k = 0; k <= p + 1; ++k)
-        for (int l = 0; l <= q + 1; ++l) {
-            Vec3 c{};
-            for (int a = 0; a <= 1; ++a) {
-                const int i = k - a;
-                if (i < 0 || i > p) continue;
-                const double al = binomial(p, i) / binomial(p + 1, k);
-                for (int e = 0; e <= 1; ++e) {
-                    const int j = l - e;
-                    if (j < 0 || j > q) continue;
-                    const double be = binomial(q, j) / binomial(q + 1, l);
-                    const HPoint h = b.at(i, j);
-                    c += (al * be) * (h.xyz() - h.w * corner(a, e));
-                }
-            }
-            dev = std::max(dev, norm(c));
-        }
-    return dev / wmin;
-}
-
-double fan_deviation(const std::array<Vec3, 4>& V, Vec3 centre, std::span<const FanVertex> ring) {
-    const Vec3 twist = V[0] - V[1] + V[2] - V[3];
-    const double tw = norm(twist);
-    const double centre_off = distance(centre, bilinear(V, 0.5, 0.5));
-    const size_t n = ring.size();
-    double dev = 0;
-    for (size_t k = 0; k < n; ++k) {
-        const FanVertex& a = ring[k];
-        const FanVertex& b = ring[(k + 1) % n];
-        // |L - F| is linear on the triangle: its largest vertex value.
-        const double off = std::max({centre_off, distance(a.position, bilinear(V, a.s, a.t)),
-                                     distance(b.position, bilinear(V, b.s, b.t))});
-        // Interpolation error of s*t on the triangle (centre, a, b).
-        const double pa = std::abs((a.s - 0.5) * (a.t - 0.5));
-        const double pb = std::abs((b.s - 0.5) * (b.t - 0.5));
-        const double ab = std::abs((a.s - b.s) * (a.t - b.t));
-        dev = std::max(dev, off + tw * std::max({pa, pb, ab}) / 3.0);
-    }
-    return dev;
-}
-
 double rounding_allowance(int depth, double scale) {
-    return (8.0 * (depth + 8)) * std::numeric_limits<double>::epsilon() * scale;
+    return (8.0 * (depth + 8)) * kEps * scale;
+}
+
+BezierPatch extract_subpatch(const BezierPatch& patch, const ParamRect& r) {
+    return extract_box(patch, param_of(r.s0), param_of(r.s1), param_of(r.t0), param_of(r.t1));
+}
+
+BezierPatch extract_box(const BezierPatch& patch, double s0, double s1, double t0, double t1) {
+    BezierPatch cur = patch, lo, hi;
+    if (s0 > 0) {
+        split_u(cur, s0, lo, hi);
+        cur = hi;
+    }
+    if (s1 < 1) {
+        split_u(cur, (s1 - s0) / (1 - s0), lo, hi);
+        cur = lo;
+    }
+    if (t0 > 0) {
+        split_v(cur, t0, lo, hi);
+        cur = hi;
+    }
+    if (t1 < 1) {
+        split_v(cur, (t1 - t0) / (1 - t0), lo, hi);
+        cur = lo;
+    }
+    return cur;
+}
+
+namespace {
+
+// Sides shared by two fans are split into kSideRefinement pieces, the same
+// for both; phi is linear between those points. Inside, a fan triangle is
+// refined m = kSideRefinement * 2^k times (k chosen from its derivative bounds).
+constexpr int kSideRefinement = 2;
+constexpr int kMaxCertifyRefinement = 16;
+
+// phi at a mesh vertex, a function of its grid point and position alone, so
+// every fan sharing the vertex agrees and phi is continuous over the patch.
+// Vertices on the patch's sides stay; inner vertices move toward their foot,
+// at most the spacing of the coarsest dyadic grid line through them.
+Param param(const RingPoint& p) {
+    return {p.fs >= 0 ? p.fs : param_of(p.s), p.ft >= 0 ? p.ft : param_of(p.t)};
+}
+
+Node vertex_phi(const BezierPatch& b, const RingPoint& p) {
+    const int gs = p.s, gt = p.t;
+    const Vec3 x = p.position;
+    const Param w = param(p);
+    // A seam vertex of another patch lies on this patch's side: phi keeps it.
+    if (gs < 0 || gt < 0) return {w, evaluate(b, w.s, w.t).point - x};
+    Vec3 g = evaluate(b, w.s, w.t).point - x;
+    const bool s_side = gs == 0 || gs == kParamOne, t_side = gt == 0 || gt == kParamOne;
+    if (s_side && t_side) return {w, g};
+    auto spacing = [](int i) { return param_of(i & -i); }; // lowest set bit
+    const double limit = std::max(spacing(gs), spacing(gt));
+    if (s_side || t_side) return {w, g};
+    const Param u = foot_iterated(b, x, w, limit, 3, g);
+    return {u, g};
+}
+
+bool on_patch_side(const RingPoint& a, const RingPoint& b) {
+    return (a.s == b.s && (a.s == 0 || a.s == kParamOne)) ||
+           (a.t == b.t && (a.t == 0 || a.t == kParamOne));
+}
+
+} // namespace
+
+double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
+                           std::span<const RingPoint> ring, double scale) {
+    const size_t n = ring.size();
+    assert(n >= 3);
+    // Derivative bounds over the subpatch grown by its size on every side
+    // (phi may reach into the neighbours), or over the whole patch.
+    const long long ws = r.s1 - r.s0, wt = r.t1 - r.t0;
+    ParamRect e;
+    e.s0 = static_cast<int>(std::max<long long>(0, r.s0 - ws));
+    e.s1 = static_cast<int>(std::min<long long>(kParamOne, r.s1 + ws));
+    e.t0 = static_cast<int>(std::max<long long>(0, r.t0 - wt));
+    e.t1 = static_cast<int>(std::min<long long>(kParamOne, r.t1 + wt));
+    const double es0 = param_of(e.s0), es1 = param_of(e.s1);
+    const double et0 = param_of(e.t0), et1 = param_of(e.t1);
+    const BezierPatch grown = extract_subpatch(patch, e);
+    const Net net = make_net(grown, centre);
+    const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
+    std::optional<Net> whole;
+    DerivativeBounds whole_full;
+
+    // m: the tangential remainder of an unrefined fan triangle of the subpatch
+    // against its normal remainder (about the geometric deviation).
+    int m = kSideRefinement;
+    {
+        const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
+        const double lw = (param_of(r.s1) - param_of(r.s0)) / (es1 - es0);
+        const double lt = (param_of(r.t1) - param_of(r.t0)) / (et1 - et0);
+        const double R1 = remainder(full, lw, lt);
+        const double Rn1 =
+            norm(nz) > 0
+                ? remainder(derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, nz)); }),
+                            lw, lt)
+                : R1;
+        while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
+    }
+    const int side_step = m / kSideRefinement;
+    const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+    const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+    const Node centre_node{{sc, tc}, evaluate(patch, sc, tc).point - centre};
+    const double inner_limit =
+        0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
+
+    constexpr int K = kMaxCertifyRefinement + 1;
+    std::vector<std::array<Node, K>> radial(n);
+    for (size_t i = 0; i < n; ++i) {
+        radial[i][0] = centre_node;
+        radial[i][m] = vertex_phi(patch, ring[i]);
+        const Param p = param(ring[i]);
+        for (int a = 1; a < m; ++a) {
+            const double f = static_cast<double>(a) / m;
+            const Param w{sc + f * (p.s - sc), tc + f * (p.t - tc)};
+            const Vec3 x = centre + f * (ring[i].position - centre);
+            Vec3 g;
+            const Param u = foot_iterated(patch, x, w, inner_limit, 2, g);
+            radial[i][a] = {u, g};
+        }
+    }
+
+    const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
+    double bound = 0;
+    Node grid[K][K];
+    for (size_t k = 0; k < n; ++k) {
+        const size_t k1 = (k + 1) % n;
+        const RingPoint &P = ring[k], &Q = ring[k1];
+        Vec3 nk = cross(P.position - centre, Q.position - centre);
+        const double len = norm(nk);
+        nk = len > 1e-300 && std::isfinite(len) ? nk / len : normalize(diag);
+        const DerivativeBounds nb =
+            norm(nk) > 0 ? derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, nk)); })
+                         : full;
+        for (int a = 0; a <= m; ++a) grid[a][0] = radial[k][a];
+        for (int c = 0; c <= m; ++c) grid[0][c] = radial[k1][c];
+        // The side P Q: points in a canonical order (from the endpoint with the
+        // smaller grid point), the same for the fan on its other side.
+        const bool forward = std::pair(param(P).s, param(P).t) < std::pair(param(Q).s, param(Q).t);
+        const RingPoint& lo = forward ? P : Q;
+        const RingPoint& hi = forward ? Q : P;
+        const Node& nlo = forward ? grid[m][0] : grid[0][m];
+        const Node& nhi = forward ? grid[0][m] : grid[m][0];
+        const Param plo = param(lo), phi_ = param(hi);
+        const bool side = on_patch_side(lo, hi);
+        const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
+        double prev = 0;
+        Node canon[kSideRefinement + 1];
+        canon[0] = nlo;
+        canon[kSideRefinement] = nhi;
+        for (int j = 1; j < kSideRefinement; ++j) {
+            const double f = static_cast<double>(j) / kSideRefinement;
+            const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
+            const Vec3 x = lo.position + f * (hi.position - lo.position);
+            Node& node = canon[j];
+            if (side) {
+                // Along the patch's side, between phi(lo) and phi(hi).
+                prev = foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement,
+                                    node.g);
+                node.u = {nlo.u.s + prev * (nhi.u.s - nlo.u.s),
+                          nlo.u.t + prev * (nhi.u.t - nlo.u.t)};
+            } else {
+                node.u = foot_iterated(patch, x, w, seg_limit, 2, node.g);
+            }
+        }
+        // The refined points between: phi linear between the shared points.
+        for (int j = 1; j < m; ++j) {
+            const int c = forward ? j : m - j;
+            if (j % side_step == 0) {
+                grid[m - c][c] = canon[j / side_step];
+                continue;
+            }
+            const Node& a0 = canon[j / side_step];
+            const Node& a1 = canon[j / side_step + 1];
+            const double f = static_cast<double>(j % side_step) / side_step;
+            const double fx = static_cast<double>(j) / m;
+            Node node;
+            node.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
+            node.g = evaluate(patch, node.u.s, node.u.t).point -
+                     (lo.position + fx * (hi.position - lo.position));
+            grid[m - c][c] = node;
+        }
+        // Inside the fan triangle.
+        const Param pp = param(P), pq = param(Q);
+        for (int a = 1; a < m; ++a)
+            for (int c = 1; a + c < m; ++c) {
+                const double fa = static_cast<double>(a) / m, fc = static_cast<double>(c) / m;
+                const Param w{sc + fa * (pp.s - sc) + fc * (pq.s - sc),
+                              tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
+                const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
+                Vec3 g;
+                const Param u = foot_iterated(patch, x, w, inner_limit, 2, g);
+                grid[a][c] = {u, g};
+            }
+        auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
+            double gn = 0, gt = 0;
+            for (const Node* q : {&p0, &p1, &p2}) {
+                const double dn = dot(q->g, nk);
+                gn = std::max(gn, std::abs(dn));
+                gt = std::max(gt, norm(q->g - dn * nk));
+            }
+            const double s0 = std::min({p0.u.s, p1.u.s, p2.u.s});
+            const double s1 = std::max({p0.u.s, p1.u.s, p2.u.s});
+            const double t0 = std::min({p0.u.t, p1.u.t, p2.u.t});
+            const double t1 = std::max({p0.u.t, p1.u.t, p2.u.t});
+            double Rn = 0, R = 0;
+            if (s0 >= es0 && s1 <= es1 && t0 >= et0 && t1 <= et1) {
+                const double ds = (s1 - s0) / (es1 - es0), dt = (t1 - t0) / (et1 - et0);
+                Rn = remainder(nb, ds, dt);
+                R = remainder(full, ds, dt);
+            } else {
+                // phi left the grown rectangle: bounds over the whole patch.
+                if (!whole) {
+                    whole = make_net(patch, centre);
+                    whole_full = derivative_bounds(*whole, [](Vec3 v) { return norm(v); });
+                }
+                const DerivativeBounds wn =
+                    derivative_bounds(*whole, [&](Vec3 v) { return std::abs(dot(v, nk)); });
+                Rn = remainder(wn, s1 - s0, t1 - t0);
+                R = remainder(whole_full, s1 - s0, t1 - t0);
+            }
+            if (R > gn + Rn && s1 > s0 && t1 > t0) {
+                // The tangential remainder dominates (a pole's sector, a
+                // strongly varying speed): bounds over phi(sigma)'s box alone.
+                const Net local = make_net(extract_box(patch, s0, s1, t0, t1), centre);
+                const DerivativeBounds lf =
+                    derivative_bounds(local, [](Vec3 v) { return norm(v); });
+                const DerivativeBounds ln =
+                    derivative_bounds(local, [&](Vec3 v) { return std::abs(dot(v, nk)); });
+                Rn = std::min(Rn, remainder(ln, 1, 1));
+                R = std::min(R, remainder(lf, 1, 1));
+            }
+            const double en = gn + Rn, et = gt + R;
+            bound = std::max(bound, std::sqrt(en * en + et * et));
+        };
+        for (int a = 0; a < m; ++a)
+            for (int c = 0; a + c < m; ++c) {
+                tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
+                if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
+            }
+    }
+    return bound * (1 + 64 * kEps) + rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
 }
 
 } // namespace seamless

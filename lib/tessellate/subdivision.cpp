@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 namespace seamless {
 namespace {
@@ -26,13 +27,54 @@ bool split_in_u(const BezierPatch& b) {
     return lu >= lv;
 }
 
+// The tolerance and angle criteria on the four-triangle fan from the centre
+// over the corners; fan_error is set when the tolerance test ran to the end.
+bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre,
+                  const std::array<Vec3, 4>& V, double& fan_error) {
+    if (o.tolerance <= 0 && o.angle <= 0) return true;
+    static constexpr double kParam[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int k = 0; k < 4; ++k) {
+        const int k1 = (k + 1) % 4;
+        const Vec3 n = normalize(cross(V[k] - centre, V[k1] - centre));
+        if (!(norm(n) > 0)) continue; // a pole's empty triangle
+        if (o.tolerance > 0) {
+            // Quick rejection (not part of the proof): the surface at the
+            // triangle's parameter centroid far from its plane.
+            const double s = (0.5 + kParam[k][0] + kParam[k1][0]) / 3;
+            const double t = (0.5 + kParam[k][1] + kParam[k1][1]) / 3;
+            if (std::abs(dot(evaluate(b, s, t).point - centre, n)) > 1.2 * o.tolerance)
+                return false;
+        }
+        if (o.angle > 0) {
+            const double cos_half = std::cos(0.5 * o.angle);
+            for (const double* c : {kParam[k], kParam[k1]}) {
+                const Vec3 sn = normalize(evaluate(b, c[0], c[1]).normal());
+                if (norm(sn) > 0 && dot(sn, n) < cos_half) return false;
+            }
+            const Vec3 cn = normalize(evaluate(b, 0.5, 0.5).normal());
+            if (norm(cn) > 0 && dot(cn, n) < cos_half) return false;
+        }
+    }
+    if (o.tolerance > 0) {
+        fan_error = fan_bound(b, centre, V, o.tolerance);
+        return fan_error <= o.tolerance;
+    }
+    return true;
+}
+
 int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     const int id = static_cast<int>(cx.trees.nodes.size());
     cx.trees.nodes.emplace_back();
     cx.trees.nodes[id].control_hull = control_box(b);
     cx.trees.depth = std::max(cx.trees.depth, depth);
 
-    const bool planar = planarity(b).planar(cx.options.eps1, cx.options.eps2);
+    const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
+    const Vec3 centre = evaluate(b, 0.5, 0.5).point;
+    double fan_error = -1;
+    const bool forced =
+        cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
+    const bool planar = !forced && planarity(b).planar(cx.options.eps1, cx.options.eps2) &&
+                        fan_accepted(cx.options, b, centre, V, fan_error);
     // A side can only be halved while it spans more than one grid step.
     const bool can_u = r.s1 - r.s0 > 1, can_v = r.t1 - r.t0 > 1;
     if (planar || depth >= cx.options.max_depth || (!can_u && !can_v)) {
@@ -42,8 +84,9 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
         leaf.rect = r;
         leaf.depth = depth;
         leaf.planar = planar;
-        leaf.bilinear_error = bilinear_deviation(b);
-        for (int c = 0; c < 4; ++c) leaf.corners[c] = b.corner(c);
+        leaf.corners = V;
+        leaf.centre = centre;
+        leaf.fan_error = std::max(fan_error, 0.0);
         cx.trees.nodes[id].subpatch = static_cast<int>(cx.out.size());
         cx.out.push_back(leaf);
         return id;
@@ -73,6 +116,13 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
 }
 
 } // namespace
+
+std::uint64_t subpatch_key(int patch, const ParamRect& r) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (int x : {patch, r.s0, r.s1, r.t0, r.t1})
+        h = (h ^ static_cast<std::uint32_t>(x)) * 0xBF58476D1CE4E5B9ull + (h >> 29);
+    return h;
+}
 
 int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
               PatchTrees& trees, std::vector<Subpatch>& out) {

@@ -10,6 +10,8 @@
 #include <seamless/tessellate/patch_tree.h>
 
 #include <array>
+#include <cstdint>
+#include <unordered_set>
 #include <vector>
 
 namespace seamless {
@@ -28,8 +30,19 @@ struct ParamRect {
 };
 
 struct SubdivisionOptions {
-    double eps1 = 0, eps2 = 0; // planarity tolerances, model units (section 8)
-    int max_depth = 24;        // safeguard: at most this many halvings per patch
+    // Planarity tolerances, model units (section 8); infinity: not tested.
+    double eps1 = 0, eps2 = 0;
+    int max_depth = 24; // safeguard: at most this many halvings per patch
+    // > 0: also split until the certified fan bound (error_bound.h) is at most
+    // this, model units.
+    double tolerance = 0;
+    // > 0: also split until every fan triangle's normal is within angle / 2 of
+    // the surface normals at its three parameter corners (radians), so that two
+    // triangles meeting at a surface vertex differ by at most `angle`.
+    double angle = 0;
+    // Subpatches to split whatever the criteria say (subpatch_key): those a
+    // previous pass left above the tolerance. Not owned; may be null.
+    const std::unordered_set<std::uint64_t>* split = nullptr;
 };
 
 // A leaf of the split tree: a planar subpatch (or one stopped by max_depth).
@@ -39,20 +52,27 @@ struct Subpatch {
     ParamRect rect;
     int depth = 0;
     bool planar = true; // false when max_depth stopped the subdivision
-    // Bound on |S - B| over the subpatch, B the bilinear interpolant of
-    // `corners` (error_bound.h), and those corners: the subpatch's corner
-    // control points, in the order of BezierPatch::corner.
-    double bilinear_error = 0;
+    // The subpatch's corner points (order of BezierPatch::corner), its centre
+    // S(1/2, 1/2), and (with a tolerance, else 0) the fan_bound (error_bound.h)
+    // for the four triangles from that centre over those corners that accepted it.
     std::array<Vec3, 4> corners{};
+    Vec3 centre;
+    double fan_error = 0;
     // Filled by the triangulation: its fan triangles and their error bound.
     int first_triangle = 0, triangle_count = 0;
     double error_bound = 0;
 };
 
+// Identity of the subpatch `r` of patch `patch` (a hash: a collision only
+// splits one more subpatch).
+std::uint64_t subpatch_key(int patch, const ParamRect& r);
+
 // Splits `patch` (index `patch_index`) recursively, appending its tree's nodes
 // to `trees.nodes` (root first) and its planar subpatches to `out`; returns the
-// root node. The direction split is the less flat one (flatness_u/v); on a tie
-// (within a factor 2) the one whose corner edges are longer.
+// root node. A subpatch is a leaf when it passes every criterion of `options`
+// (planarity, tolerance, angle) or max_depth stops it. The direction split is
+// the less flat one (flatness_u/v); on a tie (within a factor 2) the one whose
+// corner edges are longer.
 int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
               PatchTrees& trees, std::vector<Subpatch>& out);
 

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <unordered_set>
 
 namespace seamless {
 namespace {
@@ -96,16 +97,19 @@ Tessellation tessellate(const Model& model, const TessellationOptions& options) 
 
 namespace {
 
-Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
-                                      const TessellationOptions& options) {
+Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
+                             const TessellationOptions& options,
+                             const std::unordered_set<std::uint64_t>& split) {
     const auto start = std::chrono::steady_clock::now();
     Tessellation out;
     TessellationStats& st = out.stats;
     const Box3 box = control_box(model);
     st.d_max = box.max_extent();
-    // Section 8: eps1 = 0.001 d_max, eps2 = 0.02 d_max.
-    st.eps1 = options.eps1 >= 0 ? options.eps1 : 0.001 * st.d_max;
-    st.eps2 = options.eps2 >= 0 ? options.eps2 : 0.02 * st.d_max;
+    const PlanarityTolerances paper =
+        options.tolerance > 0 ? PlanarityTolerances{} : paper_tolerances(st.d_max);
+    st.eps1 = options.eps1 >= 0 ? options.eps1 : paper.eps1;
+    st.eps2 = options.eps2 >= 0 ? options.eps2 : paper.eps2;
+    st.tolerance = std::max(options.tolerance, 0.0);
     st.surfaces = static_cast<int>(model.surfaces.size());
     st.patches = static_cast<int>(patches.size());
     const double scale =
@@ -114,7 +118,14 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
                                 std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)});
 
     // (a) Split trees by the planarity test alone (section 6).
-    const SubdivisionOptions sub{st.eps1, st.eps2, options.max_depth};
+    constexpr double kOff = std::numeric_limits<double>::infinity();
+    SubdivisionOptions sub;
+    sub.eps1 = st.eps1 > 0 || options.eps1 >= 0 ? st.eps1 : kOff;
+    sub.eps2 = st.eps2 > 0 || options.eps2 >= 0 ? st.eps2 : kOff;
+    sub.tolerance = st.tolerance;
+    sub.angle = options.angle;
+    sub.max_depth = options.max_depth;
+    sub.split = &split;
     out.trees.roots.reserve(patches.size());
     for (size_t i = 0; i < patches.size(); ++i)
         out.trees.roots.push_back(
@@ -162,7 +173,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     std::vector<int> scratch;
     std::vector<Inside> inside;
     std::vector<RingVertex> ring;
-    std::vector<FanVertex> fan;
+    std::vector<RingPoint> fan;
     std::vector<Vec3> ring_normals;
     for (Subpatch& sp : out.subpatches) {
         const BezierPatch& b = patches[sp.patch];
@@ -180,26 +191,12 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         vr.placed.push_back(1);
         const Vec3 centre_normal = unit_normal(b, sc, tc, sc, tc);
 
-        // Error bound (error_bound.h): |S - B_C| + |B_C - B_V| + |B_V - F|.
-        const double ws = param_of(r.s1) - param_of(r.s0), wt = param_of(r.t1) - param_of(r.t0);
+        // Certified two-way distance of the subpatch and its fan (error_bound.h).
         fan.clear();
-        std::array<Vec3, 4> V{};
-        int corner = 0;
-        double corner_shift = 0;
-        for (const RingVertex& v : ring) {
-            const Vec3 pos = vr.positions[v.vertex];
-            const bool is_corner = (v.s == r.s0 || v.s == r.s1) && (v.t == r.t0 || v.t == r.t1);
-            if (is_corner) {
-                V[corner] = pos;
-                corner_shift = std::max(corner_shift, distance(pos, sp.corners[corner]));
-                ++corner;
-            }
-            fan.push_back({(v.fs - param_of(r.s0)) / ws, (v.ft - param_of(r.t0)) / wt, pos});
-        }
-        assert(corner == 4);
-        sp.error_bound = sp.bilinear_error + corner_shift +
-                         fan_deviation(V, centre_point.point, fan) +
-                         rounding_allowance(sp.depth, scale);
+        for (const RingVertex& v : ring)
+            fan.push_back({v.s, v.t, vr.positions[v.vertex], v.fs, v.ft});
+        sp.error_bound = certified_fan_bound(b, r, sp.depth, centre_point.point, fan, scale);
+        if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
         st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
 
         ring_normals.clear();
@@ -245,6 +242,28 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     return out;
 }
 
+// With a tolerance: a subpatch accepted by its four-triangle bound can end
+// above the tolerance once neighbours move its corners onto their straight
+// edges; such subpatches are split in another pass (at most a few).
+Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
+                                      const TessellationOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    std::unordered_set<std::uint64_t> split;
+    Tessellation t;
+    int pass = 0;
+    for (;; ++pass) {
+        t = tessellate_pass(model, patches, options, split);
+        if (options.tolerance <= 0 || t.stats.above_tolerance == 0 || pass == 4) break;
+        for (const Subpatch& sp : t.subpatches)
+            if (sp.error_bound > t.stats.tolerance && sp.depth < options.max_depth)
+                split.insert(subpatch_key(sp.patch, sp.rect));
+    }
+    t.stats.passes = pass + 1;
+    t.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return t;
+}
+
 } // namespace
 
 Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patches,
@@ -268,6 +287,7 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     if (o.eps1 >= 0) o.eps1 *= down;
     if (o.eps2 >= 0) o.eps2 *= down;
     if (o.seam_tolerance >= 0) o.seam_tolerance *= down;
+    o.tolerance *= down;
     Tessellation t = tessellate_at_unit_scale(m, ps, o);
     auto grow = [&](Box3& b) {
         if (!b.empty()) b = {up * b.lo, up * b.hi};
@@ -278,14 +298,16 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
         grow(n.triangle_hull);
     }
     for (Subpatch& sp : t.subpatches) {
-        sp.bilinear_error *= up;
+        sp.fan_error *= up;
         sp.error_bound *= up;
+        sp.centre = up * sp.centre;
         for (Vec3& c : sp.corners) c = up * c;
     }
     t.stats.d_max *= up;
     t.stats.eps1 *= up;
     t.stats.eps2 *= up;
     t.stats.seam_tolerance *= up;
+    t.stats.tolerance = options.tolerance > 0 ? options.tolerance : 0.0;
     t.stats.max_error_bound *= up;
     return t;
 }

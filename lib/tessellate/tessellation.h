@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Crack-free adaptive tessellation of a model (paper section 6): every Bezier
-// patch is split by the planarity test (subdivision.h), shared boundaries are
-// matched across patches and surfaces (shared_edges.h, edge_graph.h), vertices follow the
+// patch is split by the planarity test, or until a requested deviation is
+// certified (subdivision.h, error_bound.h), shared boundaries are matched
+// across patches and surfaces (shared_edges.h, edge_graph.h), vertices follow the
 // straight-midpoint rule of Fig. 3, each planar subpatch becomes a fan from
 // its centre over every vertex on its sides, and the binary patch trees of
 // Proposition 11, remark 2 are built in the same pass.
@@ -16,11 +17,28 @@
 
 namespace seamless {
 
+// The paper's planarity tolerances (section 8), scaled by `factor`:
+// eps1 = factor * 0.001 * d_max, eps2 = factor * 0.02 * d_max, d_max the
+// largest extent of the bounding box of the model's control points.
+struct PlanarityTolerances {
+    double eps1 = 0, eps2 = 0;
+};
+inline PlanarityTolerances paper_tolerances(double d_max, double factor = 1) {
+    return {factor * 0.001 * d_max, factor * 0.02 * d_max};
+}
+
 struct TessellationOptions {
-    // Planarity tolerances in model units; < 0 selects the paper's defaults
-    // (section 8): eps1 = 0.001 * d_max, eps2 = 0.02 * d_max, d_max the largest
-    // extent of the bounding box of the model's control points.
+    // Planarity tolerances in model units; < 0 selects paper_tolerances(d_max)
+    // when no tolerance is given, and no planarity test when one is.
     double eps1 = -1, eps2 = -1;
+    // > 0: the requested deviation, model units: subdivide until every
+    // subpatch's certified two-way distance to its triangles (error_bound.h) is
+    // at most this.
+    double tolerance = 0;
+    // > 0: split until every fan triangle's normal is within angle / 2 of the
+    // exact normals at its corners, so neighbouring triangles differ by at most
+    // `angle` (radians).
+    double angle = 0;
     // Safeguard against subpatches that never become planar: at most this many
     // halvings below a Bezier patch (such subpatches are counted in the stats).
     int max_depth = 24;
@@ -43,12 +61,21 @@ struct TessellationOptions {
 struct TessellationStats {
     int surfaces = 0, patches = 0, subpatches = 0, triangles = 0, vertices = 0;
     int shared_edges = 0, collapsed_edges = 0;
-    int seams = 0, seam_vertices = 0; // boundaries matched geometrically (edge_graph.h)
-    int flipped_surfaces = 0;         // turned by orient_surfaces
-    int nonplanar_subpatches = 0;     // stopped by max_depth
-    int max_depth = 0;                // deepest subpatch
-    double d_max = 0, eps1 = 0, eps2 = 0, seam_tolerance = 0;
-    double max_error_bound = 0; // largest Subpatch::error_bound, model units
+    int seams = 0, seam_vertices = 0;     // boundaries matched geometrically (edge_graph.h)
+    int flipped_surfaces = 0;             // turned by orient_surfaces
+    int nonplanar_subpatches = 0;         // stopped by max_depth
+    int max_depth = 0;                    // deepest subpatch
+    double d_max = 0, eps1 = 0, eps2 = 0; // eps: 0 when the planarity test was off
+    double seam_tolerance = 0;
+    double tolerance = 0; // requested (0: none), model units
+    // Largest Subpatch::error_bound: the certified two-way distance between the
+    // surfaces and the mesh, model units.
+    double max_error_bound = 0;
+    // Subpatches whose final bound exceeds the tolerance (neighbours moved a
+    // corner onto their straight edge after the subpatch passed), or that
+    // max_depth stopped.
+    int above_tolerance = 0;
+    int passes = 1; // tessellation passes (a tolerance may need more than one)
     double seconds = 0;
 };
 

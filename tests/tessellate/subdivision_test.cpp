@@ -9,6 +9,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
+#include <unordered_set>
+
 using namespace seamless;
 
 namespace {
@@ -78,4 +81,48 @@ TEST_CASE("finer tolerances split more; max_depth bounds the splitting", "[subdi
     CHECK(count(10, 24) < count(30, 24));
     CHECK(count(30, 0) == patches.size());
     CHECK(count(30, 2) <= 4 * patches.size());
+}
+
+TEST_CASE("the tolerance criterion accepts a subpatch only with its fan bound within it",
+          "[subdivision]") {
+    const Model m = load_model(test::model_path("teacup.json"));
+    const auto patches = bezier_patches(m);
+    SubdivisionOptions opt;
+    opt.eps1 = opt.eps2 = std::numeric_limits<double>::infinity();
+    opt.tolerance = 1e-3 * d_max(m);
+    PatchTrees trees;
+    std::vector<Subpatch> out;
+    for (size_t i = 0; i < patches.size(); ++i)
+        subdivide(patches[i], static_cast<int>(i), opt, trees, out);
+    REQUIRE(!out.empty());
+    for (const Subpatch& sp : out) {
+        INFO("patch " << sp.patch << " depth " << sp.depth);
+        CHECK(sp.planar);
+        CHECK(sp.fan_error <= opt.tolerance);
+        CHECK(sp.fan_error > 0);
+    }
+    // A forced split goes one level deeper there.
+    std::unordered_set<std::uint64_t> split{subpatch_key(out[0].patch, out[0].rect)};
+    opt.split = &split;
+    PatchTrees trees2;
+    std::vector<Subpatch> out2;
+    subdivide(patches[out[0].patch], out[0].patch, opt, trees2, out2);
+    CHECK(out2.front().depth > out[0].depth);
+}
+
+TEST_CASE("an angle criterion splits further", "[subdivision]") {
+    const Model m = load_model(test::model_path("torus.json"));
+    const auto patches = bezier_patches(m);
+    SubdivisionOptions coarse;
+    coarse.eps1 = 0.01 * d_max(m);
+    coarse.eps2 = 0.2 * d_max(m);
+    SubdivisionOptions fine = coarse;
+    fine.angle = 5 * 3.14159265358979 / 180;
+    PatchTrees t1, t2;
+    std::vector<Subpatch> a, b;
+    for (size_t i = 0; i < patches.size(); ++i) {
+        subdivide(patches[i], static_cast<int>(i), coarse, t1, a);
+        subdivide(patches[i], static_cast<int>(i), fine, t2, b);
+    }
+    CHECK(b.size() > 2 * a.size());
 }
