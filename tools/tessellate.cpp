@@ -5,6 +5,7 @@
 #include <seamless/base/error.h>
 
 #include <seamless/base/atomic_file.h>
+#include <seamless/base/output_files.h>
 #include <seamless/mesh/mesh_io.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
@@ -51,13 +52,17 @@ void add_tessellate(CLI::App& app, Action& action) {
                 throw InputError(args->out, "",
                                  "unknown mesh extension '" + ext +
                                      "' (expected .off .obj .ply .stl .gltf .glb)");
+            // Every output checked (writable, not an input) before the work.
+            std::vector<std::filesystem::path> outs{args->out};
+            if (!args->stats.empty()) outs.push_back(args->stats);
+            OutputFiles files(outs, {args->model});
             const Model m = load_model(args->model);
             TessellationOptions opt;
             opt.eps1 = args->eps1;
             opt.eps2 = args->eps2;
             opt.max_depth = args->max_depth;
             const Tessellation t = tessellate(m, opt);
-            write_mesh(args->out, t.mesh);
+            write_mesh(files.staging(0), t.mesh);
             const TessellationStats& s = t.stats;
             std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches
                       << " subpatches, " << s.triangles << " triangles, " << s.vertices
@@ -80,8 +85,9 @@ void add_tessellate(CLI::App& app, Action& action) {
                                   {"eps2", s.eps2},
                                   {"max_error_bound", s.max_error_bound},
                                   {"seconds", s.seconds}};
-                write_text_atomically(args->stats, js.dump(2) + "\n");
+                write_text_atomically(files.staging(1), js.dump(2) + "\n");
             }
+            files.commit(); // both outputs, or neither
             return 0;
         };
     });
