@@ -51,7 +51,7 @@ report_time "Release build and ctest" "$t0"
 # check), the CLI, splines and intervals. The render and tessellation sweeps
 # are left to the Release run: under ASan they take many minutes.
 asan_targets=(seamless seamless_cli test_interval test_spline test_model test_mesh test_tools)
-asan_tests='^(interval|spline|model|mesh|tools): '
+asan_tests='^(interval|spline|model|mesh|tools):'
 if [ "${SEAMLESS_SKIP_SANITIZERS:-0}" != 1 ]; then
   t0=$(stamp)
   san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
