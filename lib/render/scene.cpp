@@ -245,7 +245,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
                 for (int i = 0; i < 3; ++i)
                     if (!(std::abs(p[i]) <= lim.max_coordinate)) {
                         std::ostringstream os;
-                        os << "moves a control point of " << so.model_path
+                        os << "puts a control point of " << so.model_path
                            << " beyond the scene coordinate limit of " << lim.max_coordinate
                            << " (docs/formats.md, Limits)";
                         r.fail(o.contains("transform") ? f + ".transform" : f, os.str());

@@ -52,12 +52,11 @@ TEST_CASE("Scene coordinates beyond the render limit are refused", "[scene][host
     test::write_file(dir / "far.json", scene_with(R"([{"model": "m.json", "transform":
                        [1e300,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}])"));
     CHECK_THAT(error_of(dir / "far.json"),
-               Catch::Contains("objects[0].transform: moves a control point of"));
+               Catch::Contains("objects[0].transform: puts a control point of"));
     test::write_file(dir / "eye.json", R"({"version": 1, "camera": {"eye": [0, -1.7e308, 1],
       "look_at": [0, 0, 0]}, "objects": [{"model": "m.json"}]})");
     CHECK_THAT(error_of(dir / "eye.json"), Catch::Contains("camera.eye[1]: coordinate"));
-    test::write_file(dir / "tiny.json",
-                     scene_with(R"([{"model": "m.json", "transform":
+    test::write_file(dir / "tiny.json", scene_with(R"([{"model": "m.json", "transform":
                        [1e-70,0,0,0, 0,1e-70,0,0, 0,0,1e-70,0, 0,0,0,1]}])"));
     CHECK_THAT(error_of(dir / "tiny.json"), Catch::Contains("objects: the objects span 1e-70"));
     test::write_file(dir / "ok.json", scene_with(R"([{"model": "m.json"}])"));

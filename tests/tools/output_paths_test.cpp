@@ -23,8 +23,13 @@ std::string content(const fs::path& p) {
     return ss.str();
 }
 
+// The path in double quotes, for the shell. (Built by appending: GCC 12 warns
+// -Wrestrict, wrongly, on "\"" + s + "\"".)
 std::string q(const fs::path& p) {
-    return "\"" + p.string() + "\"";
+    std::string s(1, '"');
+    s += p.string();
+    s += '"';
+    return s;
 }
 
 // Nothing but `expected` in `dir` (no staging files left behind either).
@@ -73,7 +78,7 @@ TEST_CASE("An output that is the same file as an input is refused, by inode not 
     CHECK(only_files(dir, {"m.obj", "s.json", "m.json", "hard.obj", "link.png"}));
 }
 
-TEST_CASE("--stats into a missing folder writes nothing, checked before the work",
+TEST_CASE("A stats file in a missing folder: nothing written, checked before the work",
           "[cli][hostile]") {
     const auto dir = test::scratch_dir("stats-missing-folder");
     test::write_file(dir / "m.json", kModel);
