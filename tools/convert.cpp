@@ -6,6 +6,7 @@
 
 #include <seamless/base/atomic_file.h>
 #include <seamless/base/error.h>
+#include <seamless/base/output_files.h>
 #include <seamless/model/model.h>
 
 #include <cctype>
@@ -35,9 +36,12 @@ void add_convert(CLI::App& app, Action& action) {
             if (ext != ".json")
                 throw InputError(args->out, "",
                                  "unknown model extension '" + ext + "' (convert writes .json)");
+            // The output checked (writable, not the input) before the work.
+            OutputFiles files({args->out}, {args->model});
             const Model m = load_model(args->model, args->load);
             print_warnings(m);
-            write_text_atomically(args->out, to_json(m));
+            write_text_atomically(files.staging(0), to_json(m));
+            files.commit();
             size_t approximated = 0;
             for (const SurfaceOrigin& o : m.origins) approximated += o.exact ? 0 : 1;
             std::cout << m.surfaces.size() << " surface" << (m.surfaces.size() == 1 ? "" : "s");

@@ -19,8 +19,10 @@ namespace {
 std::string summarise_knots(const std::vector<double>& U) {
     std::vector<std::pair<double, int>> runs;
     for (double t : U) {
-        if (!runs.empty() && runs.back().first == t) ++runs.back().second;
-        else runs.push_back({t, 1});
+        if (!runs.empty() && runs.back().first == t)
+            ++runs.back().second;
+        else
+            runs.push_back({t, 1});
     }
     std::ostringstream os;
     os.precision(6);
@@ -82,17 +84,17 @@ void add_info(CLI::App& app, Action& action) {
                 } else {
                     std::cout << s.name << ": degree " << s.degree_u << "x" << s.degree_v
                               << ", net " << s.size_u << "x" << s.size_v << ", "
-                              << (s.rational() ? "rational" : "polynomial")
-                              << ", knots_u " << summarise_knots(s.knots_u) << ", knots_v "
-                              << summarise_knots(s.knots_v) << ", " << patches
-                              << " Bezier patch" << (patches == 1 ? "" : "es");
+                              << (s.rational() ? "rational" : "polynomial") << ", knots_u "
+                              << summarise_knots(s.knots_u) << ", knots_v "
+                              << summarise_knots(s.knots_v) << ", " << patches << " Bezier patch"
+                              << (patches == 1 ? "" : "es");
                     if (origin) {
                         std::cout << ", from " << origin->kind;
                         if (origin->exact)
                             std::cout << " (exact)";
                         else
-                            std::cout << " (approximated, error "
-                                      << origin->approximation_error << ")";
+                            std::cout << " (approximated, error " << origin->approximation_error
+                                      << ")";
                     }
                     std::cout << "\n";
                 }

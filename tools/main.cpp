@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
         std::cerr << "error: out of memory\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
+        std::cerr << "error: " << seamless::printable(e.what()) << "\n";
         return 2;
     }
 }

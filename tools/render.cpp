@@ -6,6 +6,7 @@
 
 #include <seamless/base/atomic_file.h>
 #include <seamless/base/error.h>
+#include <seamless/base/output_files.h>
 #include <seamless/render/render.h>
 
 #include <nlohmann/json.hpp>
@@ -96,15 +97,24 @@ void add_render(CLI::App& app, Action& action) {
                 if (opt.width < 1 || opt.height < 1 || opt.width > 16384 || opt.height > 16384)
                     throw InputError("", "--size", "width and height must be in 1..16384");
             }
+            // Every output checked (writable, not an input) before the work.
+            std::vector<std::filesystem::path> outs{a->out};
+            if (!a->stats.empty()) outs.push_back(a->stats);
+            OutputFiles files(outs, {a->scene});
             const Scene scene = load_scene(a->scene);
             print_warnings(scene.model); // e.g. approximated STEP/IGES surfaces
+            std::vector<std::filesystem::path> models;
+            for (const SceneObject& o : scene.objects) models.push_back(o.model_path);
+            files.refuse_inputs(models);
             ProgressBar bar("render");
             opt.progress = [&bar](double f) { bar.update(f); };
             RenderStats st;
             const Image im = render(scene, opt, &st);
             bar.finish();
-            write_png(a->out, im);
-            if (!a->stats.empty()) write_text_atomically(a->stats, stats_json(st).dump(2) + "\n");
+            write_png(files.staging(0), im);
+            if (!a->stats.empty())
+                write_text_atomically(files.staging(1), stats_json(st).dump(2) + "\n");
+            files.commit(); // both outputs, or neither
             std::cout << st.method << ": " << st.width << "x" << st.height << ", " << st.levels
                       << " levels, " << st.seconds << " s, single-pixel fraction "
                       << st.single_pixel_fraction() << ", " << st.primary_rays

@@ -6,6 +6,7 @@
 #include <seamless/base/error.h>
 
 #include <seamless/base/atomic_file.h>
+#include <seamless/base/output_files.h>
 #include <seamless/mesh/mesh_io.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
@@ -67,6 +68,10 @@ void add_tessellate(CLI::App& app, Action& action) {
                 throw InputError(args->out, "",
                                  "unknown mesh extension '" + ext +
                                      "' (expected .off .obj .ply .stl .gltf .glb)");
+            // Every output checked (writable, not an input) before the work.
+            std::vector<std::filesystem::path> outs{args->out};
+            if (!args->stats.empty()) outs.push_back(args->stats);
+            OutputFiles files(outs, {args->model});
             const Model m = load_model(args->model, args->load);
             print_warnings(m);
             TessellationOptions opt;
@@ -77,7 +82,7 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.tolerance = args->tolerance;
             opt.angle = args->angle * 3.14159265358979323846 / 180;
             const Tessellation t = tessellate(m, opt);
-            write_mesh(args->out, t.mesh);
+            write_mesh(files.staging(0), t.mesh);
             const TessellationStats& s = t.stats;
             std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches
                       << " subpatches, " << s.triangles << " triangles, " << s.vertices
@@ -111,8 +116,9 @@ void add_tessellate(CLI::App& app, Action& action) {
                                   {"certified_bound", s.max_error_bound},
                                   {"above_tolerance", s.above_tolerance},
                                   {"seconds", s.seconds}};
-                write_text_atomically(args->stats, js.dump(2) + "\n");
+                write_text_atomically(files.staging(1), js.dump(2) + "\n");
             }
+            files.commit(); // both outputs, or neither
             return 0;
         };
     });

@@ -2,7 +2,11 @@
 // Bad input is reported as an InputError naming the file and the field, e.g.
 //   model.json: surfaces[2].knots_u: expected 11 numbers, got 10
 // Internal invariants are assertions; InputError is only for what a user handed us.
+// what() is one printable line: control characters and invalid UTF-8 that a
+// hostile file put in a name or token are escaped (printable.h).
 #pragma once
+
+#include <seamless/base/printable.h>
 
 #include <stdexcept>
 #include <string>
@@ -24,7 +28,7 @@ class InputError : public std::runtime_error {
                                const std::string& message) {
         std::string s = file;
         if (!field.empty()) s += (s.empty() ? "" : ": ") + field;
-        return s + (s.empty() ? "" : ": ") + message;
+        return printable(s + (s.empty() ? "" : ": ") + message);
     }
     std::string file_, field_, message_;
 };

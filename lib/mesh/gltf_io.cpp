@@ -2,13 +2,17 @@
 // glTF 2.0 writer and reader on tinygltf (the Debian package ships it compiled,
 // so no TINYGLTF_IMPLEMENTATION here).
 #include <seamless/base/error.h>
+#include <seamless/base/input_file.h>
 #include <seamless/mesh/gltf_io.h>
+#include <seamless/mesh/mesh_io.h>
 
 #include <tiny_gltf.h>
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
+#include <string_view>
 #include <tuple>
 
 namespace seamless {
@@ -167,8 +171,20 @@ namespace {
     throw InputError(file, field, message);
 }
 
-// Pointer to element i of `accessor` (checked against the buffer), with the
-// element size `elem` bytes.
+// a + b, or fail when it overflows size_t.
+size_t add(size_t a, size_t b, const std::string& file, const std::string& field) {
+    size_t r;
+    if (__builtin_add_overflow(a, b, &r)) fail(file, field, "byte offsets overflow");
+    return r;
+}
+size_t mul(size_t a, size_t b, const std::string& file, const std::string& field) {
+    size_t r;
+    if (__builtin_mul_overflow(a, b, &r)) fail(file, field, "byte offsets overflow");
+    return r;
+}
+
+// Elements of one accessor: element i starts at base + i * stride and has
+// `elem` bytes, every one of them inside the accessor's bufferView and buffer.
 struct AccessorView {
     const unsigned char* base = nullptr;
     size_t stride = 0, count = 0;
@@ -187,18 +203,73 @@ AccessorView view_of(const tinygltf::Model& model, int index, size_t elem, const
     if (v.buffer < 0 || v.buffer >= static_cast<int>(model.buffers.size()))
         fail(file, field, "bufferView has no valid buffer");
     const auto& b = model.buffers[v.buffer];
+    // Every sum and product below is checked: offsets near 2^64 must not wrap.
+    const size_t view_end = add(v.byteOffset, v.byteLength, file, field);
+    if (view_end > b.data.size()) fail(file, field, "bufferView exceeds its buffer");
     AccessorView r;
     r.stride = v.byteStride ? v.byteStride : elem;
+    if (r.stride < elem) fail(file, field, "byteStride smaller than an element");
     r.count = a.count;
-    const size_t start = v.byteOffset + a.byteOffset;
-    if (v.byteOffset + v.byteLength > b.data.size())
-        fail(file, field, "bufferView exceeds its buffer");
-    if (a.count > 0 && (start + (a.count - 1) * r.stride + elem > v.byteOffset + v.byteLength ||
-                        a.count > b.data.size()))
-        fail(file, field,
-             "accessor of " + std::to_string(a.count) + " elements exceeds its bufferView");
+    const size_t start = add(v.byteOffset, a.byteOffset, file, field);
+    if (a.count > 0) {
+        const size_t last = add(mul(a.count - 1, r.stride, file, field), elem, file, field);
+        if (add(start, last, file, field) > view_end)
+            fail(file, field,
+                 "accessor of " + std::to_string(a.count) + " elements exceeds its bufferView");
+    }
     r.base = b.data.data() + start;
     return r;
+}
+
+// Deepest nesting of JSON arrays and objects in `text`, or more than `limit`
+// as soon as that is reached. tinygltf parses "extras" recursively: nesting
+// beyond any real file's must be refused before it gets the text.
+size_t json_depth(std::string_view text, size_t limit) {
+    size_t depth = 0, deepest = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+            if (deepest > limit) return deepest;
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
+// Images are never decoded: a check needs none, and a small file can hold a
+// PNG that decodes to gigabytes.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
+    return true;
+}
+
+// External files a .gltf names (buffers, images) are read as input files are:
+// regular files only, at most the mesh size limit.
+bool read_external(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void*) {
+    try {
+        const std::string bytes = read_input_file(path, kMaxMeshFileBytes, "glTF buffer");
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const InputError& e) {
+        if (err) *err += e.what();
+        return false;
+    }
+}
+
+bool refuse_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "writing is not allowed while reading";
+    return false;
 }
 
 float read_float(const unsigned char* p) {
@@ -211,14 +282,46 @@ float read_float(const unsigned char* p) {
 
 TriangleMesh read_gltf(const std::filesystem::path& path) {
     const std::string file = path.string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail(file, "", "cannot read: no such file");
+    const std::string bytes = read_input_file(path, kMaxMeshFileBytes, "mesh");
+    const bool binary = path.extension() == ".glb" || path.extension() == ".GLB";
+    return parse_gltf(bytes, binary, file, path.parent_path());
+}
+
+TriangleMesh parse_gltf(const std::string& bytes, bool binary, const std::string& file,
+                        const std::filesystem::path& base_dir) {
+    // The JSON text: the whole .gltf, or a .glb's first chunk (its length is
+    // checked here only as far as the depth scan needs; tinygltf checks the rest).
+    std::string_view json_text = bytes;
+    if (binary && bytes.size() >= 20) {
+        uint32_t length;
+        std::memcpy(&length, bytes.data() + 12, 4);
+        json_text = json_text.substr(20, length);
+    }
+    constexpr size_t kMaxJsonDepth = 64;
+    if (json_depth(json_text, kMaxJsonDepth) > kMaxJsonDepth)
+        fail(file, "", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    if (bytes.size() > std::numeric_limits<unsigned int>::max())
+        fail(file, "", "file too large for the glTF reader");
+
     tinygltf::Model model;
     tinygltf::TinyGLTF gltf;
+    gltf.SetImageLoader(skip_image, nullptr);
+    gltf.SetFsCallbacks(
+        {tinygltf::FileExists, tinygltf::ExpandFilePath, read_external, refuse_write, nullptr});
     std::string err, warn;
-    const bool binary = path.extension() == ".glb" || path.extension() == ".GLB";
-    const bool ok = binary ? gltf.LoadBinaryFromFile(&model, &err, &warn, file)
-                           : gltf.LoadASCIIFromFile(&model, &err, &warn, file);
+    bool ok = false;
+    const std::string dir = base_dir.string();
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const auto size = static_cast<unsigned int>(bytes.size());
+    try {
+        ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, data, size, dir)
+                    : gltf.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception& e) { // tinygltf lets some std::out_of_range escape
+        err = e.what();
+        ok = false;
+    }
     if (!ok) {
         while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
         for (char& c : err)
@@ -226,6 +329,13 @@ TriangleMesh read_gltf(const std::filesystem::path& path) {
         fail(file, "", "not a valid glTF file" + (err.empty() ? "" : ": " + err));
     }
 
+    // Each accessor is read once, however many primitives share it; the
+    // triangles are bounded by what the file and its buffers could hold
+    // without sharing (one triangle per byte: a strip of 8-bit indices),
+    // so a small file cannot expand into gigabytes of triangles.
+    size_t max_triangles = bytes.size();
+    for (const auto& b : model.buffers) max_triangles += b.data.size();
+    std::map<int, int> first_vertex; // POSITION accessor -> index of its first vertex
     TriangleMesh mesh;
     bool all_normals = true, all_uvs = true;
     std::vector<std::array<Vec3, 3>> normals;
@@ -249,11 +359,16 @@ TriangleMesh read_gltf(const std::filesystem::path& path) {
             if (pa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || pa.type != TINYGLTF_TYPE_VEC3)
                 fail(file, field + ".POSITION", "expected float32 VEC3");
             const AccessorView pv = view_of(model, pit->second, 12, file, field + ".POSITION");
-            const int base = mesh.vertex_count();
             if (pv.count > (1u << 30)) fail(file, field, "absurd vertex count");
-            for (size_t i = 0; i < pv.count; ++i)
-                mesh.positions.push_back(
-                    {read_float(pv[i]), read_float(pv[i] + 4), read_float(pv[i] + 8)});
+            auto [known, first_use] = first_vertex.try_emplace(pit->second, mesh.vertex_count());
+            const int base = known->second;
+            if (first_use) {
+                if (mesh.positions.size() + pv.count > (1u << 30))
+                    fail(file, field, "more than 2^30 vertices in all");
+                for (size_t i = 0; i < pv.count; ++i)
+                    mesh.positions.push_back(
+                        {read_float(pv[i]), read_float(pv[i] + 4), read_float(pv[i] + 8)});
+            }
 
             // Corner order of the primitive.
             std::vector<uint32_t> order;
@@ -322,6 +437,11 @@ TriangleMesh read_gltf(const std::filesystem::path& path) {
                 has_u = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT &&
                         a.type == TINYGLTF_TYPE_VEC2 && uv.count == pv.count;
             }
+            if (mesh.triangles.size() + tris.size() > max_triangles)
+                fail(file, field,
+                     "primitives make more than " + std::to_string(max_triangles) +
+                         " triangles, one per byte of the file and its buffers (accessors "
+                         "shared by many primitives)");
             all_normals = all_normals && has_n;
             all_uvs = all_uvs && has_u;
             for (const auto& t : tris) {

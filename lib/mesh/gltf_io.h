@@ -6,6 +6,7 @@
 #include <seamless/tessellate/triangle_mesh.h>
 
 #include <filesystem>
+#include <string>
 
 namespace seamless {
 
@@ -20,6 +21,13 @@ void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, boo
 // Every triangle primitive (modes 4, 5, 6) of every mesh, as indexed, no welding;
 // triangle_surface is the glTF mesh index, surface_names the mesh names; corner
 // normals and uvs are read when every primitive has them.
+// Images are not decoded; external buffers are read as input files are
+// (regular files within the mesh size limit). Limits: JSON nesting depth 64,
+// at most one triangle per byte of the file and its buffers (docs/formats.md).
 TriangleMesh read_gltf(const std::filesystem::path& path);
+// The same from a file's bytes; `file` names it in messages, external buffers
+// are looked up in `base_dir`.
+TriangleMesh parse_gltf(const std::string& bytes, bool binary, const std::string& file,
+                        const std::filesystem::path& base_dir);
 
 } // namespace seamless

@@ -12,6 +12,7 @@
 // face exactly as the file indexes it.
 #include <seamless/base/atomic_file.h>
 #include <seamless/base/error.h>
+#include <seamless/base/input_file.h>
 #include <seamless/mesh/gltf_io.h>
 #include <seamless/mesh/mesh_io.h>
 
@@ -19,10 +20,10 @@
 #include <bit>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <string_view>
 
 namespace seamless {
@@ -36,18 +37,6 @@ std::string lower_extension(const fs::path& path) {
     return ext;
 }
 
-std::string read_file(const fs::path& path) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec))
-        throw InputError(path.string(), "", "cannot read: no such file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string(), "", "cannot open for reading");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) throw InputError(path.string(), "", "read failed");
-    return ss.str();
-}
-
 // ---------------------------------------------------------------------------
 // Number formatting and parsing.
 
@@ -55,6 +44,13 @@ void append_number(std::string& out, double v) {
     char buf[32];
     auto r = std::to_chars(buf, buf + sizeof buf, v);
     out.append(buf, r.ptr);
+}
+
+// A number as the shortest text that reads back to it ("nan", "1e+300"), for messages.
+std::string number_text(double v) {
+    std::string s;
+    append_number(s, v);
+    return s;
 }
 
 void append_point(std::string& out, Vec3 p) {
@@ -95,7 +91,7 @@ class Tokens {
     }
     bool at_end() const { return pos_ >= s_.size(); }
     size_t position() const { return pos_; }
-    int line() const { return line_; }
+    long long line() const { return line_; }
     [[noreturn]] void fail(const std::string& message) const {
         throw InputError(file_, "line " + std::to_string(line_), message);
     }
@@ -120,7 +116,7 @@ class Tokens {
     std::string_view s_;
     std::string file_;
     size_t pos_ = 0;
-    int line_ = 1;
+    long long line_ = 1; // a 2 GiB file may hold more lines than an int counts
 };
 
 // A count read from a header must be possible for a file of `size` bytes,
@@ -234,12 +230,26 @@ std::string format_off(const TriangleMesh& mesh) {
 // OBJ: "v x y z", "f a b c ..." with 1-based or negative indices, "a/t/n" forms;
 // "g name" groups map to triangle_surface when written by us.
 
-TriangleMesh read_obj(const std::string& text, const std::string& file) {
+// Statements of the OBJ format (Wavefront, "Object Files (.obj)", B1) that
+// carry no triangles: accepted and ignored. Anything else is an error.
+bool is_other_obj_statement(std::string_view k) {
+    static constexpr std::string_view known[] = {
+        "vt",       "vn",         "vp",        "l",      "p",      "g",    "o",     "s",
+        "mg",       "mtllib",     "usemtl",    "usemap", "maplib", "lod",  "bevel", "c_interp",
+        "d_interp", "shadow_obj", "trace_obj", "cstype", "deg",    "bmat", "step",  "curv",
+        "curv2",    "surf",       "parm",      "trim",   "hole",   "scrv", "sp",    "end",
+        "con",      "ctech",      "stech",     "call",   "csh"};
+    return std::find(std::begin(known), std::end(known), k) != std::end(known);
+}
+
+TriangleMesh read_obj(std::string_view text, const std::string& file) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3); // UTF-8 byte order mark
     Tokens in(text, file);
     TriangleMesh mesh;
     std::vector<long long> face;
     do {
         auto key = in.next_in_line();
+        if (key.empty() || key[0] == '#') continue;
         if (key == "v") {
             Vec3 p;
             p.x = in.number(in.next_in_line());
@@ -262,6 +272,8 @@ TriangleMesh read_obj(const std::string& text, const std::string& file) {
             }
             if (face.size() < 3) in.fail("face with fewer than 3 vertices");
             add_polygon(mesh, face);
+        } else if (!is_other_obj_statement(key)) {
+            in.fail("unknown OBJ statement '" + std::string(key) + "'");
         }
     } while (in.next_line());
     return mesh;
@@ -421,6 +433,15 @@ TriangleMesh read_ply(const std::string& text, const std::string& file) {
     bool have_vertices = false;
     const auto* data = reinterpret_cast<const unsigned char*>(text.data());
     size_t pos = in.position();
+    // Each element takes at least one byte per binary scalar, two per ascii one
+    // ("0 "): a count the body cannot hold is refused before reserving for it.
+    for (const PlyElement& e : elements) {
+        size_t min_bytes = 0;
+        for (const PlyProperty& p : e.properties)
+            min_bytes += ascii ? 2 : ply_size(p.list ? p.count_type : p.type);
+        if (min_bytes > 0)
+            checked_count(file, "element " + e.name, e.count, text.size() - pos, min_bytes);
+    }
     // One scalar from the body, ascii or binary.
     auto value = [&](PlyType t) -> double {
         if (ascii) {
@@ -454,30 +475,35 @@ TriangleMesh read_ply(const std::string& text, const std::string& file) {
         }
         if (is_face && ifaces < 0)
             throw InputError(file, "element face", "needs a vertex_indices list");
-        for (long long i = 0; i < e.count; ++i) {
+        for (long long i = 0; i < (e.properties.empty() ? 0 : e.count); ++i) {
             Vec3 p;
             for (size_t k = 0; k < e.properties.size(); ++k) {
                 const auto& prop = e.properties[k];
                 if (prop.list) {
+                    // Range and integrality are checked on the double, before any
+                    // conversion (nan or 1e300 converted to an integer is undefined).
                     const double n = value(prop.count_type);
-                    if (n < 0 || n > 1000000)
+                    if (!(n >= 0 && n <= 1000000) || n != std::floor(n))
                         throw InputError(file, e.name + " " + std::to_string(i),
-                                         "list of " + std::to_string(n) + " entries");
+                                         "list count " + number_text(n) +
+                                             " is not an integer in 0..1000000");
                     const bool keep = is_face && static_cast<int>(k) == ifaces;
                     if (keep) face.clear();
                     for (int j = 0; j < static_cast<int>(n); ++j) {
                         const double v = value(prop.type);
-                        if (keep) face.push_back(static_cast<long long>(v));
+                        if (!keep) continue;
+                        if (!have_vertices || !(v >= 0 && v < mesh.vertex_count()) ||
+                            v != std::floor(v))
+                            throw InputError(file, "face " + std::to_string(i),
+                                             "vertex index " + number_text(v) +
+                                                 " is not an index in [0, " +
+                                                 std::to_string(mesh.vertex_count()) + ")");
+                        face.push_back(static_cast<long long>(v));
                     }
                     if (keep) {
                         if (face.size() < 3)
                             throw InputError(file, "face " + std::to_string(i),
                                              "fewer than 3 vertices");
-                        for (long long v : face)
-                            if (!have_vertices || v < 0 || v >= mesh.vertex_count())
-                                throw InputError(file, "face " + std::to_string(i),
-                                                 "vertex index " + std::to_string(v) +
-                                                     " out of range");
                         add_polygon(mesh, face);
                     }
                 } else {
@@ -540,24 +566,55 @@ TriangleMesh read_stl(const std::string& text, const std::string& file) {
         }
         return mesh;
     }
+    // ASCII STL, strictly: one or more "solid [name]" ... "endsolid [name]",
+    // each holding facets "facet normal nx ny nz / outer loop / vertex x y z
+    // (three times) / endloop / endfacet". Anything else is an error.
     Tokens in(text, file);
-    int corners = 0;
+    auto expect = [&](std::string_view want) {
+        const auto t = in.next();
+        if (t != want)
+            in.fail("expected '" + std::string(want) + "', got " +
+                    (t.empty() ? std::string("the end of the file") : "'" + std::string(t) + "'"));
+    };
     for (auto t = in.next(); !t.empty(); t = in.next()) {
-        if (t == "vertex") {
-            Vec3 p;
-            p.x = in.number(in.next());
-            p.y = in.number(in.next());
-            p.z = in.number(in.next());
-            mesh.positions.push_back(p);
-            ++corners;
-        } else if (t == "endloop") {
-            if (corners != 3) in.fail("facet with " + std::to_string(corners) + " vertices");
+        if (t != "solid") in.fail("expected 'solid', got '" + std::string(t) + "'");
+        in.next_line(); // the solid's name
+        for (;;) {
+            const auto k = in.next();
+            if (k == "endsolid") {
+                in.next_line();
+                break;
+            }
+            if (k != "facet")
+                in.fail(k.empty() ? std::string("file ends inside a solid (no 'endsolid')")
+                                  : "expected 'facet' or 'endsolid', got '" + std::string(k) + "'");
+            expect("normal");
+            for (int i = 0; i < 3; ++i) in.number(in.next());
+            expect("outer");
+            expect("loop");
+            for (int c = 0; c < 3; ++c) {
+                const auto v = in.next();
+                if (v == "endloop") in.fail("facet with " + std::to_string(c) + " vertices");
+                if (v != "vertex")
+                    in.fail("expected 'vertex', got " + (v.empty()
+                                                             ? std::string("the end of the file")
+                                                             : "'" + std::string(v) + "'"));
+                Vec3 p;
+                p.x = in.number(in.next());
+                p.y = in.number(in.next());
+                p.z = in.number(in.next());
+                mesh.positions.push_back(p);
+            }
+            const auto e = in.next();
+            if (e == "vertex") in.fail("facet with more than 3 vertices");
+            if (e != "endloop")
+                in.fail("expected 'endloop', got " + (e.empty() ? std::string("the end of the file")
+                                                                : "'" + std::string(e) + "'"));
+            expect("endfacet");
             const int b = mesh.vertex_count() - 3;
             mesh.triangles.push_back({b, b + 1, b + 2});
-            corners = 0;
         }
     }
-    if (corners != 0) in.fail("file ends inside a facet");
     return mesh;
 }
 
@@ -613,6 +670,28 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
     });
 }
 
+TriangleMesh parse_mesh(const std::string& bytes, const std::string& format,
+                        const std::string& file, const std::filesystem::path& base_dir) {
+    std::string ext = format;
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!is_mesh_extension(ext))
+        throw InputError(file, "",
+                         "unknown mesh extension '" + ext +
+                             "' (expected .off .obj .ply .stl .gltf .glb)");
+    TriangleMesh mesh = naming_file_on_oom(file, [&] {
+        return ext == ".gltf"  ? parse_gltf(bytes, false, file, base_dir)
+               : ext == ".glb" ? parse_gltf(bytes, true, file, base_dir)
+               : ext == ".off" ? read_off(bytes, file)
+               : ext == ".obj" ? read_obj(bytes, file)
+               : ext == ".ply" ? read_ply(bytes, file)
+                               : read_stl(bytes, file);
+    });
+    validate(mesh, file);
+    // A file with nothing to check is never a clean mesh.
+    if (mesh.triangles.empty()) throw InputError(file, "", "holds no triangles");
+    return mesh;
+}
+
 TriangleMesh read_mesh(const std::filesystem::path& path) {
     const std::string ext = lower_extension(path);
     const std::string file = path.string();
@@ -620,18 +699,8 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
         throw InputError(file, "",
                          "unknown mesh extension '" + ext +
                              "' (expected .off .obj .ply .stl .gltf .glb)");
-    TriangleMesh mesh;
-    if (ext == ".gltf" || ext == ".glb") {
-        mesh = read_gltf(path);
-    } else {
-        const std::string text = read_file(path);
-        mesh = ext == ".off"   ? read_off(text, file)
-               : ext == ".obj" ? read_obj(text, file)
-               : ext == ".ply" ? read_ply(text, file)
-                               : read_stl(text, file);
-    }
-    validate(mesh, file);
-    return mesh;
+    const std::string bytes = read_input_file(path, kMaxMeshFileBytes, "mesh");
+    return parse_mesh(bytes, ext, file, path.parent_path());
 }
 
 } // namespace seamless

@@ -2,23 +2,22 @@
 #include <seamless/model/model.h>
 
 #include <seamless/base/error.h>
+#include <seamless/base/input_file.h>
 #include <seamless/model/step_iges.h>
 #include <seamless/spline/knot_insertion.h>
 
-#include <cerrno>
+#include <charconv>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <sstream>
 
 namespace seamless {
 
 namespace {
+// The shortest text that reads back to x (std::to_chars): "0.2", "1.7e+308".
 std::string fmt(double x) {
-    std::ostringstream os;
-    os.precision(17);
-    os << x;
-    return os.str();
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, r.ptr);
 }
 
 void validate_knots(int degree, int n, const std::vector<double>& U, const std::string& file,
@@ -31,6 +30,10 @@ void validate_knots(int degree, int n, const std::vector<double>& U, const std::
     for (size_t k = 0; k < U.size(); ++k) {
         if (!std::isfinite(U[k]))
             throw InputError(file, field + "[" + std::to_string(k) + "]", "not a finite number");
+        if (std::abs(U[k]) > kMaxCoordinate)
+            throw InputError(file, field + "[" + std::to_string(k) + "]",
+                             "knot " + fmt(U[k]) + " beyond the limit of " + fmt(kMaxCoordinate) +
+                                 " (docs/formats.md, Limits)");
         if (k > 0 && U[k] < U[k - 1])
             throw InputError(file, field + "[" + std::to_string(k) + "]",
                              "knots decrease (" + fmt(U[k]) + " after " + fmt(U[k - 1]) + ")");
@@ -47,8 +50,8 @@ void validate_knots(int degree, int n, const std::vector<double>& U, const std::
     if (!(U[degree] < U[n]))
         throw InputError(file, field,
                          "empty domain [" + fmt(U[degree]) + ", " + fmt(U[n]) + "] (knots[" +
-                             std::to_string(degree) + "] must be below knots[" +
-                             std::to_string(n) + "])");
+                             std::to_string(degree) + "] must be below knots[" + std::to_string(n) +
+                             "])");
 }
 } // namespace
 
@@ -70,10 +73,19 @@ void validate_surface(const BSplineSurface& s, const std::string& file, const st
         throw InputError(file, pre + "control_points",
                          "expected " + std::to_string(n) + " points, got " +
                              std::to_string(s.points.size()));
-    for (size_t k = 0; k < n; ++k)
-        if (!is_finite(s.points[k]))
+    for (size_t k = 0; k < n; ++k) {
+        const Vec3 p = s.points[k];
+        if (!is_finite(p))
             throw InputError(file, pre + "control_points[" + std::to_string(k) + "]",
                              "not a finite point");
+        for (int i = 0; i < 3; ++i)
+            if (std::abs(p[i]) > kMaxCoordinate)
+                throw InputError(file,
+                                 pre + "control_points[" + std::to_string(k) + "][" +
+                                     std::to_string(i) + "]",
+                                 "coordinate " + fmt(p[i]) + " beyond the limit of " +
+                                     fmt(kMaxCoordinate) + " (docs/formats.md, Limits)");
+    }
     if (!s.weights.empty()) {
         if (s.weights.size() != n)
             throw InputError(file, pre + "weights",
@@ -84,6 +96,10 @@ void validate_surface(const BSplineSurface& s, const std::string& file, const st
                 throw InputError(file, pre + "weights[" + std::to_string(k) + "]",
                                  "weight " + fmt(s.weights[k]) +
                                      " is not a positive finite number");
+            else if (s.weights[k] > kMaxWeight || s.weights[k] < 1 / kMaxWeight)
+                throw InputError(file, pre + "weights[" + std::to_string(k) + "]",
+                                 "weight " + fmt(s.weights[k]) + " outside " + fmt(1 / kMaxWeight) +
+                                     ".." + fmt(kMaxWeight) + " (docs/formats.md, Limits)");
     }
 }
 
@@ -96,20 +112,14 @@ Model load_model(const std::filesystem::path& path, const ModelLimits& limits) {
 Model load_model(const std::filesystem::path& path, const ModelLoadOptions& options) {
     const ModelLimits& limits = options.limits;
     const std::string file = path.string();
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(file, "", "is a directory, not a model file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(file, "", "cannot open file (" + std::string(std::strerror(errno)) + ")");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) throw InputError(file, "", "read error");
-    const std::string text = ss.str();
+    const std::string text = read_input_file(path, limits.max_file_bytes, "model");
     std::string ext = path.extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    Model m = is_step_iges_extension(ext) ? read_step_iges(path, options)
-              : ext == ".bpt"             ? parse_bpt(text, file, limits)
-                                          : parse_model_json(text, file, limits);
+    Model m = naming_file_on_oom(file, [&] {
+        return is_step_iges_extension(ext) ? read_step_iges(path, options)
+               : ext == ".bpt"             ? parse_bpt(text, file, limits)
+                                           : parse_model_json(text, file, limits);
+    });
     m.source = file;
     return m;
 }
@@ -152,7 +162,9 @@ Box3 control_box(const Model& m) {
     return b;
 }
 
-double d_max(const Model& m) { return control_box(m).max_extent(); }
+double d_max(const Model& m) {
+    return control_box(m).max_extent();
+}
 
 std::vector<BezierPatch> bezier_patches(const Model& m) {
     std::vector<BezierPatch> out;

@@ -9,6 +9,7 @@
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/spline/bspline_surface.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -34,8 +35,22 @@ struct Model {
 // Limits that reject absurd sizes before anything is allocated for them.
 struct ModelLimits {
     long long max_surfaces = 1'000'000;
-    long long max_control_points = 50'000'000; // per surface, nu * nv
+    long long max_control_points = 50'000'000;               // per surface, nu * nv
+    std::uintmax_t max_file_bytes = std::uintmax_t(1) << 30; // 1 GiB
 };
+
+// Largest magnitude of a control point coordinate, 2^510 (about 3.4e153).
+// Coordinates up to it keep every difference of two points below 2^511, so
+// squared distances (3 * 2^1022) and cross products (2^1023) of any two
+// points of a model or of its mesh are finite doubles: d_max, the mesh checks
+// and the deviation measures can be computed without overflow. Tessellation
+// itself works at a power-of-two scale where d_max is near 1 (exact), so any
+// magnitude within the limit tessellates to the same mesh, scaled. The
+// renderer needs a stricter bound; scenes apply it (scene.h).
+inline constexpr double kMaxCoordinate = 0x1p510;
+// Weights lie in [2^-256, 2^256]: homogeneous points w * P stay below 2^766.
+// Knots are bounded by kMaxCoordinate, so knot differences are finite.
+inline constexpr double kMaxWeight = 0x1p256;
 
 // What to do with a STEP/IGES face whose boundary is not its surface's
 // parameter rectangle (a trimmed face).
@@ -64,7 +79,8 @@ Model parse_model_json(const std::string& text, const std::string& file,
 Model parse_bpt(const std::string& text, const std::string& file, const ModelLimits& limits = {});
 
 // Checks degrees, sizes, knots (count, order, multiplicity <= degree+1, non-empty
-// domain), finiteness and weights. `field` prefixes messages, e.g. "surfaces[2]".
+// domain), finiteness, coordinate magnitude (kMaxCoordinate) and weights. `field` prefixes
+// messages, e.g. "surfaces[2]".
 void validate_surface(const BSplineSurface& s, const std::string& file, const std::string& field);
 
 // Version-1 JSON text of a model (17 significant digits: reads back bit-identical).

@@ -2,13 +2,11 @@
 #include <seamless/render/scene.h>
 
 #include <seamless/base/error.h>
+#include <seamless/base/input_file.h>
 
 #include <nlohmann/json.hpp>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -19,6 +17,7 @@ using json = nlohmann::json;
 
 struct Reader {
     std::string file;
+    double max_coordinate; // SceneLimits::max_coordinate
 
     [[noreturn]] void fail(const std::string& field, const std::string& msg) const {
         throw InputError(file, field, msg);
@@ -33,11 +32,12 @@ struct Reader {
                      double hi) const {
         auto it = obj.find(key);
         if (it == obj.end()) return dflt;
-        double x = number(*it, f + "." + key);
+        const std::string fk = f.empty() ? key : f + "." + key;
+        double x = number(*it, fk);
         if (x < lo || x > hi) {
             std::ostringstream os;
             os << "value " << x << " outside " << lo << ".." << hi;
-            fail(f + "." + key, os.str());
+            fail(fk, os.str());
         }
         return x;
     }
@@ -58,6 +58,18 @@ struct Reader {
         if (!j.is_array() || j.size() != 3) fail(f, "expected [x, y, z]");
         return {number(j[0], f + "[0]"), number(j[1], f + "[1]"), number(j[2], f + "[2]")};
     }
+    // A point of the world: coordinates within max_coordinate.
+    Vec3 point(const json& j, const std::string& f) const {
+        const Vec3 p = vec3(j, f);
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(p[k]) > max_coordinate) {
+                std::ostringstream os;
+                os << "coordinate " << p[k] << " beyond the scene limit of " << max_coordinate
+                   << " (docs/formats.md, Limits)";
+                fail(f + "[" + std::to_string(k) + "]", os.str());
+            }
+        return p;
+    }
     Vec3 colour(const json& j, const std::string& f) const {
         Vec3 c = vec3(j, f);
         for (int k = 0; k < 3; ++k)
@@ -66,15 +78,9 @@ struct Reader {
     }
 };
 
-json parse_file(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(file, "", "cannot open file (" + std::string(std::strerror(errno)) + ")");
-    std::stringstream ss;
-    ss << in.rdbuf();
+json parse_json(const std::string& text, const std::string& file) {
     try {
-        return json::parse(ss.str());
+        return naming_file_on_oom(file, [&] { return json::parse(text); });
     } catch (const json::parse_error& e) {
         std::string what = e.what();
         auto pos = what.find("syntax error");
@@ -88,8 +94,14 @@ json parse_file(const std::filesystem::path& path) {
 } // namespace
 
 Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
-    Reader r{path.string()};
-    const json root = parse_file(path);
+    const std::string text = read_input_file(path, lim.max_file_bytes, "scene");
+    return parse_scene(text, path.string(), path.parent_path(), lim);
+}
+
+Scene parse_scene(const std::string& text, const std::string& file,
+                  const std::filesystem::path& folder, const SceneLimits& lim) {
+    Reader r{file, lim.max_coordinate};
+    const json root = parse_json(text, file);
     if (!root.is_object()) r.fail("", "expected a JSON object at the top level");
     Scene sc;
     sc.source = r.file;
@@ -106,8 +118,8 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
     for (const char* key : {"eye", "look_at"})
         if (!cam->contains(key)) r.fail(std::string("camera.") + key, "missing");
     Camera& c = sc.camera;
-    c.eye = r.vec3((*cam)["eye"], "camera.eye");
-    c.look_at = r.vec3((*cam)["look_at"], "camera.look_at");
+    c.eye = r.point((*cam)["eye"], "camera.eye");
+    c.look_at = r.point((*cam)["look_at"], "camera.look_at");
     if (cam->contains("up")) c.up = r.vec3((*cam)["up"], "camera.up");
     c.fov_deg = r.number_in(*cam, "fov_deg", "camera", 40, 1e-3, 179);
     c.width = static_cast<int>(r.integer_in(*cam, "width", "camera", 640, 1, lim.max_width));
@@ -132,7 +144,7 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
             if (!L[k].is_object()) r.fail(f, "expected an object");
             if (!L[k].contains("position")) r.fail(f + ".position", "missing");
             Light l;
-            l.position = r.vec3(L[k]["position"], f + ".position");
+            l.position = r.point(L[k]["position"], f + ".position");
             if (L[k].contains("color")) l.color = r.colour(L[k]["color"], f + ".color");
             sc.lights.push_back(l);
         }
@@ -168,8 +180,13 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
     auto O = root.find("objects");
     if (O == root.end()) r.fail("objects", "missing");
     if (!O->is_array() || O->empty()) r.fail("objects", "expected a non-empty array");
-    if (O->size() > lim.max_objects) r.fail("objects", "too many objects");
-    const std::filesystem::path folder = path.parent_path();
+    if (O->size() > lim.max_objects)
+        r.fail("objects", std::to_string(O->size()) + " objects exceed the limit of " +
+                              std::to_string(lim.max_objects));
+    // Each model file is read once, however many objects name it (by its
+    // canonical path, so "a.json" and "./a.json" are one file).
+    std::map<std::filesystem::path, Model> models;
+    long long total_points = 0;
     for (size_t k = 0; k < O->size(); ++k) {
         const std::string f = "objects[" + std::to_string(k) + "]";
         const json& o = (*O)[k];
@@ -197,19 +214,64 @@ Scene load_scene(const std::filesystem::path& path, const SceneLimits& lim) {
             if (T[12] != 0 || T[13] != 0 || T[14] != 0 || T[15] != 1)
                 r.fail(f + ".transform", "the last row must be 0 0 0 1 (affine transforms only)");
         }
-        Model m = load_model(so.model_path); // errors name the model file
-        sc.model.warnings.insert(sc.model.warnings.end(), m.warnings.begin(), m.warnings.end());
+        std::error_code ec;
+        std::filesystem::path key = std::filesystem::weakly_canonical(so.model_path, ec);
+        if (ec) key = so.model_path;
+        auto cached = models.find(key);
+        if (cached == models.end()) {
+            cached =
+                models.emplace(key, load_model(so.model_path)).first; // errors name the model file
+            sc.model_files.push_back(so.model_path);
+            const Model& loaded = cached->second;
+            sc.model.warnings.insert(sc.model.warnings.end(), loaded.warnings.begin(),
+                                     loaded.warnings.end());
+        }
+        const Model& m = cached->second;
+        // The limits hold for the whole scene, every object's copy counted.
+        if (sc.model.surfaces.size() + m.surfaces.size() > lim.max_surfaces)
+            r.fail(f, "the scene's objects hold more than " + std::to_string(lim.max_surfaces) +
+                          " surfaces in all");
+        for (const BSplineSurface& s : m.surfaces)
+            total_points += static_cast<long long>(s.points.size());
+        if (total_points > lim.max_control_points)
+            r.fail(f, "the scene's objects hold more than " +
+                          std::to_string(lim.max_control_points) + " control points in all");
         so.first_surface = static_cast<int>(sc.model.surfaces.size());
         so.surface_count = static_cast<int>(m.surfaces.size());
-        for (BSplineSurface& s : m.surfaces) {
-            for (Vec3& p : s.points)
+        Box3 box;
+        for (const BSplineSurface& model_surface : m.surfaces) {
+            BSplineSurface s = model_surface;
+            for (Vec3& p : s.points) {
                 p = {T[0] * p.x + T[1] * p.y + T[2] * p.z + T[3],
                      T[4] * p.x + T[5] * p.y + T[6] * p.z + T[7],
                      T[8] * p.x + T[9] * p.y + T[10] * p.z + T[11]};
+                for (int i = 0; i < 3; ++i)
+                    if (!(std::abs(p[i]) <= lim.max_coordinate)) {
+                        std::ostringstream os;
+                        os << "puts a control point of " << so.model_path
+                           << " beyond the scene coordinate limit of " << lim.max_coordinate
+                           << " (docs/formats.md, Limits)";
+                        r.fail(o.contains("transform") ? f + ".transform" : f, os.str());
+                    }
+                box.extend(p);
+            }
             sc.model.surfaces.push_back(std::move(s));
             sc.surface_material.push_back(so.material);
         }
+        // A model collapsed to one point (all its control points equal, or a
+        // zero transform) has nothing to render and no scale to work at.
+        if (!(box.max_extent() > 0))
+            r.fail(o.contains("transform") ? f + ".transform" : f,
+                   "maps every control point of " + so.model_path +
+                       " to one point (zero extent): nothing to render");
         sc.objects.push_back(so);
+    }
+    const double extent = control_box(sc.model).max_extent();
+    if (!(extent >= lim.min_extent)) {
+        std::ostringstream os;
+        os << "the objects span " << extent << ", less than the scene limit of " << lim.min_extent
+           << " (docs/formats.md, Limits)";
+        r.fail("objects", os.str());
     }
     sc.model.source = sc.source;
     return sc;

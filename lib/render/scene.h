@@ -8,6 +8,7 @@
 #include <seamless/base/vec.h>
 #include <seamless/model/model.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -54,17 +55,41 @@ struct Scene {
     Model model;
     // material index of each surface of `model`
     std::vector<int> surface_material;
+    // The model files read, each once however many objects name it.
+    std::vector<std::string> model_files;
 };
 
+// Limits of a scene (docs/formats.md, Limits). Objects share the models they
+// name (each file is read once), but each object holds its own transformed
+// copy, so the surfaces and control points are counted over all objects.
 struct SceneLimits {
     int max_width = 16384, max_height = 16384;
     int max_levels = 65536;
     int max_depth = 16;
     size_t max_objects = 100000, max_lights = 1000;
+    size_t max_surfaces = 1'000'000;
+    long long max_control_points = 10'000'000;
+    std::uintmax_t max_file_bytes = std::uintmax_t(1) << 26; // 64 MiB
+    // World coordinates (camera, lights, transformed control points) stay
+    // within 2^200 in magnitude, and the objects together span at least
+    // 2^-200. The renderer works on world coordinates without rescaling (its
+    // interval Newton solves multiply several coordinates, and power-form
+    // coefficients of high degree grow): the teapot scene scaled by 2^k
+    // renders the same image for |k| <= 250 and breaks at |k| = 280, where
+    // products overflow or underflow; 2^200 leaves 2^50 for degree-9 patches.
+    // Models alone allow 2^510 (kMaxCoordinate): tessellation works at unit scale.
+    double max_coordinate = 0x1p200;
+    double min_extent = 0x1p-200;
 };
+
+
 
 // Reads a scene file and the models it names (paths relative to the scene's
 // folder). Throws InputError naming the file and the field on any defect.
 Scene load_scene(const std::filesystem::path& path, const SceneLimits& limits = {});
+// The same from the scene's text; `file` names it in messages and model paths
+// are relative to `folder`.
+Scene parse_scene(const std::string& text, const std::string& file,
+                  const std::filesystem::path& folder, const SceneLimits& limits = {});
 
 } // namespace seamless

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/error.h>
 #include <seamless/tessellate/edge_graph.h>
 #include <seamless/tessellate/error_bound.h>
 #include <seamless/tessellate/shared_edges.h>
@@ -273,7 +274,29 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     // through three points of size 1e-151 has a normal of length 0 in
     // doubles), so the work is done at the power-of-two scale that brings
     // d_max into [1, 2): exact both ways, the result is the same mesh, scaled.
-    const double dm = control_box(model).max_extent();
+    const Box3 box = control_box(model);
+    const double dm = box.max_extent();
+    if (!box.empty()) {
+        // Tolerances are fractions of d_max: a model of zero extent (all
+        // control points equal) would never be planar within 0 and split every
+        // patch to max_depth; one whose extent is below the rounding of its
+        // coordinates would do the same. Both get an answer at once.
+        const double magnitude =
+            std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z),
+                      std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)});
+        if (!(dm > 0))
+            throw InputError(model.source, "surfaces",
+                             "every control point is the same point (zero extent): nothing to "
+                             "tessellate");
+        if (!std::isfinite(dm))
+            throw InputError(model.source, "surfaces",
+                             "extent overflows a double (coordinates beyond the limit)");
+        if (dm < 0x1p-30 * magnitude)
+            throw InputError(model.source, "surfaces",
+                             "extent d_max is below 2^-30 of the coordinates' magnitude: "
+                             "tolerances would be below their rounding (move the model "
+                             "nearer the origin)");
+    }
     const int e = dm > 0 && std::isfinite(dm) ? std::ilogb(dm) : 0;
     if (e == 0) return tessellate_at_unit_scale(model, patches, options);
     const double down = std::ldexp(1.0, -e), up = std::ldexp(1.0, e);
