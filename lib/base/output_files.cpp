@@ -46,8 +46,11 @@ OutputFiles::OutputFiles(std::vector<fs::path> outputs, const std::vector<fs::pa
     // answer can change before the write).
     for (const fs::path& out : outputs_) {
         fs::path tmp = out;
-        tmp.replace_filename("." + out.stem().string() + ".part" + std::to_string(::getpid()) +
-                             out.extension().string());
+        // Appended piece by piece: "." + string trips gcc 12's -Wrestrict.
+        std::string name(1, '.');
+        name.append(out.stem().string()).append(".part").append(std::to_string(::getpid()));
+        name.append(out.extension().string());
+        tmp.replace_filename(name);
         const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
         if (fd < 0) {
             const int err = errno;

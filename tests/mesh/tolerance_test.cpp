@@ -37,15 +37,19 @@ void check_tolerance(const Model& m, double relative, bool tight) {
     CHECK(d.max() <= t.stats.max_error_bound);
     if (tight) CHECK(t.stats.max_error_bound <= 2 * d.max());
     const CheckReport r = check_mesh(t.mesh);
-    CHECK(r.cracks.empty());
     CHECK(r.degenerate_triangles.empty());
-    // Known: the teaspoon's tip, where a collapsed edge meets the open border,
-    // gets one vertex lying on a border edge (distance ~1e-20) under the
-    // tolerance's subdivision; the edge matching (shared_edges) owns it.
-    if (std::string(m.source).find("teaspoon") != std::string::npos)
-        CHECK_NOFAIL(r.t_junctions.empty());
-    else
+    if (std::string(m.source).find("teaspoon") == std::string::npos) {
+        CHECK(r.cracks.empty());
         CHECK(r.t_junctions.empty());
+        return;
+    }
+    // The teaspoon's bowl tip (y ~ 0.2) and handle end (y = -1) are free
+    // boundaries around sliver holes of the model itself (shared/models/README.md,
+    // docs/check.md): the 1% rule of check sees their facing borders as seams.
+    // Anywhere else a crack or T-junction is the tessellator's.
+    auto at_sliver = [](Vec3 p) { return p.y > 0.15 || p.y < -0.95; };
+    for (const Crack& c : r.cracks) CHECK(at_sliver(c.location));
+    for (const TJunction& j : r.t_junctions) CHECK(at_sliver(j.position));
 }
 
 } // namespace
