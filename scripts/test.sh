@@ -9,8 +9,9 @@
 # Time: .ci/run must stay under 20 minutes on 2 cores. Measured parts and the
 # estimate for an idle machine are in docs/fuzzing.md ("CI budget"); the
 # fuzz smoke run is 9 targets x 20 s, two at a time (about 2 minutes).
-# Set SEAMLESS_SKIP_SANITIZERS=1 or SEAMLESS_SKIP_FUZZ=1 to leave a part out
-# on a machine without clang (the script says so in its last lines).
+# Parts (a) and (b) run only with SEAMLESS_SANITIZERS=1 and SEAMLESS_FUZZ_SMOKE=1:
+# they have not yet run end to end within the CI budget (issue 12 stays open
+# until they do); the script says in its last lines which parts it left out.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
@@ -51,7 +52,7 @@ report_time "Release build and ctest" "$t0"
 # are left to the Release run: under ASan they would take most of an hour.
 asan_targets=(seamless seamless_cli test_interval test_model test_mesh test_tools)
 asan_tests='^(interval|model|mesh|tools):'
-if [ "${SEAMLESS_SKIP_SANITIZERS:-0}" != 1 ]; then
+if [ "${SEAMLESS_SANITIZERS:-0}" = 1 ]; then
   t0=$(stamp)
   san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
   cmake -S "$here" -B "$here/build-asan" -DCMAKE_BUILD_TYPE=Sanitize \
@@ -67,11 +68,11 @@ if [ "${SEAMLESS_SKIP_SANITIZERS:-0}" != 1 ]; then
   count_ctest ctest.log
   report_time "sanitizer build and tests" "$t0"
 else
-  echo "test.sh: sanitizer build skipped (SEAMLESS_SKIP_SANITIZERS=1)"
+  echo "test.sh: sanitizer build left out (SEAMLESS_SANITIZERS=1 runs it)"
 fi
 
 # --- (b) fuzz smoke run ----------------------------------------------------
-if [ "${SEAMLESS_SKIP_FUZZ:-0}" != 1 ]; then
+if [ "${SEAMLESS_FUZZ_SMOKE:-0}" = 1 ]; then
   t0=$(stamp)
   cmake -S "$here" -B "$here/build-fuzz" -DCMAKE_CXX_COMPILER=clang++ -DSEAMLESS_FUZZ=ON \
     -DSEAMLESS_BUILD_TESTS=OFF -DSEAMLESS_BUILD_TOOLS=OFF -DSEAMLESS_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
@@ -106,7 +107,7 @@ if [ "${SEAMLESS_SKIP_FUZZ:-0}" != 1 ]; then
   done
   report_time "fuzz build and smoke run" "$t0"
 else
-  echo "test.sh: fuzz smoke run skipped (SEAMLESS_SKIP_FUZZ=1)"
+  echo "test.sh: fuzz smoke run left out (SEAMLESS_FUZZ_SMOKE=1 runs it)"
 fi
 
 echo "$passed passed, $failed failed"

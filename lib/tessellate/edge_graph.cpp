@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/disjoint_sets.h>
 #include <seamless/tessellate/edge_graph.h>
 
 #include <algorithm>
@@ -113,24 +114,18 @@ Line make_line(const std::vector<BezierPatch>& patches, const BoundaryMatch& m,
 struct KeyClasses {
     std::unordered_map<VertexKey, int, VertexKeyHash> id;
     std::vector<VertexKey> key;
-    std::vector<int> parent;
+    DisjointSets sets{0};
 
     int of(VertexKey k) {
         auto [it, fresh] = id.try_emplace(k, static_cast<int>(key.size()));
         if (fresh) {
             key.push_back(k);
-            parent.push_back(it->second);
+            sets.parent.push_back(it->second);
         }
         return it->second;
     }
-    int find(int x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(int a, int b) {
-        a = find(a), b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
+    int find(int x) { return sets.find(x); }
+    void unite(int a, int b) { sets.unite(a, b); }
     VertexKey rep(VertexKey k) {
         auto it = id.find(k);
         return it == id.end() ? k : key[find(it->second)];

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/disjoint_sets.h>
 #include <seamless/tessellate/shared_edges.h>
 
 #include <algorithm>
@@ -9,24 +10,6 @@ namespace seamless {
 namespace {
 
 constexpr int kEdgeCorners[4][2] = {{0, 1}, {1, 2}, {3, 2}, {0, 3}};
-
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    // The smaller index becomes the root: representatives are deterministic.
-    void unite(int a, int b) {
-        a = find(a), b = find(b);
-        if (a == b) return;
-        if (a < b)
-            parent[b] = a;
-        else
-            parent[a] = b;
-    }
-};
 
 // Largest deviation between two edges' control polygons (points and weights),
 // forwards or with the second reversed; infinity when the orders differ.
@@ -180,7 +163,7 @@ BoundaryMatch match_boundaries(const std::vector<BezierPatch>& patches, double t
         order.push_back(pe);
     }
     std::sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
-    UnionFind edges(4 * np);
+    DisjointSets edges(4 * static_cast<size_t>(np));
     for (size_t i = 0; i < order.size(); ++i)
         for (size_t j = i + 1; j < order.size() && key[order[j]] - key[order[i]] <= tol; ++j) {
             const int a = order[i], b = order[j];
@@ -217,7 +200,7 @@ BoundaryMatch match_boundaries(const std::vector<BezierPatch>& patches, double t
     std::vector<int> by_x(4 * np);
     std::iota(by_x.begin(), by_x.end(), 0);
     std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return corners[a].x < corners[b].x; });
-    UnionFind welded(4 * np);
+    DisjointSets welded(4 * static_cast<size_t>(np));
     for (size_t i = 0; i < by_x.size(); ++i)
         for (size_t j = i + 1; j < by_x.size() && corners[by_x[j]].x - corners[by_x[i]].x <= tol;
              ++j)
