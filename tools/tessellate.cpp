@@ -115,6 +115,7 @@ void add_tessellate(CLI::App& app, Action& action) {
                                   {"max_error_bound", s.max_error_bound},
                                   {"certified_bound", s.max_error_bound},
                                   {"above_tolerance", s.above_tolerance},
+                                  {"passes", s.passes},
                                   {"seconds", s.seconds}};
                 write_text_atomically(files.staging(1), js.dump(2) + "\n");
             }
