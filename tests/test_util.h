@@ -65,4 +65,12 @@ inline RunResult run_cli(const std::string& args, const std::string& tag = "run"
     return r;
 }
 
+// A version-1 JSON model of one bilinear surface with the given control
+// points (a JSON array of four [x, y, z]).
+inline std::string bilinear_model(const std::string& points) {
+    return R"({"version": 1, "surfaces": [{"degree": [1, 1], "size": [2, 2],
+      "knots_u": [0, 0, 1, 1], "knots_v": [0, 0, 1, 1], "control_points": )" +
+           points + "}]}";
+}
+
 } // namespace seamless::test

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/disjoint_sets.h>
+#include <seamless/mesh/bits_hash.h>
 #include <seamless/mesh/border_defects.h>
+#include <seamless/tessellate/planarity.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/box_intersection_d.h>
@@ -13,23 +15,6 @@
 
 namespace seamless {
 namespace {
-
-struct BitsHash {
-    size_t operator()(const std::array<uint64_t, 6>& k) const {
-        uint64_t h = 1469598103934665603ull;
-        for (uint64_t x : k) h = (h ^ x) * 1099511628211ull ^ (x >> 29);
-        return static_cast<size_t>(h);
-    }
-};
-
-// Distance from p to the segment ab.
-double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
-    const Vec3 d = b - a;
-    const double l2 = dot(d, d);
-    double t = l2 > 0 ? dot(p - a, d) / l2 : 0;
-    t = std::clamp(t, 0.0, 1.0);
-    return distance(p, a + t * d);
-}
 
 // Whether segment ab runs along segment cd: the part of ab whose projection
 // falls inside cd is longer than tol and within tol of cd all along (the
@@ -130,7 +115,7 @@ BorderDefects border_defects(const WeldedMesh& mesh, const std::vector<EdgeUse>&
     for (auto [v, e] : vertex_edge) {
         const EdgeUse& b = border[e];
         const double tol = tolerance.at(len[e]);
-        const double d = segment_distance(P[v], P[b.lo], P[b.hi]);
+        const double d = point_segment_distance(P[v], P[b.lo], P[b.hi]);
         if (d <= tol && distance(P[v], P[b.lo]) > tol && distance(P[v], P[b.hi]) > tol) {
             D.t_junctions.push_back({v, P[v], b.triangle, b.lo, b.hi, d, tol});
             junction_edge.push_back(e);

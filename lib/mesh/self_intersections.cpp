@@ -2,6 +2,7 @@
 // Exact predicates (Epick) for degeneracy and triangle-triangle intersection,
 // box_self_intersection_d for the candidate pairs.
 #include <seamless/mesh/self_intersections.h>
+#include <seamless/tessellate/planarity.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
@@ -30,14 +31,6 @@ Vec3 centroid(const std::vector<Vec3>& P, const std::array<int, 3>& t) {
 
 bool collinear(const std::vector<Vec3>& P, const std::array<int, 3>& f) {
     return CGAL::collinear(to_cgal(P[f[0]]), to_cgal(P[f[1]]), to_cgal(P[f[2]]));
-}
-
-double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
-    const Vec3 d = b - a;
-    const double l2 = dot(d, d);
-    double t = l2 > 0 ? dot(p - a, d) / l2 : 0;
-    t = std::clamp(t, 0.0, 1.0);
-    return distance(p, a + t * d);
 }
 
 struct TripleHash {
@@ -114,7 +107,7 @@ std::vector<std::array<int, 3>> split_at(const std::vector<Vec3>& P, std::array<
             for (int c = 0; c < 3 && !done; ++c) {
                 const int u = p[c], w = p[(c + 1) % 3], o = p[(c + 2) % 3];
                 if (u == m || w == m || o == m) continue;
-                if (segment_distance(P[m], P[u], P[w]) <= tol && distance(P[m], P[u]) > tol &&
+                if (point_segment_distance(P[m], P[u], P[w]) <= tol && distance(P[m], P[u]) > tol &&
                     distance(P[m], P[w]) > tol) {
                     parts[i] = {u, m, o};
                     parts.push_back({m, w, o});

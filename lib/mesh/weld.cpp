@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/mesh/bits_hash.h>
 #include <seamless/mesh/weld.h>
 
 #include <algorithm>
@@ -8,17 +9,6 @@
 #include <unordered_map>
 
 namespace seamless {
-namespace {
-
-struct BitsHash {
-    size_t operator()(const std::array<uint64_t, 3>& k) const {
-        uint64_t h = 1469598103934665603ull;
-        for (uint64_t x : k) h = (h ^ x) * 1099511628211ull ^ (x >> 29);
-        return static_cast<size_t>(h);
-    }
-};
-
-} // namespace
 
 WeldedMesh weld_vertices(const TriangleMesh& mesh, bool weld) {
     WeldedMesh W;

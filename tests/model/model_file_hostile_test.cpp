@@ -17,16 +17,6 @@
 
 using namespace seamless;
 
-namespace {
-
-std::string bilinear(const std::string& points) {
-    return R"({"version": 1, "surfaces": [{"degree": [1, 1], "size": [2, 2],
-      "knots_u": [0, 0, 1, 1], "knots_v": [0, 0, 1, 1], "control_points": )" +
-           points + "}]}";
-}
-
-} // namespace
-
 TEST_CASE("/dev/zero as a model is refused at once as not a regular file",
           "[model][hostile][cli]") {
     auto r = test::run_cli("info /dev/zero", "dev-zero");
@@ -46,7 +36,7 @@ TEST_CASE("/dev/zero as a model is refused at once as not a regular file",
 
 TEST_CASE("A model file larger than the limit is refused before reading", "[model][hostile]") {
     const auto dir = test::scratch_dir("model-size-limit");
-    test::write_file(dir / "m.json", bilinear("[[0,0,0],[0,1,0],[1,0,0],[1,1,1]]"));
+    test::write_file(dir / "m.json", test::bilinear_model("[[0,0,0],[0,1,0],[1,0,0],[1,1,1]]"));
     ModelLimits small;
     small.max_file_bytes = 100;
     try {
@@ -62,7 +52,8 @@ TEST_CASE("A model file larger than the limit is refused before reading", "[mode
 TEST_CASE("Coordinates near 1.7e308 are refused with the documented limit",
           "[model][hostile][cli]") {
     const auto dir = test::scratch_dir("huge-coordinates");
-    test::write_file(dir / "huge.json", bilinear("[[1.7e308,0,0],[0,1,0],[-1.7e308,0,0],[1,1,1]]"));
+    test::write_file(dir / "huge.json",
+                     test::bilinear_model("[[1.7e308,0,0],[0,1,0],[-1.7e308,0,0],[1,1,1]]"));
     auto r = test::run_cli("tessellate \"" + (dir / "huge.json").string() + "\" -o \"" +
                                (dir / "huge.off").string() + "\"",
                            "huge-coordinates");
@@ -79,10 +70,11 @@ TEST_CASE("Coordinates near 1.7e308 are refused with the documented limit",
         return os.str();
     };
     const std::string in = text(kMaxCoordinate), out = text(std::nextafter(kMaxCoordinate, 1e308));
-    CHECK_NOTHROW(
-        parse_model_json(bilinear("[[" + in + ",0,0],[0,1,0],[1,0,0],[1,1,1]]"), "in.json"));
+    CHECK_NOTHROW(parse_model_json(
+        test::bilinear_model("[[" + in + ",0,0],[0,1,0],[1,0,0],[1,1,1]]"), "in.json"));
     CHECK_THROWS_AS(
-        parse_model_json(bilinear("[[" + out + ",0,0],[0,1,0],[1,0,0],[1,1,1]]"), "o.json"),
+        parse_model_json(test::bilinear_model("[[" + out + ",0,0],[0,1,0],[1,0,0],[1,1,1]]"),
+                         "o.json"),
         InputError);
     CHECK_THROWS_AS(parse_bpt("1\n1 1\n0 0 0\n0 1 0\n1 0 -1e300\n1 1 1\n", "b.bpt"), InputError);
     // Knots and weights have their limits too.

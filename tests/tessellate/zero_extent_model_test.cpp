@@ -13,20 +13,10 @@
 
 using namespace seamless;
 
-namespace {
-
-std::string bilinear(const std::string& points) {
-    return R"({"version": 1, "surfaces": [{"degree": [1, 1], "size": [2, 2],
-      "knots_u": [0, 0, 1, 1], "knots_v": [0, 0, 1, 1], "control_points": )" +
-           points + "}]}";
-}
-
-} // namespace
-
 TEST_CASE("A zero-extent model is an error at once, not a split to max_depth",
           "[tessellate][hostile][cli]") {
     const auto dir = test::scratch_dir("zero-extent");
-    test::write_file(dir / "point.json", bilinear("[[1,2,3],[1,2,3],[1,2,3],[1,2,3]]"));
+    test::write_file(dir / "point.json", test::bilinear_model("[[1,2,3],[1,2,3],[1,2,3],[1,2,3]]"));
     const auto r = test::run_cli("tessellate \"" + (dir / "point.json").string() + "\" -o \"" +
                                      (dir / "point.obj").string() + "\"",
                                  "zero-extent");
@@ -35,7 +25,8 @@ TEST_CASE("A zero-extent model is an error at once, not a split to max_depth",
                Catch::Contains("point.json: surfaces: every control point is the same point"));
     CHECK_FALSE(std::filesystem::exists(dir / "point.obj"));
     // Also with tolerances given, and through the library.
-    const Model m = parse_model_json(bilinear("[[0,0,0],[0,0,0],[0,0,0],[0,0,0]]"), "zero.json");
+    const Model m =
+        parse_model_json(test::bilinear_model("[[0,0,0],[0,0,0],[0,0,0],[0,0,0]]"), "zero.json");
     TessellationOptions opt;
     opt.eps1 = 0.1;
     opt.eps2 = 0.1;
@@ -46,10 +37,11 @@ TEST_CASE("An extent below the rounding of the coordinates is an error at once",
           "[tessellate][hostile]") {
     // Extent 1e-6 at distance 1e6 from the origin: 1e-12 of the magnitude.
     const Model far = parse_model_json(
-        bilinear("[[1e6,0,0],[1e6,1e-12,0],[1.000000000001e6,0,0],[1e6,0,1e-12]]"), "far.json");
+        test::bilinear_model("[[1e6,0,0],[1e6,1e-12,0],[1.000000000001e6,0,0],[1e6,0,1e-12]]"),
+        "far.json");
     CHECK_THROWS_AS(tessellate(far), InputError);
     // 2^-20 of the magnitude still tessellates.
     const Model near = parse_model_json(
-        bilinear("[[1e6,0,0],[1e6,1,0],[1000001,0,0],[1000001,1,1]]"), "near.json");
+        test::bilinear_model("[[1e6,0,0],[1e6,1,0],[1000001,0,0],[1000001,1,1]]"), "near.json");
     CHECK(tessellate(near).mesh.triangle_count() > 0);
 }
