@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// INTRACY (paper section 7) for primary rays and direct light.
+// INTRACY (paper section 7): the sub-screen loop. Single pixels and corner rays
+// are solved in pixel_solve.h, a certified cluster is shaded by cluster_shade.h
+// (SHADE with shadows and secondary clusters; optics.h for their directions).
 //
 // The screen is prepartitioned into 8 x 8 parts (remark 4), each handled with
 // its own stack of sub-screens B and run in parallel. For each B:
@@ -20,7 +22,8 @@
 //          its interior (Theorem 6 iii for every ray of B at once: each ray
 //          hits it, exactly once in the box), then every ray of B sees that
 //          patch and nothing else;
-//  step 8: SHADE encloses the intensity of B over the hulls of point and normal;
+//  step 8: SHADE encloses the intensity of B over the hulls of point and normal
+//          (cluster_shade.h);
 //  step 9: if every channel's enclosure holds at most two levels, B is painted
 //          with the bilinear form of its four corner intensities (corner rays by
 //          Hansen-Sengupta, remark 2) plus dither in [-0.5, 0.5], kept within
@@ -30,14 +33,15 @@
 // proof: a pixel painted from a cluster is never wrong by more than one level
 // (the enclosure holds the true intensity), and background is never painted
 // where a patch is hit.
+#include <seamless/render/cluster_shade.h>
 #include <seamless/render/mark.h>
 #include <seamless/render/parallel.h>
 #include <seamless/render/pixel_solve.h>
 #include <seamless/render/primary_cluster.h>
 #include <seamless/render/projection.h>
-#include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
+#include <seamless/render/step_clock.h>
 #include <seamless/render/trace.h>
 
 #include <seamless/interval/hansen_sengupta.h>
@@ -45,33 +49,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <ctime>
 #include <memory>
 #include <optional>
 
 namespace seamless {
 namespace {
-
-// CPU seconds of the calling thread: on a shared machine a step's own cost,
-// not the time other jobs held the core.
-double thread_seconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-// Adds the thread's CPU seconds from construction to destruction to `acc` (--stats).
-class StepClock {
-  public:
-    explicit StepClock(double& acc) : acc_(acc), t0_(thread_seconds()) {}
-    StepClock(const StepClock&) = delete;
-    StepClock& operator=(const StepClock&) = delete;
-    ~StepClock() { acc_ += thread_seconds() - t0_; }
-
-  private:
-    double& acc_;
-    double t0_;
-};
 
 struct SubScreen {
     int x0, y0, x1, y1;   // inclusive pixel range
@@ -112,8 +94,7 @@ class PartRenderer {
     PartRenderer(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
                  const RenderOptions& opt, Image& image, int levels)
         : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels),
-          scene_diagonal_(next_up(norm(control_box(scene.model).extent()))),
-          lighting_depth_(static_cast<size_t>(scene.max_depth) + 1) {
+          shader_(ps, scene, ts, levels, opt.dither) {
         const Vec3 bg = ps.lighting.background;
         for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
     }
@@ -270,10 +251,16 @@ class PartRenderer {
     // without a cluster attempt: a few certified Newton solves cost less than
     // narrowing, certificate and SHADE for a cluster of a handful of pixels.
     void paint_pixels(const SubScreen& B, RenderStats& st) {
+        // The Jacobian of each mark over its box for the rays of all of B,
+        // computed on the first pixel that needs it and shared by the others.
+        const Interval aB = screen_a(B.x0, B.x1), bB = screen_b(B.y0, B.y1);
+        jacobians_.resize(B.count);
+        known_.assign(B.count, 0);
         for (int y = B.y0; y <= B.y1; ++y)
             for (int x = B.x0; x <= B.x1; ++x) {
                 const double a = ps_.frame.screen_a(x + 0.5), b = ps_.frame.screen_b(y + 0.5);
                 const size_t first = arena_.size();
+                pixel_jacobians_.clear();
                 for (size_t k = B.offset; k < B.offset + B.count; ++k) {
                     const Mark m = arena_[k]; // a copy: push_back may move the arena
                     const IVec3& P = m.hull;
@@ -282,25 +269,34 @@ class PartRenderer {
                         !(P[1] - Interval(b) * P[2]).contains(0.0))
                         continue;
                     arena_.push_back(m);
+                    const size_t j = k - B.offset;
+                    if (!known_[j]) {
+                        cluster_system(ps_.patches[m.patch].forms, aB, bB, sys_);
+                        jacobians_[j] = mark_jacobian(sys_, m.box);
+                        known_[j] = 1;
+                    }
+                    pixel_jacobians_.push_back(jacobians_[j]);
                 }
                 const SubScreen pixel{x, y, x, y, 0, 0};
                 if (arena_.size() == first) {
                     paint_background(x, y, x, y, st);
                     count(pixel, st);
                 } else {
-                    paint_single_pixel(pixel, first, arena_.size() - first, st);
+                    paint_single_pixel(pixel, first, arena_.size() - first, st,
+                                       pixel_jacobians_.data());
                 }
                 arena_.resize(first);
             }
     }
 
     // Step 6: a one-pixel B, solved by Hansen-Sengupta on its marked patches.
-    void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
+    void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st,
+                            const MarkJacobian* jacobians = nullptr) {
         const StepClock clock(st.single_pixel_seconds);
         ++st.single_pixels;
         const PixelHit h =
             solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
-                        &arena_[first], n, pixel_, st);
+                        &arena_[first], n, pixel_, st, jacobians);
         if (h.patch < 0) {
             paint_background(B.x0, B.y0, B.x0, B.y0, st);
         } else {
@@ -348,216 +344,6 @@ class PartRenderer {
         return false;
     }
 
-    // SHADE step 2 for a cluster: the cluster of rays from each light to the
-    // hull of the intersection points meets no triangle but those of the
-    // patch itself (step 1 marks them; Proposition 11 with remarks 1-2).
-    // Camera-space interval vector to world space (outward rounded).
-    IVec<3> to_world(const IVec3& c, bool point) const {
-        const CameraFrame& f = ps_.frame;
-        IVec<3> w;
-        for (int i = 0; i < 3; ++i)
-            w[i] = (point ? Interval(f.eye[i]) : Interval(0.0)) + c[0] * Interval(f.right[i]) -
-                   c[1] * Interval(f.up[i]) + c[2] * Interval(f.forward[i]);
-        return w;
-    }
-
-    // Reflected directions D - 2 (D.N / N.N) N of a cluster (SHADE step 3.1).
-    static bool reflect_directions(const IVec<3>& D, const IVec<3>& N, IVec<3>& R) {
-        const Interval dn = D[0] * N[0] + D[1] * N[1] + D[2] * N[2];
-        const Interval nn = sqr(N[0]) + sqr(N[1]) + sqr(N[2]);
-        if (!(nn.lo() > 0)) return false;
-        const Interval k = Interval(2.0) * dn / nn;
-        for (int i = 0; i < 3; ++i) R[i] = D[i] - k * N[i];
-        return true;
-    }
-
-    // Refracted directions of a cluster with incoming directions D at normals N
-    // (SHADE step 4), as trace.cpp does for one ray: entering when the ray
-    // comes from the side N points to, Snell's law, total internal reflection.
-    // false when the side or total reflection is undecided for the cluster.
-    static bool refract_directions(const IVec<3>& D, const IVec<3>& N, double ior, IVec<3>& T) {
-        const Interval dd = sqr(D[0]) + sqr(D[1]) + sqr(D[2]);
-        const Interval nn = sqr(N[0]) + sqr(N[1]) + sqr(N[2]);
-        if (!(dd.lo() > 0) || !(nn.lo() > 0)) return false;
-        const Interval dl = sqrt(dd), nl = sqrt(nn);
-        IVec<3> v, n; // unit view (towards the viewer) and unit normal
-        for (int i = 0; i < 3; ++i) {
-            v[i] = -D[i] / dl;
-            n[i] = N[i] / nl;
-        }
-        const Interval cos_v = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
-        if (cos_v.contains(0.0)) return false;
-        const bool entering = cos_v.lo() > 0;
-        if (!entering)
-            for (int i = 0; i < 3; ++i) n[i] = -n[i];
-        const Interval cos_i = abs(cos_v);
-        const double eta = entering ? 1 / ior : ior;
-        const Interval k =
-            Interval(1.0) - Interval(eta) * Interval(eta) * (Interval(1.0) - sqr(cos_i));
-        if (k.contains(0.0)) return false;
-        if (k.hi() < 0) return reflect_directions(D, N, T); // total internal reflection
-        const Interval f = Interval(eta) * cos_i - sqrt(k);
-        for (int i = 0; i < 3; ++i) T[i] = -Interval(eta) * v[i] + f * n[i];
-        return true;
-    }
-
-    // SHADE for a cluster of secondary rays from the box `origin` in the
-    // directions `dir`, leaving patch `skip_patch`, whose hits have recursion
-    // depth `depth` (section 7, steps 3.2-3.5 and 4). Step 3.3: when the
-    // cluster certainly meets no triangle, it sees the background. Step 3.4,
-    // for a nearest q-connected set of one triangle: when one triangle
-    // certainly meets every ray and no other triangle may be met before it,
-    // SHADE recurses on the hull of the meeting points with the interpolated
-    // corner normals (lights by step 2, seen from the rays' origins; its own
-    // reflection and refraction while depth < max_depth). Otherwise false:
-    // B is split (step 3.5).
-    bool secondary_cluster(const IVec<3>& origin, const IVec<3>& dir, int skip_patch, int depth,
-                           std::array<Interval, 3>& out) {
-        const double dmin = sqrt(sqr(dir[0]) + sqr(dir[1]) + sqr(dir[2])).lo();
-        if (!(dmin > 0)) return false;
-        RayCluster rc;
-        rc.origin = origin;
-        rc.direction = dir;
-        // q up to diag / |dir| carries every ray across the whole scene.
-        rc.q = Interval(0.0, next_up(next_up(scene_diagonal_ / dmin) * 1.001));
-        const ClusterHull ch(rc);
-        const auto& M = ts_->tess.mesh;
-        int cover = -1, candidates = 0;
-        Interval cq, cb, cd;
-        visit_candidate_triangles(
-            ts_->tess.trees, [&](const Box3& b) { return ch.may_meet(b); },
-            [&](int t) {
-                if (ts_->triangle_patch[t] == skip_patch) return;
-                const auto& tri = M.triangles[t];
-                if (!may_hit_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
-                                      M.positions[tri[2]]))
-                    return;
-                ++candidates;
-                Interval q, beta, delta;
-                if (covers_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
-                                    M.positions[tri[2]], q, &beta, &delta) &&
-                    q.lo() * dmin > 2 * ts_->ray_epsilon && (cover < 0 || q.hi() < cq.lo())) {
-                    cover = t;
-                    cq = q;
-                    cb = beta;
-                    cd = delta;
-                }
-            });
-        if (candidates == 0) { // step 3.3
-            const Vec3 bg = scene_.background;
-            for (int c = 0; c < 3; ++c) out[c] = Interval(bg[c]);
-            return true;
-        }
-        if (cover < 0) return false;
-        // Nearest: no other triangle may be met up to the covering one.
-        RayCluster before = rc;
-        before.q = Interval(0.0, cq.hi());
-        const ClusterHull chb(before);
-        bool other = false;
-        visit_candidate_triangles(
-            ts_->tess.trees, [&](const Box3& b) { return !other && chb.may_meet(b); },
-            [&](int t) {
-                if (other || t == cover || ts_->triangle_patch[t] == skip_patch) return;
-                const auto& tri = M.triangles[t];
-                other = may_hit_triangle(before, M.positions[tri[0]], M.positions[tri[1]],
-                                         M.positions[tri[2]]);
-            });
-        if (other) return false;
-        const Material& hm = scene_.materials[ts_->triangle_material[cover]];
-        const int hit_patch = ts_->triangle_patch[cover];
-        // The meeting points and the interpolated normals over (beta, delta).
-        const auto& tri = M.triangles[cover];
-        const Interval w[3] = {Interval(1.0) - cb - cd, cb, cd};
-        IVec<3> H, HN;
-        for (int i = 0; i < 3; ++i) {
-            H[i] = Interval(0.0);
-            HN[i] = Interval(0.0);
-            for (int v = 0; v < 3; ++v) {
-                H[i] += w[v] * Interval(M.positions[tri[v]][i]);
-                HN[i] += w[v] * Interval(M.corner_normals[cover][v][i]);
-            }
-        }
-        Scene& lighting = lighting_depth_.at(depth); // sized max_depth + 1: never reallocated here
-        if (!lights_for_cluster(H, hit_patch, hm, lighting.lights)) return false;
-        lighting.ambient = scene_.ambient;
-        const V3<Interval> HP{H[0], H[1], H[2]}, HNv{HN[0], HN[1], HN[2]},
-            eye{origin[0], origin[1], origin[2]};
-        out = shade<Interval>(lighting, hm, HP, HNv, eye);
-        if (depth < scene_.max_depth && (hm.reflect > 0 || hm.transmit > 0)) {
-            // The hit's own steps 3 and 4, from the meeting points onwards.
-            IVec<3> D;
-            for (int i = 0; i < 3; ++i) D[i] = H[i] - origin[i];
-            std::array<Interval, 3> more;
-            if (hm.reflect > 0) {
-                IVec<3> R;
-                if (!reflect_directions(D, HN, R) ||
-                    !secondary_cluster(H, R, hit_patch, depth + 1, more))
-                    return false;
-                for (int c = 0; c < 3; ++c) out[c] += Interval(hm.reflect) * more[c];
-            }
-            if (hm.transmit > 0) {
-                IVec<3> T;
-                if (!refract_directions(D, HN, hm.ior, T) ||
-                    !secondary_cluster(H, T, hit_patch, depth + 1, more))
-                    return false;
-                for (int c = 0; c < 3; ++c) out[c] += Interval(hm.transmit) * more[c];
-            }
-            for (int c = 0; c < 3; ++c) out[c] = clamp01(out[c]);
-        }
-        return true;
-    }
-
-    // SHADE step 2 for a cluster: which lights reach every point of B. The
-    // cluster of rays from a light to the hull of the intersection points is
-    // compared with the triangles but those of the patch itself (step 1 marks
-    // them; Proposition 11 with remarks 1-2). A light is visible when no
-    // triangle may meet the cluster, blocked when one triangle certainly meets
-    // every ray between the light and the points (Theorem 6 iii), and
-    // undecided otherwise (then B is split). Fills `visible` with the lights
-    // that reach B; returns false when some light is undecided.
-    bool lights_for_cluster(const IVec<3>& Pw, int patch, const Material& mat,
-                            std::vector<Light>& visible) {
-        visible.clear();
-        if (mat.diffuse == 0 && mat.specular == 0) return true;
-        for (size_t l = 0; l < scene_.lights.size(); ++l) {
-            const Light& light = scene_.lights[l];
-            if (!light.on()) continue;
-            RayCluster rc;
-            for (int i = 0; i < 3; ++i) {
-                rc.origin[i] = Interval(light.position[i]);
-                rc.direction[i] = Pw[i] - Interval(light.position[i]);
-            }
-            rc.q = Interval(0.0, 1.0);
-            // A single ray's shadow test starts ray_epsilon from the point: a
-            // certain blocker must meet every ray before that.
-            const Interval dist2 =
-                sqr(rc.direction[0]) + sqr(rc.direction[1]) + sqr(rc.direction[2]);
-            const double q_max = 1 - 2 * ts_->ray_epsilon / std::sqrt(std::max(dist2.lo(), 1e-300));
-            const ClusterHull ch(rc);
-            bool maybe = false, blocked = false;
-            visit_candidate_triangles(
-                ts_->tess.trees, [&](const Box3& b) { return !blocked && ch.may_meet(b); },
-                [&](int t) {
-                    if (blocked || ts_->triangle_patch[t] == patch) return;
-                    const auto& tri = ts_->tess.mesh.triangles[t];
-                    const auto& V = ts_->tess.mesh.positions;
-                    if (!may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])) return;
-                    maybe = true;
-                    Interval q;
-                    if (covers_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q) && q.lo() > 0 &&
-                        q.hi() < q_max)
-                        blocked = true;
-                });
-            if (blocked) {
-                ++blocked_lights_;
-                continue;
-            }
-            if (maybe) return false;
-            visible.push_back(light);
-        }
-        return true;
-    }
-
     // Steps 7 to 9. Returns true if B was painted.
     bool try_paint(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
         // Depth (q) intervals. The marks of one patch (halves of bisections,
@@ -596,50 +382,11 @@ class PartRenderer {
         }
         const StepClock shading(st.shade_seconds);
         const Mark m{best_patch, box, {}};
-        // Step 8: SHADE over the hulls of the intersection points and normals.
-        const PatchEnclosure e = enclose(pp.forms, box);
-        const V3<Interval> P{e.point[0], e.point[1], e.point[2]};
-        const V3<Interval> N{e.normal[0], e.normal[1], e.normal[2]};
-        const Material& mat = ps_.lighting.materials[pp.material];
-        // With secondary rays, only the lights that reach B count (step 2), and
-        // mirrors and glass add their reflected and refracted clusters (steps 3, 4).
-        blocked_lights_ = 0;
-        if (ts_ && !lights_for_cluster(to_world(e.point, true), m.patch, mat, lighting_.lights))
-            return false;
-        const bool shadowed = blocked_lights_ > 0;
-        lighting_.ambient = ps_.lighting.ambient;
-        if (ts_)
-            for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
-        auto I = shade<Interval>(ts_ ? lighting_ : ps_.lighting, mat, P, N, Vec3{});
-        const bool secondary = ts_ && (mat.reflect > 0 || mat.transmit > 0) && scene_.max_depth > 0;
-        if (secondary) {
-            // The secondary terms only add to the local ones: if those alone
-            // span too many levels, split before tracing any cluster.
-            for (int c = 0; c < 3; ++c)
-                if (quantise(I[c].hi(), levels_) - quantise(I[c].lo(), levels_) >
-                    (opt_.dither ? 1 : 0))
-                    return false;
-            const IVec<3> Pw = to_world(e.point, true), Nw = to_world(e.normal, false);
-            IVec<3> D;
-            for (int i = 0; i < 3; ++i) D[i] = Pw[i] - Interval(ps_.frame.eye[i]);
-            std::array<Interval, 3> more;
-            if (mat.reflect > 0) {
-                IVec<3> R;
-                const StepClock clock(st.secondary_seconds);
-                if (!reflect_directions(D, Nw, R) || !secondary_cluster(Pw, R, m.patch, 1, more))
-                    return false;
-                for (int c = 0; c < 3; ++c) I[c] += Interval(mat.reflect) * more[c];
-            }
-            if (mat.transmit > 0) {
-                IVec<3> T;
-                const StepClock clock(st.secondary_seconds);
-                if (!refract_directions(D, Nw, mat.ior, T) ||
-                    !secondary_cluster(Pw, T, m.patch, 1, more))
-                    return false;
-                for (int c = 0; c < 3; ++c) I[c] += Interval(mat.transmit) * more[c];
-            }
-            for (int c = 0; c < 3; ++c) I[c] = clamp01(I[c]);
-        }
+        // Step 8: SHADE (cluster_shade.h).
+        const ClusterShading cs = shader_.enclose_intensity(best_patch, box, st);
+        if (!cs.decided) return false;
+        const auto& I = cs.I;
+        const bool secondary = cs.secondary, shadowed = cs.shadowed;
         int lo[3], hi[3];
         bool two = false;
         for (int c = 0; c < 3; ++c) {
@@ -705,16 +452,15 @@ class PartRenderer {
     const RenderOptions& opt_;
     Image& image_;
     int levels_;
-    double scene_diagonal_; // bounds every segment inside the scene (convex hull property)
     std::uint16_t bg_[3];
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     std::vector<Mark> arena_, work_;
     std::vector<SubScreen> stack_;
     PixelScratch pixel_;
-    Scene lighting_; // scratch: ambient and the lights that reach a cluster, camera coordinates
-    // the same for secondary clusters' hits, one per depth, world coordinates
-    std::vector<Scene> lighting_depth_;
-    int blocked_lights_ = 0; // lights certainly blocked in the last lights_for_cluster
+    std::vector<MarkJacobian> jacobians_,
+        pixel_jacobians_;     // paint_pixels: per mark of B, per pixel
+    std::vector<char> known_; // jacobians_[j] computed
+    ClusterShader shader_;
     ClusterSystem sys_;
 };
 

@@ -36,13 +36,77 @@ IMat<2> jacobian(const ClusterSystem& sys, const ParamBox& box) {
     return A;
 }
 
+// ||I - C A||_inf < 1 with C = mid(A)^-1: every matrix of A is regular.
+bool regular(const IMat<2>& A) {
+    RMat<2> C;
+    if (!invert<2>(mid(A), C)) return false;
+    const IMat<2> CA = C * A;
+    for (int i = 0; i < 2; ++i) {
+        double row = 0;
+        for (int k = 0; k < 2; ++k) row += (Interval(i == k ? 1.0 : 0.0) - CA(i, k)).mag();
+        if (!(next_up(row) < 1)) return false;
+    }
+    return true;
+}
+
 } // namespace
 
+MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box) {
+    MarkJacobian j;
+    j.A = jacobian(sys, box);
+    j.regular = regular(j.A);
+    return j;
+}
+
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st) {
-    constexpr NewtonOutcome undecided = NewtonOutcome::undecided;
-    // One Hansen-Sengupta step over the whole box: empty means no zero there.
-    const IMat<2> A = jacobian(sys, box);
+                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
+                               const MarkJacobian* given, ParamBox* rest) {
+    const MarkJacobian J = given ? *given : mark_jacobian(sys, box);
+    const IMat<2>& A = J.A;
+    // At most one zero in box when A is regular: Newton in doubles from the
+    // box's centre, kept inside the box; a run that keeps leaving the box
+    // (the ray passes beside the patch) stops early.
+    if (J.regular) {
+        double s = box.s.mid(), t = box.t.mid(), step = 1;
+        int outside = 0;
+        for (int it = 0; it < 16 && step > 1e-13 && outside < 3; ++it) {
+            if (!newton_step(pp.patch, a, b, s, t, step)) break;
+            const double cs = std::clamp(s, box.s.lo(), box.s.hi());
+            const double ct = std::clamp(t, box.t.lo(), box.t.hi());
+            outside = (cs != s || ct != t) ? outside + 1 : 0;
+            s = cs;
+            t = ct;
+        }
+        if (step <= 1e-9) {
+            // Epsilon inflation, then Theorem 6 iii on the small box Y: one zero
+            // in Y, so the only zero in box.
+            const double e = 1e-9;
+            const IVec<2> Y{{intersect(Interval(next_down(s - e), next_up(s + e)), box.s),
+                             intersect(Interval(next_down(t - e), next_up(t + e)), box.t)}};
+            IVec<2> F;
+            const ParamBox centre{Interval(s), Interval(t)};
+            for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, centre);
+            // A over the box bounds G' over Y too; only where it is too wide to
+            // certify is the Jacobian enclosed over Y itself.
+            HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
+            ++st.hs_steps;
+            if (!hs.unique) {
+                hs = hansen_sengupta<2>(jacobian(sys, ParamBox{Y[0], Y[1]}), F, Y, RVec<2>{s, t});
+                ++st.hs_steps;
+            }
+            if (hs.unique) {
+                hit = {hs.box[0], hs.box[1]};
+                // Depth: camera z = X_2 / W over the hit's box.
+                Interval Z = horner(pp.forms.X, 2, hit);
+                if (pp.forms.rational)
+                    Z = Z / intersect(horner(pp.forms.X, 3, hit), pp.forms.w_hull);
+                q = Z;
+                return NewtonOutcome::hit;
+            }
+        }
+    }
+    // No certified hit: one Hansen-Sengupta step over the whole box; empty
+    // means no zero there (Theorem 6 ii).
     const IVec<2> X{{box.s, box.t}};
     const RVec<2> c = mid(X);
     IVec<2> Fc;
@@ -50,52 +114,12 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
     const HansenSenguptaStep<2> whole = hansen_sengupta<2>(A, Fc, X, c);
     ++st.hs_steps;
     if (whole.box.is_empty()) return NewtonOutcome::miss;
-    // At most one zero in box: ||I - C A||_inf < 1 makes every matrix of A regular.
-    RMat<2> C;
-    if (!invert<2>(mid(A), C)) return undecided;
-    const IMat<2> CA = C * A;
-    for (int i = 0; i < 2; ++i) {
-        double row = 0;
-        for (int k = 0; k < 2; ++k) row += (Interval(i == k ? 1.0 : 0.0) - CA(i, k)).mag();
-        if (!(next_up(row) < 1)) return undecided;
-    }
-    // Newton in doubles from the contracted box's centre, kept inside the box.
-    double s = whole.box[0].mid(), t = whole.box[1].mid(), step = 1;
-    int it = 0;
-    for (; it < 16 && step > 1e-13; ++it) {
-        if (!newton_step(pp.patch, a, b, s, t, step)) return undecided;
-        s = std::clamp(s, box.s.lo(), box.s.hi());
-        t = std::clamp(t, box.t.lo(), box.t.hi());
-    }
-    if (step > 1e-9) return undecided;
-    // Epsilon inflation, then Theorem 6 iii on the small box Y: one zero in Y,
-    // so the only zero in box.
-    const double e = 1e-9;
-    const IVec<2> Y{{intersect(Interval(next_down(s - e), next_up(s + e)), box.s),
-                     intersect(Interval(next_down(t - e), next_up(t + e)), box.t)}};
-    const ParamBox Yb{Y[0], Y[1]};
-    IVec<2> F;
-    const ParamBox centre{Interval(s), Interval(t)};
-    for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, centre);
-    // A over the box bounds G' over Y too; only where it is too wide to
-    // certify is the Jacobian enclosed over Y itself.
-    HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
-    ++st.hs_steps;
-    if (!hs.unique) {
-        hs = hansen_sengupta<2>(jacobian(sys, Yb), F, Y, RVec<2>{s, t});
-        ++st.hs_steps;
-    }
-    if (!hs.unique) return undecided;
-    hit = {hs.box[0], hs.box[1]};
-    // Depth: camera z = X_2 / W over the hit's box.
-    Interval Z = horner(pp.forms.X, 2, hit);
-    if (pp.forms.rational) Z = Z / intersect(horner(pp.forms.X, 3, hit), pp.forms.w_hull);
-    q = Z;
-    return NewtonOutcome::hit;
+    if (rest) *rest = {whole.box[0], whole.box[1]}; // every zero in box is here (Theorem 6 i)
+    return NewtonOutcome::undecided;
 }
 
 PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                     PixelScratch& scratch, RenderStats& st) {
+                     PixelScratch& scratch, RenderStats& st, const MarkJacobian* jacobians) {
     PixelHit best;
     double best_q = std::numeric_limits<double>::infinity(); // upper bound of the nearest depth
     const Ray ray = ProjectedScene::primary_ray(a, b);
@@ -123,7 +147,10 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
             todo.pop_back();
             ParamBox hb;
             Interval q;
-            const NewtonOutcome nc = newton_certified(pp, a, b, box, scratch.sys, hb, q, st);
+            const MarkJacobian* J = depth == 0 && jacobians ? &jacobians[k] : nullptr;
+            ParamBox rest = box;
+            const NewtonOutcome nc =
+                newton_certified(pp, a, b, box, scratch.sys, hb, q, st, J, &rest);
             if (nc == NewtonOutcome::miss) {
                 ++st.pixel_newton_certified;
                 continue;
@@ -137,15 +164,21 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
                 continue;
             }
             if (depth < kDepth) {
-                ParamBox lo = box, hi = box;
-                if (box.s.width() >= box.t.width()) {
-                    const double m = box.s.mid();
-                    lo.s = {box.s.lo(), m};
-                    hi.s = {m, box.s.hi()};
+                // The zeros lie in the Hansen-Sengupta step's box: a box it
+                // shrank well is tried again whole, another one is halved.
+                if (rest.s.width() * rest.t.width() < 0.25 * box.s.width() * box.t.width()) {
+                    todo.push_back({rest, depth + 1});
+                    continue;
+                }
+                ParamBox lo = rest, hi = rest;
+                if (rest.s.width() >= rest.t.width()) {
+                    const double m = rest.s.mid();
+                    lo.s = {rest.s.lo(), m};
+                    hi.s = {m, rest.s.hi()};
                 } else {
-                    const double m = box.t.mid();
-                    lo.t = {box.t.lo(), m};
-                    hi.t = {m, box.t.hi()};
+                    const double m = rest.t.mid();
+                    lo.t = {rest.t.lo(), m};
+                    hi.t = {m, rest.t.hi()};
                 }
                 todo.push_back({hi, depth + 1});
                 todo.push_back({lo, depth + 1});

@@ -3,15 +3,19 @@
 // sub-screen, remark 1: the nearest intersection) and the corner rays of step
 // 9 (remark 2).
 //
-// A ray first tries Newton's method in doubles from the mark's box, certified
-// afterwards: when the interval Jacobian A of G = (X - aZ, Y - bZ) over the
-// whole box satisfies ||I - C A|| < 1 (C = mid(A)^-1), every matrix of A is
-// regular and G is one-to-one on the box (G(x) - G(y) = J (x - y) with J in A,
-// row by row by the mean value theorem), so the ray meets the patch at most
-// once there; one Hansen-Sengupta step on a small box around Newton's result
-// (epsilon inflation, as kv's kraw-approx) then proves that it meets it once,
-// inside the step's box (Theorem 6 iii). Only where this fails does the ray
-// take the full covering method of ray_patch.h.
+// A ray first tries Newton's method in doubles, certified afterwards: when the
+// interval Jacobian A of G = (X - aZ, Y - bZ) over the whole box satisfies
+// ||I - C A|| < 1 (C = mid(A)^-1), every matrix of A is regular and G is
+// one-to-one on the box (G(x) - G(y) = J (x - y) with J in A, row by row by the
+// mean value theorem), so the ray meets the patch at most once there; one
+// Hansen-Sengupta step on a small box around Newton's result (epsilon
+// inflation, as kv's kraw-approx) then proves that it meets it once, inside the
+// step's box (Theorem 6 iii). Without such a proof one Hansen-Sengupta step
+// over the whole box either proves a miss (Theorem 6 ii) or contracts the box
+// to where the hits may be (Theorem 6 i); that part is tried again, halved
+// when it did not shrink much, and only boxes still undecided after a few
+// rounds take the full covering method of ray_patch.h. The pixels of a small
+// sub-screen share A per mark (enclosed for all of their rays).
 #pragma once
 
 #include <seamless/render/mark.h>
@@ -37,19 +41,34 @@ struct PixelScratch {
     std::vector<std::pair<ParamBox, int>> boxes; // boxes still to solve, with their depth
 };
 
+// The interval Jacobian A of G over a mark's box, and whether it is regular
+// (||I - C A|| < 1). Computed from the cluster system of a sub-screen [a] x [b]
+// it encloses G' for every ray of the sub-screen (Definition 4), so the pixels
+// of a small sub-screen share one per mark.
+struct MarkJacobian {
+    IMat<2> A;
+    bool regular = false;
+};
+MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
+
 // The certified Newton solve above for the ray through screen point (a, b) and
 // patch pp in `box`; sys: cluster_system(pp.forms, a, b). hit: exactly one hit in box, in `hit`
 // (local (s, t)), at depth `q` (camera z, enclosed); miss: certainly none in box (a Hansen-Sengupta
 // step over the box is empty, Theorem 6 ii); undecided: take the covering method.
+// J: the Jacobian over box for a sub-screen holding the ray (computed here when null).
+// rest: when undecided, the part of box that may hold hits (Theorem 6 i).
 enum class NewtonOutcome { hit, miss, undecided };
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st);
+                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
+                               const MarkJacobian* J = nullptr, ParamBox* rest = nullptr);
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)
 // with the marked patches, nearest marks first; marks beyond a found hit are
-// dropped (section 5, remark 2 after Theorem 10).
+// dropped (section 5, remark 2 after Theorem 10). jacobians: when given, one
+// per mark, over its box, for a sub-screen holding the ray.
 PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                     PixelScratch& scratch, RenderStats& st);
+                     PixelScratch& scratch, RenderStats& st,
+                     const MarkJacobian* jacobians = nullptr);
 
 // A corner ray of a certified cluster hits the patch exactly once in `box`;
 // its intensity only steers the bilinear form of step 9, whose levels are

@@ -69,6 +69,12 @@ inline Interval cosine_range(Interval c) {
 inline double cosine_range(double c) {
     return std::clamp(c, -1.0, 1.0);
 }
+inline bool surely_positive(double x) {
+    return x > 0;
+}
+inline bool surely_positive(Interval x) {
+    return x.lo() > 0;
+}
 inline bool surely_negative(double x) {
     return x < 0;
 }

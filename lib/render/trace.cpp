@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/trace.h>
 
+#include <seamless/render/optics.h>
 #include <seamless/render/ray_triangle.h>
 #include <seamless/render/shading.h>
 
@@ -168,20 +169,22 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
 
     // Steps 3-4: reflected and refracted rays, up to the maximum recursion level.
     if (depth < scene.max_depth && (m.reflect > 0 || m.transmit > 0)) {
-        const double cos_i = std::abs(cos_v);
-        const Vec3 R = 2 * cos_i * Nf - view;
+        const V3<double> D{-view.x, -view.y, -view.z}, Nv = to_v3(N);
         if (m.reflect > 0) {
-            const auto Ir = trace_secondary(scene, ts, P, normalize(R), patch, depth + 1, tests);
-            for (int c = 0; c < 3; ++c) I[c] += m.reflect * Ir[c];
+            V3<double> R;
+            if (reflect_direction(D, Nv, R)) {
+                const auto Ir = trace_secondary(scene, ts, P, normalize(Vec3{R.x, R.y, R.z}), patch,
+                                                depth + 1, tests);
+                for (int c = 0; c < 3; ++c) I[c] += m.reflect * Ir[c];
+            }
         }
         if (m.transmit > 0) {
-            // Snell: entering when the ray comes from the side N points to.
-            const double eta = cos_v > 0 ? 1 / m.ior : m.ior;
-            const double k = 1 - eta * eta * (1 - cos_i * cos_i);
-            const Vec3 T = k < 0 ? R // total internal reflection
-                                 : -eta * view + (eta * cos_i - std::sqrt(k)) * Nf;
-            const auto It = trace_secondary(scene, ts, P, normalize(T), patch, depth + 1, tests);
-            for (int c = 0; c < 3; ++c) I[c] += m.transmit * It[c];
+            V3<double> T;
+            if (refract_direction(D, Nv, m.ior, T)) {
+                const auto It = trace_secondary(scene, ts, P, normalize(Vec3{T.x, T.y, T.z}), patch,
+                                                depth + 1, tests);
+                for (int c = 0; c < 3; ++c) I[c] += m.transmit * It[c];
+            }
         }
     }
     return {clamp01(I[0]), clamp01(I[1]), clamp01(I[2])};

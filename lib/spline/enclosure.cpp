@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/enclosure.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -66,6 +67,29 @@ Interval real_polynomial_range(const double* c, int n, Interval u) {
     return intersect(horner1(c, n, u), mvf);
 }
 
+// Range over u in [0, 1] of sum c_i u^i with narrow interval coefficients
+// c_i = [lo_i, hi_i]: with m_i = (lo_i + hi_i) / 2 in c_i, |c_i - m_i| <= w_i =
+// hi_i - lo_i, so the range lies in that of the real polynomial sum m_i u^i
+// widened by R >= sum w_i u^i <= sum w_i. R is the computed sum bounded from
+// above like the error term of horner_point (non-negative terms; one more
+// rounding per w_i, hence k = n + 4 below, and an absolute term for
+// subnormals). One real range instead of Lemma 2's two.
+Interval narrow_polynomial_range(const double* lo, const double* hi, int n, Interval u) {
+    double m[K];
+    double s = 0;
+    for (int i = 0; i <= n; ++i) {
+        m[i] = 0.5 * lo[i] + 0.5 * hi[i];
+        s += hi[i] - lo[i];
+    }
+    constexpr double eps = 0x1p-53;
+    const double k = n + 4;
+    const double g = k * eps / (1 - k * eps);
+    double R = s / (1 - g) + (4.0 * n + 4) * std::numeric_limits<double>::denorm_min();
+    R = next_up(next_up(next_up(R)));
+    const Interval rm = real_polynomial_range(m, n, u);
+    return {next_down(rm.lo() - R), next_up(rm.hi() + R)};
+}
+
 // Parameter box inside [0,1]^2 (what the convex hull bounds need).
 [[maybe_unused]] bool in_unit_square(ParamBox b) {
     return b.s.lo() >= 0 && b.s.hi() <= 1 && b.t.lo() >= 0 && b.t.hi() <= 1;
@@ -80,13 +104,21 @@ Interval polynomial_range(const Interval* c, int n, Interval u) {
     // Lemma 2: for u >= 0 the range is [min sum lo(c_i) u^i, max sum hi(c_i) u^i].
     double lo[K] = {}, hi[K] = {};
     bool thin = true;
+    double wmax = 0, mmax = 0;
     for (int i = 0; i <= n; ++i) {
         lo[i] = c[i].lo();
         hi[i] = c[i].hi();
         thin = thin && lo[i] == hi[i];
+        wmax = std::max(wmax, hi[i] - lo[i]);
+        mmax = std::max(mmax, std::abs(lo[i]) + std::abs(hi[i]));
     }
+    if (thin) return real_polynomial_range(lo, n, u);
+    // Coefficients as narrow as rounding leaves them (power forms of a patch, a
+    // single ray's system): one real range instead of two; Lemma 2 would gain
+    // at most the widening by their widths.
+    if (wmax <= 0x1p-30 * mmax && mmax < std::numeric_limits<double>::infinity() && u.hi() <= 1)
+        return narrow_polynomial_range(lo, hi, n, u);
     const Interval rl = real_polynomial_range(lo, n, u);
-    if (thin) return rl;
     const Interval rh = real_polynomial_range(hi, n, u);
     return {rl.lo(), rh.hi()};
 }
