@@ -178,15 +178,21 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
         const Interval dist2 = sqr(rc.direction[0]) + sqr(rc.direction[1]) + sqr(rc.direction[2]);
         const double q_max = 1 - 2 * ts_->ray_epsilon / std::sqrt(std::max(dist2.lo(), 1e-300));
         const ClusterHull ch(rc);
+        // A certain blocker is rare (one triangle must cover every ray), so
+        // only the first kBlockerTries triangles that may meet the cluster are
+        // tried; after that the light is undecided (split B) at once.
         bool maybe = false, blocked = false;
+        int tries = 0;
         visit_candidate_triangles(
-            ts_->tess.trees, [&](const Box3& b) { return !blocked && ch.may_meet(b); },
+            ts_->tess.trees,
+            [&](const Box3& b) { return !blocked && tries < kBlockerTries && ch.may_meet(b); },
             [&](int t) {
-                if (blocked || ts_->triangle_patch[t] == patch) return;
+                if (blocked || tries >= kBlockerTries || ts_->triangle_patch[t] == patch) return;
                 const auto& tri = ts_->tess.mesh.triangles[t];
                 const auto& V = ts_->tess.mesh.positions;
                 if (!may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])) return;
                 maybe = true;
+                ++tries;
                 Interval q;
                 if (covers_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q) && q.lo() > 0 &&
                     q.hi() < q_max)

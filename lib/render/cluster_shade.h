@@ -58,6 +58,8 @@ class ClusterShader {
     bool secondary_cluster(const IVec<3>& origin, const IVec<3>& dir, int skip_patch, int depth,
                            std::array<Interval, 3>& out);
 
+    static constexpr int kBlockerTries = 4; // per light and cluster (lights())
+
     const ProjectedScene& ps_;
     const Scene& scene_;
     const TriangleScene* ts_;
