@@ -170,7 +170,8 @@ class PartRenderer {
                 }
                 cluster_system(pp.forms, a, b, sys_);
                 ++st.marks_narrowed;
-                if (!narrow(sys_, m.box)) continue;
+                IMat<2> A;
+                if (!narrow(sys_, m.box, &A)) continue;
                 const IVec3 Q = enclose_point(pp.forms, m.box);
                 m.hull = Q;
                 const bool wide = !(Q[2].lo() > 0) ||
@@ -195,9 +196,9 @@ class PartRenderer {
                 }
                 // Remark 3: where a silhouette is possible the patch is separated. In
                 // the projected problem the silhouette is where the Jacobian of G
-                // (the projected normal's z component) vanishes.
-                const Interval J = horner(sys_.Gs, 0, m.box) * horner(sys_.Gt, 1, m.box) -
-                                   horner(sys_.Gs, 1, m.box) * horner(sys_.Gt, 0, m.box);
+                // (the projected normal's z component) vanishes; its entries are the
+                // narrowing's last ranges, over boxes holding m.box.
+                const Interval J = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
                 ParamBox parts[2];
                 const int n =
                     J.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);

@@ -7,12 +7,29 @@
 
 namespace seamless {
 
+namespace {
+
+// (X - a Z, Y - b Z) of a power form's coordinates, written only for f's
+// degrees (combine() of power_form.h for this system, without its generic
+// loop: one multiplication and one subtraction per coefficient).
+void primary_rows(const PowerForm& f, Interval a, Interval b, PowerForm& g) {
+    g.p = f.p;
+    g.q = f.q;
+    g.dim = 2;
+    for (int i = 0; i <= f.p; ++i)
+        for (int j = 0; j <= f.q; ++j) {
+            const Interval z = f.at(2, i, j);
+            g.at(0, i, j) = f.at(0, i, j) - a * z;
+            g.at(1, i, j) = f.at(1, i, j) - b * z;
+        }
+}
+
+} // namespace
+
 void cluster_system(const PatchForms& f, Interval a, Interval b, ClusterSystem& out) {
-    const Interval m[2][PowerForm::kMaxDim] = {{Interval(1.0), Interval(0.0), -a, Interval(0.0)},
-                                               {Interval(0.0), Interval(1.0), -b, Interval(0.0)}};
-    combine(f.X, m, 2, out.G);
-    combine(f.Xs, m, 2, out.Gs);
-    combine(f.Xt, m, 2, out.Gt);
+    primary_rows(f.X, a, b, out.G);
+    primary_rows(f.Xs, a, b, out.Gs);
+    primary_rows(f.Xt, a, b, out.Gt);
 }
 
 int solve_pieces(Interval n, Interval d, Interval X, double x0, Interval out[2]) {
@@ -42,7 +59,7 @@ int solve_pieces(Interval n, Interval d, Interval X, double x0, Interval out[2])
     return k;
 }
 
-bool narrow(const ClusterSystem& sys, ParamBox& box) {
+bool narrow(const ClusterSystem& sys, ParamBox& box, IMat<2>* jacobian) {
     for (int pass = 0; pass < 3; ++pass) {
         const double before = box.s.width() * box.t.width();
         for (int k = 0; k < 2; ++k) {
@@ -57,6 +74,10 @@ bool narrow(const ClusterSystem& sys, ParamBox& box) {
             }
             box.s = s;
             const Interval Dt = horner(sys.Gt, k, box);
+            if (jacobian) {
+                (*jacobian)(k, 0) = Ds;
+                (*jacobian)(k, 1) = Dt;
+            }
             Interval t = box.t;
             for (double t0 : {box.t.lo(), box.t.hi()}) {
                 Interval piece[2];

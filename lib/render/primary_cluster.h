@@ -23,7 +23,9 @@ int solve_pieces(Interval n, Interval d, Interval X, double x0, Interval out[2])
 
 // Theorem 10 with remark 3: narrows box in s and t, solving at both bounds.
 // Returns false when the patch certainly misses every ray of the cluster.
-bool narrow(const ClusterSystem& sys, ParamBox& box);
+// jacobian: when given, the ranges of G_s and G_t of the last pass, taken
+// over boxes that hold the narrowed box (so they enclose G' over it).
+bool narrow(const ClusterSystem& sys, ParamBox& box, IMat<2>* jacobian = nullptr);
 
 // Remark 3: where a silhouette is possible, solve at the midpoints too; when
 // that leaves two separate pieces, the patch is separated into two boxes.
