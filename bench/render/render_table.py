@@ -8,53 +8,78 @@ main_runs = [("640x480", 16), ("1280x1024", 256)]
 scaling = [("320x240", 16), ("640x480", 16), ("1280x1024", 16)]
 
 
-# Written by hand with the figures of the run that introduced it (2026-12-01);
-# the tables above are regenerated, this section is not.
+# Written by hand with the figures of the run that introduced it (2026-12-01,
+# second round of issue 10); the tables above are regenerated, this section is not.
 ASSESSMENT = """## Issue 10: before and after, and where the goals stand
 
-The figures of 2026-12-01 come from a reduced run for lack of time on a loaded machine
-(`REPS=1`, all scenes at `CONFIGS=640x480:16`, the teapot also at `1280x1024:256 320x240:16
-1280x1024:16`); `bench/render/bench_render.sh` without settings does the full run.
+The run of 2026-12-01 (second round): `THREADS=2 REPS=3 CONFIGS="640x480:16 1280x1024:256"`,
+then `THREADS=2 REPS=1 CONFIGS="320x240:16 1280x1024:16"` for the scaling rows (one run each,
+for lack of time); the machine's load average was 5.5-10 on its 2 cores during the run (other
+helpers compiling), so wall-clock seconds are 2-3 times the CPU seconds; compare the ratios
+within the run, and the CPU seconds per step.
 
-Before (landed main, same machine, `--threads 0`): teapot 640x480 x 16 INTRACY 3.98 s,
-TRAY 0.13 s (ratio 0.03); 1280x1024 x 256 22.0 s against 0.40 s (0.02); scenes 1, 2, 2a, 3
-at 640x480 x 16: ratios 0.10, 0.11, 0.11, 0.06. After, in the table above (one run each,
-the machine shared with five other builds, so wall-clock seconds are several times the
-CPU seconds; the ratios within a run are what to compare): 0.07, 0.07, 0.16, 0.22, 0.18, 0.10,
-about twice as close. Measured sequentially on CPU time (`--threads 1`, teapot 320x240 x 16):
-INTRACY 5.7 s before, 2.0-2.4 s after; TRAY 0.15 s.
+**Where the goals stand.** None holds. TRAY/INTRACY at 640x480 x 16 is 0.12 (teapot), 0.26,
+0.33, 0.29, 0.18 (scenes 1, 2, 2a, 3) against >= 1; at 1280x1024 x 256 0.08 on the teapot
+against >= 2 (scenes: 0.21, 0.26, 0.33, 0.18). The scaling exponent over 320x240-1280x1024 at
+16 levels is 0.70-0.82 on wall-clock time and 0.73-0.86 on INTRACY's CPU seconds (sum of the
+steps) against <= 0.6. Embree is 4-12 times faster than TRAY and 18-48 times faster than INTRACY.
 
-Profile (`perf record`, teapot 320x240, `--threads 1`). Before: 37% `horner_point`, 13%
-`real_polynomial_range`, 9% `horner1`, 8% `combine` (power forms of 400 zeroed intervals
-built and copied per call), 4% `horner`, 3% `polynomial_range`: about 75% in power-form range
-enclosures; per step (CPU) narrowing 55%, SHADE 20%, single pixels 17%, certificate 7%;
-46 range enclosures per pixel. After: the same functions at about the same shares (36%
-`horner_point`, 11%, 8%, `combine` 5%) but 2.4 times fewer samples; 20.5 range enclosures
-per pixel; per step narrowing 0.70 s, SHADE 0.47 s, single pixels 1.07 s, certificate 0.06 s.
+**First round** (earlier run, same machine, heavier load): ratios 0.07, 0.16, 0.22, 0.18, 0.10
+at 640x480 x 16 and 0.07 at 1280x1024 x 256, from 0.03 / 0.10-0.11 / 0.02 on the landed main.
 
-What changed: single pixels are solved by certified Newton (one Hansen-Sengupta step over
-the mark's box decides misses; a regular interval Jacobian, ||I - C A|| < 1, proves at most
-one hit in the box; Newton in doubles; one Hansen-Sengupta step on an epsilon-inflated box
-proves the hit), undecided boxes halved before the covering method; sub-screens of at most
-16 pixels are solved pixel by pixel from their parent's marks (no narrowing, certificate or
-SHADE for clusters of a handful of pixels); power forms of derived systems are written in
-place. Every certificate is kept: background only where every ray certainly misses, a hit
-only with Theorem 6 iii, clusters only with the cluster certificate.
+**Second round: counted first.** `perf record` of `seamless render data/scenes/teapot.json
+--threads 1 --size 320x240` at the start: 33% `horner_point`, 12% `real_polynomial_range`,
+7% `horner1`, 6% `combine`, 4% `horner`, 3% `polynomial_range` (about 65% range enclosures of
+power forms), 6% + 3% + 3% the triangle-cluster systems of SHADE's shadow test
+(`TriangleSystem`, `gauss_seidel<3>`); 12,664 samples. `--stats` (CPU seconds): single pixels
+1.12 s, narrowing 0.76 s, SHADE 0.57 s, certificate 0.06 s; 20.5 range enclosures per pixel.
+With call graphs (`--call-graph dwarf`, after the narrow-coefficient change below):
+`newton_certified` 34% of the run; after sharing the Jacobians, `mark_jacobian` on halved boxes
+still 15%; SHADE's `lights` (shadow clusters) 19% on the teapot and 39% on scene 3, half of it
+in `covers_triangle`.
 
-The goals do not hold: TRAY/INTRACY is 0.07-0.22 against >= 1 (>= 2 at 1280x1024 x 256),
-and the scaling exponent is 0.63 against <= 0.6 (TRAY 0.96). Why: one range enclosure of a
-bicubic power form costs about 1 us (Lemma 2 splits every one-dimensional range into two
-real ranges, each with an interval slope and two or three error-bounded Horner evaluations),
-and INTRACY still makes 12-31 of them per pixel, while TRAY's whole pixel is about 2
-ray-triangle tests and a shadow ray. Clusters cover only 40-75% of the screen (the single-pixel
-fraction is 0.24-0.60, more than the paper's 1/9, because a cluster needs a proof that one
-patch covers it, so every patch seam splits down to pixels). What is left, in the order the
-profile suggests: Bernstein-form ranges in camera space (G = X - aZ linear in a, b: the hull
-of the subpatch's coefficients, de Casteljau from the parent's, carried by the mark) instead
-of Lemma 2 on the power form; a predicting pass (coarse item buffer of patch ids) so that
-certificates are tried only where one patch covers B; certified clusters across patch seams
-of one surface (one G over the union); and, for 256 levels, the second-order criterion of the
-issue to keep clusters large.
+What changed, each measured on the same 1-thread 320x240 render (CPU seconds from `--stats`,
+old and new library alternating; range enclosures per pixel are exact counts):
+- single pixels: the pixels of a sub-screen of at most 16 pixels share one Jacobian per mark,
+  enclosed over the mark's box for all of their rays (a Lipschitz matrix for each ray); Newton
+  runs before the miss test (the miss test only where no hit was proved); an undecided box is
+  retried on the Hansen-Sengupta step's contraction (Theorem 6 i) instead of on halves of the
+  whole box: teapot single pixels 1.30 -> 0.54 s, enclosures per pixel 20.5 -> 15.1,
+  Hansen-Sengupta steps 148,716 -> 81,557 (`pixel_solve.cpp`);
+- cluster SHADE: at most 4 triangles are tried as the one certain blocker of a light before
+  the light is undecided (B split): the later ones never blocked a cluster on the teapot or
+  scenes 1 and 3 (the same sub-screens, the same shadowed-cluster counts, the same teapot
+  image), and the search was most of SHADE: 0.54 / 0.30 / 1.72 s -> 0.06 / 0.06 / 0.13 s
+  (teapot / scene 1 / scene 3) (`cluster_shade.cpp`);
+- coefficients as narrow as rounding leaves them (patch power forms, single rays' systems)
+  take one real range of the midpoint polynomial widened by their widths instead of Lemma 2's
+  two: about 5% (`enclosure.cpp`);
+- `cluster_system` writes X - aZ, Y - bZ directly instead of the generic `combine`, and the
+  silhouette test reuses the narrowing's last derivative ranges: 15.1 -> 14.5 enclosures per
+  pixel, single pixels 0.54 -> 0.49 s.
+Tried and dropped: stopping the narrowing passes at 50% instead of 80% shrinkage (3% fewer
+enclosures, no measurable time).
+
+After (same command): 7,090 samples (1.8 times fewer): 30% `horner_point`, 11%
+`polynomial_range`, 11% `real_polynomial_range`, 6% `primary_rows`, 6% `horner1`, 5%
+`horner`; shadow clusters below 1%. Per step: narrowing 0.74 s, single pixels 0.50 s, SHADE
+0.06 s, certificate 0.06 s; 14.5 range enclosures per pixel. TRAY on the same render: 0.27 s
+user time.
+
+**Why the goals are still far.** INTRACY's cost is now mostly step 3's narrowing (55-70% of the
+CPU seconds at 640x480 x 16): about 38 range enclosures of 0.5-1 us per marked patch and
+sub-screen (1.8 passes of Theorem 10 at 12 ranges each, 12 for the mean-value hull, 4 for the
+silhouette Jacobian before this round), and 2-4 marks per sub-screen. The single-pixel fraction
+stays 0.24-0.61 at 640x480 (0.16-0.80 at 1280x1024 x 256) because a cluster needs a proof that
+one patch covers it, so every patch seam, silhouette and shadow edge splits down to pixels;
+TRAY's whole pixel is a few ray-triangle tests. The exponent is above 0.6 for the same reason:
+the seams' pixels grow linearly with the resolution. What is left, in the order the profile
+suggests: Bernstein-form ranges in camera space (G = X - aZ linear in a, b: the hull of the
+subpatch's coefficients, de Casteljau from the parent's, carried by the mark, instead of
+re-narrowing from the parent's box with Lemma 2 on the power form); clusters across the seams
+of one surface (one G over the union of its patches); a predicting pass (coarse item buffer of
+patch ids) so that certificates are tried only where one patch covers B; for 256 levels the
+second-order intensity criterion of the issue.
 """
 
 
