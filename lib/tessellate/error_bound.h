@@ -22,9 +22,12 @@
 // |S_ss|, |S_st|, |S_tt| over Q from the differenced control net, with the
 // quotient rule and the smallest weight for rational patches). Split along the
 // fan triangle's unit normal n (any unit vector keeps this valid):
-//   |g| <= sqrt((max |n.g_i| + R_n)^2 + (max |g_i - (n.g_i) n| + R)^2)
-// with R_n the same remainder of the scalar n.S. The tangential remainder falls
-// like 1/m^2, so m is chosen to keep it a fraction of the normal part.
+//   |g| <= sqrt((max |n.g_i| + R_n)^2 + (max |g_i - (n.g_i) n| + R_t)^2)
+// with R_n and R_t the same remainder of the scalar n.S and of the tangential
+// part S - (n.S) n (both linear images of S, so their differenced nets bound
+// their second derivatives; where the surface curves, S_ss is mostly normal
+// and R_t far below R). The tangential remainder falls like 1/m^2, so m is
+// chosen to keep it a fraction of the normal part.
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
