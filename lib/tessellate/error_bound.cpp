@@ -333,6 +333,12 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
 
 } // namespace
 
+std::array<double, 2> second_derivative_bounds(const BezierPatch& b) {
+    const DerivativeBounds d =
+        derivative_bounds(make_net(b, b.corner(0)), [](Vec3 v) { return norm(v); });
+    return {d.A, d.C};
+}
+
 double rounding_allowance(int depth, double scale) {
     return (8.0 * (depth + 8)) * kEps * scale;
 }

@@ -72,6 +72,13 @@ struct RingPoint {
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
                            std::span<const RingPoint> ring, double scale);
 
+// Bounds on |S_ss| and |S_tt| over the local [0,1]^2 of `b` (the differenced
+// control net, quotient rule for rational patches): the remainders a halving
+// in s or in t divides by four. The tolerance criterion splits the direction
+// with the larger one, so a direction that is straight but unevenly
+// parametrised (a cylinder's ruling) is split too.
+std::array<double, 2> second_derivative_bounds(const BezierPatch& b);
+
 // Allowance for rounding in de Casteljau (depth halvings), evaluation and the
 // bound's own arithmetic at the coordinates' magnitude `scale`: a few ulps per
 // operation.

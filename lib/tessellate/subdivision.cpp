@@ -73,7 +73,10 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     double fan_error = -1;
     const bool forced =
         cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
-    bool planar = !forced && planarity(b).planar(cx.options.eps1, cx.options.eps2);
+    // With a tolerance alone the planarity test is off (both eps infinite).
+    const bool test_planarity = std::isfinite(cx.options.eps1) || std::isfinite(cx.options.eps2);
+    bool planar =
+        !forced && (!test_planarity || planarity(b).planar(cx.options.eps1, cx.options.eps2));
     if (planar) {
         FanMemo* memo = cx.options.memo;
         const std::uint64_t key = memo ? subpatch_key(cx.patch_index, r) : 0;
@@ -102,7 +105,12 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
         cx.out.push_back(leaf);
         return id;
     }
+    // A subpatch the tolerance rejected: halve where the remainder is larger.
     bool in_u = split_in_u(b);
+    if (cx.options.tolerance > 0 && (fan_error >= 0 || forced)) {
+        const std::array<double, 2> d = second_derivative_bounds(b);
+        in_u = d[0] >= d[1];
+    }
     if (in_u && !can_u) in_u = false;
     if (!in_u && !can_v) in_u = true;
     BezierPatch lo, hi;

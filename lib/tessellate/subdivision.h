@@ -87,7 +87,11 @@ std::uint64_t subpatch_key(int patch, const ParamRect& r);
 // root node. A subpatch is a leaf when it passes every criterion of `options`
 // (planarity, tolerance, angle) or max_depth stops it. The direction split is
 // the less flat one (flatness_u/v); on a tie (within a factor 2) the one whose
-// corner edges are longer.
+// corner edges are longer. A subpatch the tolerance's fan bound rejected (or a
+// later pass forces) is halved where its second derivative bound is larger
+// (second_derivative_bounds, error_bound.h): flatness alone never splits a
+// straight but unevenly parametrised direction, whose drift then keeps the
+// bound above any tolerance (bug28366_fuselage's cylinder).
 int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
               PatchTrees& trees, std::vector<Subpatch>& out);
 
