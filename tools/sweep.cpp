@@ -56,6 +56,7 @@ void add_sweep(CLI::App& app, Action& action) {
             opt.decades = args->decades;
             opt.steps_per_decade = args->steps;
             opt.max_triangles = args->max_triangles;
+            opt.threads = args->threads;
             opt.deviation.threads = args->threads;
             const bool to_stdout = args->json == "-";
             std::ostream& text = to_stdout ? std::cerr : std::cout;
