@@ -622,7 +622,18 @@ int main(int argc, char** argv) {
         if (docs.empty()) {
             std::cout << md;
         } else {
-            write_text_atomically(fs::path(docs) / "tessellation.md", md);
+            // The hand-written profile (perf record / perf report, from "## Profile"
+            // on) is kept below the generated part.
+            const fs::path out = fs::path(docs) / "tessellation.md";
+            std::string kept;
+            if (std::ifstream in{out}) {
+                std::stringstream old;
+                old << in.rdbuf();
+                const std::string text = old.str();
+                const auto at = text.find("\n## Profile");
+                if (at != std::string::npos) kept = text.substr(at);
+            }
+            write_text_atomically(out, md + kept);
             write_text_atomically(fs::path(docs) / "tessellation.svg",
                                   svg(sweeps, occ, d_max(teapot)));
         }
