@@ -41,7 +41,8 @@ void add_sweep(CLI::App& app, Action& action) {
         ->check(CLI::Range(1, 20));
     cmd->add_option("--max-triangles", args->max_triangles,
                     "stop a model before a step predicted to exceed this many triangles");
-    cmd->add_option("--threads", args->threads, "threads of the deviation measurement (0: all)")
+    cmd->add_option("--threads", args->threads,
+                    "worker threads of the tessellation and the deviation measurement (0: all)")
         ->check(CLI::Range(0, 1024));
     cmd->add_flag("--tolerance", args->tolerance,
                   "request the deviation D = f * 0.001 d_max instead of scaling the planarity "
@@ -55,6 +56,7 @@ void add_sweep(CLI::App& app, Action& action) {
             opt.decades = args->decades;
             opt.steps_per_decade = args->steps;
             opt.max_triangles = args->max_triangles;
+            opt.threads = args->threads;
             opt.deviation.threads = args->threads;
             const bool to_stdout = args->json == "-";
             std::ostream& text = to_stdout ? std::cerr : std::cout;

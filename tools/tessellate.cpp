@@ -28,6 +28,7 @@ void add_tessellate(CLI::App& app, Action& action) {
         std::string model, out, stats;
         double eps1 = -1, eps2 = -1, seam_tolerance = -1, tolerance = 0, angle = 0;
         int max_depth = TessellationOptions{}.max_depth;
+        int threads = TessellationOptions{}.threads;
         ModelLoadOptions load;
     };
     auto args = std::make_shared<Args>();
@@ -57,6 +58,9 @@ void add_tessellate(CLI::App& app, Action& action) {
         ->check(CLI::Range(0.0, 180.0));
     cmd->add_option("--max-depth", args->max_depth, "most halvings per Bezier patch")
         ->check(CLI::Range(0, 60));
+    cmd->add_option("--threads", args->threads,
+                    "worker threads (0: all cores; 1: sequential); the mesh is the same for any")
+        ->check(CLI::Range(0, 1024));
     cmd->add_option("--stats", args->stats, "also write the statistics as JSON to this file");
     add_model_options(cmd, args->load);
     cmd->callback([&action, args] {
@@ -80,6 +84,7 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.max_depth = args->max_depth;
             opt.seam_tolerance = args->seam_tolerance;
             opt.tolerance = args->tolerance;
+            opt.threads = args->threads;
             opt.angle = args->angle * 3.14159265358979323846 / 180;
             const Tessellation t = tessellate(m, opt);
             write_mesh(files.staging(0), t.mesh);

@@ -23,6 +23,7 @@ std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& o
             if (rows.back().tess.triangles * ratio > double(options.max_triangles)) break;
         }
         TessellationOptions topt;
+        topt.threads = options.threads;
         SweepRow row;
         row.factor = factor;
         if (options.tolerance) {

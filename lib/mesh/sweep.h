@@ -39,6 +39,9 @@ struct SweepOptions {
     // Stop before a step whose predicted triangle count (the last count times
     // the last growth ratio) exceeds this.
     long long max_triangles = 2'000'000;
+    // Tessellation threads (TessellationOptions::threads: the same mesh on any
+    // count; seconds are per this count).
+    int threads = 0;
     DeviationOptions deviation;
 };
 

@@ -105,6 +105,21 @@ double remainder(const DerivativeBounds& d, double ds, double dt) {
     return (d.A * ds * ds + 2 * d.B * ds * dt + d.C * dt * dt) / 8;
 }
 
+// The derivative bounds of n . S and of the tangential part S - (n . S) n, for
+// a unit n (the zero vector: both the full bounds). Both parts are linear maps
+// of S, so their remainders bound the two components of g separately; the
+// tangential part holds only the parametrisation's drift and the tilt between
+// n and the surface normal, far less than |S_ss| where the surface curves.
+struct SplitBounds {
+    DerivativeBounds normal, tangential;
+};
+
+SplitBounds split_bounds(const Net& net, Vec3 n, const DerivativeBounds& full) {
+    if (!(norm(n) > 0)) return {full, full};
+    return {derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, n)); }),
+            derivative_bounds(net, [&](Vec3 v) { return norm(v - dot(v, n) * n); })};
+}
+
 struct Param {
     double s = 0, t = 0;
 };
@@ -192,8 +207,7 @@ struct FanResult {
 };
 
 FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
-                       const std::array<Vec3, 4>& n, const DerivativeBounds& full,
-                       const std::array<DerivativeBounds, 4>& nb);
+                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb);
 
 } // namespace
 
@@ -210,11 +224,8 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
         const double len = norm(c);
         n[k] = len > 1e-300 && std::isfinite(len) ? c / len : normalize(diag);
     }
-    std::array<DerivativeBounds, 4> nb{};
-    for (int k = 0; k < 4; ++k)
-        nb[k] = norm(n[k]) > 0
-                    ? derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, n[k])); })
-                    : full;
+    std::array<SplitBounds, 4> nb{};
+    for (int k = 0; k < 4; ++k) nb[k] = split_bounds(net, n[k], full);
 
     // m: the tangential remainder of an unrefined fan triangle (extents 1 x 1/2)
     // against its normal remainder (about the geometric deviation) or the target.
@@ -222,7 +233,7 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     for (int k = 0; k < 4; ++k) {
         const double ds = k % 2 == 0 ? 1.0 : 0.5, dt = k % 2 == 0 ? 0.5 : 1.0;
         R1 = std::max(R1, remainder(full, ds, dt));
-        Rn1 = std::max(Rn1, remainder(nb[k], ds, dt));
+        Rn1 = std::max(Rn1, remainder(nb[k].normal, ds, dt));
     }
     const double want = std::max(0.4 * Rn1, 0.2 * target);
     int m = 1;
@@ -232,17 +243,16 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     if (target > 0 && m > 2) {
         // Cheap first: m = 2 may already certify the target, or its refined
         // vertices, about as far from the surface as it lies, already exceed it.
-        const FanResult r = fan_bound_at(b, centre, V, 2, n, full, nb);
+        const FanResult r = fan_bound_at(b, centre, V, 2, n, nb);
         if (r.bound <= target || r.largest_g > target) return r.bound;
     }
-    return fan_bound_at(b, centre, V, m, n, full, nb).bound;
+    return fan_bound_at(b, centre, V, m, n, nb).bound;
 }
 
 namespace {
 
 FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
-                       const std::array<Vec3, 4>& n, const DerivativeBounds& full,
-                       const std::array<DerivativeBounds, 4>& nb) {
+                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb) {
 
     // phi on the radial edges (centre to corner k), shared by two fan triangles.
     constexpr int K = kMaxFanRefinement + 1;
@@ -307,7 +317,8 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
                 std::max({p0.u.s, p1.u.s, p2.u.s}) - std::min({p0.u.s, p1.u.s, p2.u.s});
             const double dt =
                 std::max({p0.u.t, p1.u.t, p2.u.t}) - std::min({p0.u.t, p1.u.t, p2.u.t});
-            const double en = gn + remainder(nb[k], ds, dt), et = gt + remainder(full, ds, dt);
+            const double en = gn + remainder(nb[k].normal, ds, dt);
+            const double et = gt + remainder(nb[k].tangential, ds, dt);
             bound = std::max(bound, std::sqrt(en * en + et * et));
         };
         for (int a = 0; a < m; ++a)
@@ -321,6 +332,12 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
 }
 
 } // namespace
+
+std::array<double, 2> second_derivative_bounds(const BezierPatch& b) {
+    const DerivativeBounds d =
+        derivative_bounds(make_net(b, b.corner(0)), [](Vec3 v) { return norm(v); });
+    return {d.A, d.C};
+}
 
 double rounding_allowance(int depth, double scale) {
     return (8.0 * (depth + 8)) * kEps * scale;
@@ -418,11 +435,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         const double lw = (param_of(r.s1) - param_of(r.s0)) / (es1 - es0);
         const double lt = (param_of(r.t1) - param_of(r.t0)) / (et1 - et0);
         const double R1 = remainder(full, lw, lt);
-        const double Rn1 =
-            norm(nz) > 0
-                ? remainder(derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, nz)); }),
-                            lw, lt)
-                : R1;
+        const double Rn1 = remainder(split_bounds(net, nz, full).normal, lw, lt);
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     const int side_step = m / kSideRefinement;
@@ -457,9 +470,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         Vec3 nk = cross(P.position - centre, Q.position - centre);
         const double len = norm(nk);
         nk = len > 1e-300 && std::isfinite(len) ? nk / len : normalize(diag);
-        const DerivativeBounds nb =
-            norm(nk) > 0 ? derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, nk)); })
-                         : full;
+        const SplitBounds nb = split_bounds(net, nk, full);
         for (int a = 0; a <= m; ++a) grid[a][0] = radial[k][a];
         for (int c = 0; c <= m; ++c) grid[0][c] = radial[k1][c];
         // The side P Q: points in a canonical order (from the endpoint with the
@@ -534,29 +545,28 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             double Rn = 0, R = 0;
             if (s0 >= es0 && s1 <= es1 && t0 >= et0 && t1 <= et1) {
                 const double ds = (s1 - s0) / (es1 - es0), dt = (t1 - t0) / (et1 - et0);
-                Rn = remainder(nb, ds, dt);
-                R = remainder(full, ds, dt);
+                Rn = remainder(nb.normal, ds, dt);
+                R = remainder(nb.tangential, ds, dt);
             } else {
                 // phi left the grown rectangle: bounds over the whole patch.
                 if (!whole) {
                     whole = make_net(patch, centre);
                     whole_full = derivative_bounds(*whole, [](Vec3 v) { return norm(v); });
                 }
-                const DerivativeBounds wn =
-                    derivative_bounds(*whole, [&](Vec3 v) { return std::abs(dot(v, nk)); });
-                Rn = remainder(wn, s1 - s0, t1 - t0);
-                R = remainder(whole_full, s1 - s0, t1 - t0);
+                const SplitBounds wn = split_bounds(*whole, nk, whole_full);
+                Rn = remainder(wn.normal, s1 - s0, t1 - t0);
+                R = remainder(wn.tangential, s1 - s0, t1 - t0);
             }
-            if (R > gn + Rn && s1 > s0 && t1 > t0) {
+            // Only where it can raise the running maximum (lossless).
+            if (R > gn + Rn && s1 > s0 && t1 > t0 &&
+                (gn + Rn) * (gn + Rn) + (gt + R) * (gt + R) > bound * bound) {
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
                 const Net local = make_net(extract_box(patch, s0, s1, t0, t1), centre);
-                const DerivativeBounds lf =
-                    derivative_bounds(local, [](Vec3 v) { return norm(v); });
-                const DerivativeBounds ln =
-                    derivative_bounds(local, [&](Vec3 v) { return std::abs(dot(v, nk)); });
-                Rn = std::min(Rn, remainder(ln, 1, 1));
-                R = std::min(R, remainder(lf, 1, 1));
+                const SplitBounds ln = split_bounds(
+                    local, nk, derivative_bounds(local, [](Vec3 v) { return norm(v); }));
+                Rn = std::min(Rn, remainder(ln.normal, 1, 1));
+                R = std::min(R, remainder(ln.tangential, 1, 1));
             }
             const double en = gn + Rn, et = gt + R;
             bound = std::max(bound, std::sqrt(en * en + et * et));

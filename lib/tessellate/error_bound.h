@@ -22,9 +22,12 @@
 // |S_ss|, |S_st|, |S_tt| over Q from the differenced control net, with the
 // quotient rule and the smallest weight for rational patches). Split along the
 // fan triangle's unit normal n (any unit vector keeps this valid):
-//   |g| <= sqrt((max |n.g_i| + R_n)^2 + (max |g_i - (n.g_i) n| + R)^2)
-// with R_n the same remainder of the scalar n.S. The tangential remainder falls
-// like 1/m^2, so m is chosen to keep it a fraction of the normal part.
+//   |g| <= sqrt((max |n.g_i| + R_n)^2 + (max |g_i - (n.g_i) n| + R_t)^2)
+// with R_n and R_t the same remainder of the scalar n.S and of the tangential
+// part S - (n.S) n (both linear images of S, so their differenced nets bound
+// their second derivatives; where the surface curves, S_ss is mostly normal
+// and R_t far below R). The tangential remainder falls like 1/m^2, so m is
+// chosen to keep it a fraction of the normal part.
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
@@ -68,6 +71,13 @@ struct RingPoint {
 // patch where phi reaches further). Includes the rounding allowance.
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
                            std::span<const RingPoint> ring, double scale);
+
+// Bounds on |S_ss| and |S_tt| over the local [0,1]^2 of `b` (the differenced
+// control net, quotient rule for rational patches): the remainders a halving
+// in s or in t divides by four. The tolerance criterion splits the direction
+// with the larger one, so a direction that is straight but unevenly
+// parametrised (a cylinder's ruling) is split too.
+std::array<double, 2> second_derivative_bounds(const BezierPatch& b);
 
 // Allowance for rounding in de Casteljau (depth halvings), evaluation and the
 // bound's own arithmetic at the coordinates' magnitude `scale`: a few ulps per

@@ -73,8 +73,22 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     double fan_error = -1;
     const bool forced =
         cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
-    const bool planar = !forced && planarity(b).planar(cx.options.eps1, cx.options.eps2) &&
-                        fan_accepted(cx.options, b, centre, V, fan_error);
+    // With a tolerance alone the planarity test is off (both eps infinite).
+    const bool test_planarity = std::isfinite(cx.options.eps1) || std::isfinite(cx.options.eps2);
+    bool planar =
+        !forced && (!test_planarity || planarity(b).planar(cx.options.eps1, cx.options.eps2));
+    if (planar) {
+        FanMemo* memo = cx.options.memo;
+        const std::uint64_t key = memo ? subpatch_key(cx.patch_index, r) : 0;
+        const auto it = memo ? memo->find(key) : FanMemo::iterator{};
+        if (memo && it != memo->end()) {
+            planar = it->second.accepted;
+            fan_error = it->second.fan_error;
+        } else {
+            planar = fan_accepted(cx.options, b, centre, V, fan_error);
+            if (memo) memo->emplace(key, FanVerdict{planar, fan_error});
+        }
+    }
     // A side can only be halved while it spans more than one grid step.
     const bool can_u = r.s1 - r.s0 > 1, can_v = r.t1 - r.t0 > 1;
     if (planar || depth >= cx.options.max_depth || (!can_u && !can_v)) {
@@ -91,7 +105,12 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
         cx.out.push_back(leaf);
         return id;
     }
+    // A subpatch the tolerance rejected: halve where the remainder is larger.
     bool in_u = split_in_u(b);
+    if (cx.options.tolerance > 0 && (fan_error >= 0 || forced)) {
+        const std::array<double, 2> d = second_derivative_bounds(b);
+        in_u = d[0] >= d[1];
+    }
     if (in_u && !can_u) in_u = false;
     if (!in_u && !can_v) in_u = true;
     BezierPatch lo, hi;

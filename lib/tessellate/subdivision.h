@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -27,7 +28,19 @@ inline double param_of(int i) {
 // [s0, s1] x [t0, t1] on the grid: s along u, t along v.
 struct ParamRect {
     int s0 = 0, s1 = kParamOne, t0 = 0, t1 = kParamOne;
+    friend bool operator==(const ParamRect&, const ParamRect&) = default;
 };
+
+// The tolerance and angle criteria's verdict on one subpatch (subpatch_key ->
+// verdict), kept between the passes of a tolerance (tessellation.cpp): the
+// criteria depend on the subpatch alone, so a later pass asks only about
+// subpatches it has not met. A key collision can only change where the
+// subdivision splits; the final certified bound is computed afresh.
+struct FanVerdict {
+    bool accepted = false;
+    double fan_error = -1;
+};
+using FanMemo = std::unordered_map<std::uint64_t, FanVerdict>;
 
 struct SubdivisionOptions {
     // Planarity tolerances, model units (section 8); infinity: not tested.
@@ -43,6 +56,8 @@ struct SubdivisionOptions {
     // Subpatches to split whatever the criteria say (subpatch_key): those a
     // previous pass left above the tolerance. Not owned; may be null.
     const std::unordered_set<std::uint64_t>* split = nullptr;
+    // Verdicts of earlier passes, read and extended. Not owned; may be null.
+    FanMemo* memo = nullptr;
 };
 
 // A leaf of the split tree: a planar subpatch (or one stopped by max_depth).
@@ -72,7 +87,11 @@ std::uint64_t subpatch_key(int patch, const ParamRect& r);
 // root node. A subpatch is a leaf when it passes every criterion of `options`
 // (planarity, tolerance, angle) or max_depth stops it. The direction split is
 // the less flat one (flatness_u/v); on a tie (within a factor 2) the one whose
-// corner edges are longer.
+// corner edges are longer. A subpatch the tolerance's fan bound rejected (or a
+// later pass forces) is halved where its second derivative bound is larger
+// (second_derivative_bounds, error_bound.h): flatness alone never splits a
+// straight but unevenly parametrised direction, whose drift then keeps the
+// bound above any tolerance (bug28366_fuselage's cylinder).
 int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
               PatchTrees& trees, std::vector<Subpatch>& out);
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/error.h>
+#include <seamless/base/parallel.h>
 #include <seamless/tessellate/edge_graph.h>
 #include <seamless/tessellate/error_bound.h>
 #include <seamless/tessellate/shared_edges.h>
@@ -11,6 +12,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace seamless {
@@ -98,9 +101,78 @@ Tessellation tessellate(const Model& model, const TessellationOptions& options) 
 
 namespace {
 
+// A certified fan bound (error_bound.h) of an earlier pass, with the ring it
+// was computed for: the bound is a function of the subpatch and its ring.
+struct KnownBound {
+    ParamRect rect;
+    std::vector<RingPoint> ring;
+    Vec3 centre;
+    double bound = 0;
+};
+
+bool same_ring(std::span<const RingPoint> a, std::span<const RingPoint> b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const RingPoint& p, const RingPoint& q) {
+                          return p.s == q.s && p.t == q.t && p.fs == q.fs && p.ft == q.ft &&
+                                 p.position == q.position;
+                      });
+}
+
+// What the passes of a tolerance share, per Bezier patch (so that patches can
+// be worked on in parallel): the subdivision criteria's verdicts and the
+// final fans' bounds.
+struct PassMemo {
+    std::vector<FanMemo> verdicts;
+    std::vector<std::unordered_map<std::uint64_t, KnownBound>> bounds;
+    bool keep = false; // fill them (only a tolerance takes more than one pass)
+    PassMemo(size_t patches, bool keep) : verdicts(patches), bounds(patches), keep(keep) {}
+};
+
+// (a) Every patch split on its own (in parallel), the trees then laid end to
+// end in patch order: the same arrays for any thread count.
+void subdivide_patches(const std::vector<BezierPatch>& patches, const SubdivisionOptions& sub,
+                       int threads, PassMemo& memo, PatchTrees& trees,
+                       std::vector<Subpatch>& subpatches) {
+    struct Part {
+        PatchTrees trees;
+        std::vector<Subpatch> subpatches;
+        int root = -1;
+    };
+    std::vector<Part> parts(patches.size());
+    parallel_chunks(static_cast<int>(patches.size()), threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            SubdivisionOptions o = sub;
+            o.memo = memo.keep ? &memo.verdicts[i] : nullptr;
+            parts[i].root = subdivide(patches[i], i, o, parts[i].trees, parts[i].subpatches);
+        }
+    });
+    size_t nodes = 0, leaves = 0;
+    for (const Part& p : parts) nodes += p.trees.nodes.size(), leaves += p.subpatches.size();
+    trees.nodes.reserve(nodes);
+    subpatches.reserve(leaves);
+    trees.roots.reserve(patches.size());
+    for (Part& p : parts) {
+        const int node0 = static_cast<int>(trees.nodes.size());
+        const int leaf0 = static_cast<int>(subpatches.size());
+        for (PatchNode n : p.trees.nodes) {
+            for (int& c : n.child)
+                if (c >= 0) c += node0;
+            if (n.subpatch >= 0) n.subpatch += leaf0;
+            trees.nodes.push_back(n);
+        }
+        for (Subpatch sp : p.subpatches) {
+            sp.node += node0;
+            subpatches.push_back(sp);
+        }
+        trees.roots.push_back(p.root + node0);
+        trees.depth = std::max(trees.depth, p.trees.depth);
+    }
+}
+
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
                              const TessellationOptions& options,
-                             const std::unordered_set<std::uint64_t>& split) {
+                             const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
+                             bool last) {
     const auto start = std::chrono::steady_clock::now();
     Tessellation out;
     TessellationStats& st = out.stats;
@@ -127,10 +199,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     sub.angle = options.angle;
     sub.max_depth = options.max_depth;
     sub.split = &split;
-    out.trees.roots.reserve(patches.size());
-    for (size_t i = 0; i < patches.size(); ++i)
-        out.trees.roots.push_back(
-            subdivide(patches[i], static_cast<int>(i), sub, out.trees, out.subpatches));
+    subdivide_patches(patches, sub, options.threads, memo, out.trees, out.subpatches);
 
     // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
     // Shared boundaries agree to the seam tolerance, and at least to the
@@ -171,48 +240,105 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     vr.positions.reserve(2 * out.subpatches.size() + expected / 4);
     vr.placed.reserve(2 * out.subpatches.size() + expected / 4);
     vr.index.reserve(out.subpatches.size() + expected / 8);
+    // (d1) Rings and their vertices, in subpatch order (vertices are numbered
+    // as they are first met, so this stays sequential).
+    const size_t count = out.subpatches.size();
     std::vector<int> scratch;
     std::vector<Inside> inside;
     std::vector<RingVertex> ring;
-    std::vector<RingPoint> fan;
-    std::vector<Vec3> ring_normals;
-    for (Subpatch& sp : out.subpatches) {
-        const BezierPatch& b = patches[sp.patch];
+    std::vector<RingVertex> rings;
+    std::vector<int> ring_start(count + 1, 0), centres(count);
+    rings.reserve(expected);
+    for (size_t i = 0; i < count; ++i) {
+        const Subpatch& sp = out.subpatches[i];
         const ParamRect& r = sp.rect;
         collect_ring(reg, match, graph, sp.patch, r, options.crack_free, scratch, inside, ring);
-        for (RingVertex& v : ring)
+        for (RingVertex& v : ring) {
             v.vertex = v.foreign >= 0 ? vertex_of(vr, graph.points[v.foreign].key)
                                       : vertex_at(vr, sp.patch, v.s, v.t);
-
+            rings.push_back(v);
+        }
+        ring_start[i + 1] = static_cast<int>(rings.size());
         const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
         const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-        const SurfacePoint centre_point = evaluate(b, sc, tc);
-        const int centre = static_cast<int>(vr.positions.size());
-        vr.positions.push_back(centre_point.point);
+        centres[i] = static_cast<int>(vr.positions.size());
+        vr.positions.push_back(evaluate(patches[sp.patch], sc, tc).point);
         vr.placed.push_back(1);
-        const Vec3 centre_normal = unit_normal(b, sc, tc, sc, tc);
+    }
 
-        // Certified two-way distance of the subpatch and its fan (error_bound.h).
-        fan.clear();
-        for (const RingVertex& v : ring)
-            fan.push_back({v.s, v.t, vr.positions[v.vertex], v.fs, v.ft});
-        sp.error_bound = certified_fan_bound(b, r, sp.depth, centre_point.point, fan, scale);
+    // (d2) Each subpatch's certified bound on its own, in parallel.
+    std::vector<char> fresh(count, 0);
+    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+        std::vector<RingPoint> fan;
+        for (int i = begin; i < end; ++i) {
+            Subpatch& sp = out.subpatches[i];
+            const Vec3 centre = vr.positions[centres[i]];
+            // Certified two-way distance of the subpatch and its fan (error_bound.h).
+            fan.clear();
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) {
+                const RingVertex& v = rings[j];
+                fan.push_back({v.s, v.t, vr.positions[v.vertex], v.fs, v.ft});
+            }
+            const auto& known = memo.bounds[sp.patch];
+            const auto it = known.find(subpatch_key(sp.patch, sp.rect));
+            if (it != known.end() && it->second.rect == sp.rect && it->second.centre == centre &&
+                same_ring(it->second.ring, fan)) {
+                sp.error_bound = it->second.bound;
+            } else {
+                sp.error_bound =
+                    certified_fan_bound(patches[sp.patch], sp.rect, sp.depth, centre, fan, scale);
+                fresh[i] = 1;
+            }
+        }
+    });
+    for (size_t i = 0; i < count; ++i) {
+        const Subpatch& sp = out.subpatches[i];
         if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
         st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
+        if (!fresh[i] || !memo.keep) continue;
+        KnownBound& k = memo.bounds[sp.patch][subpatch_key(sp.patch, sp.rect)];
+        k.ring.clear();
+        for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) {
+            const RingVertex& v = rings[j];
+            k.ring.push_back({v.s, v.t, vr.positions[v.vertex], v.fs, v.ft});
+        }
+        k.rect = sp.rect;
+        k.centre = vr.positions[centres[i]];
+        k.bound = sp.error_bound;
+    }
+    // Another pass will follow: the mesh of this one is not needed.
+    if (!last && st.above_tolerance > 0) return out;
 
-        ring_normals.clear();
-        for (const RingVertex& v : ring) ring_normals.push_back(unit_normal(b, v.fs, v.ft, sc, tc));
+    // (d3) Normals at the fans' vertices, in parallel.
+    std::vector<Vec3> ring_normals(rings.size()), centre_normals(count);
+    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const Subpatch& sp = out.subpatches[i];
+            const BezierPatch& b = patches[sp.patch];
+            const double sc = 0.5 * (param_of(sp.rect.s0) + param_of(sp.rect.s1));
+            const double tc = 0.5 * (param_of(sp.rect.t0) + param_of(sp.rect.t1));
+            centre_normals[i] = unit_normal(b, sc, tc, sc, tc);
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                ring_normals[j] = unit_normal(b, rings[j].fs, rings[j].ft, sc, tc);
+        }
+    });
 
-        // Fan triangles; none where two ring vertices are one (a pole).
+    // (d4) Fan triangles in subpatch order; none where two ring vertices are one (a pole).
+    for (size_t i = 0; i < count; ++i) {
+        Subpatch& sp = out.subpatches[i];
+        const BezierPatch& b = patches[sp.patch];
+        const ParamRect& r = sp.rect;
+        const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+        const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+        const int first = ring_start[i], n = ring_start[i + 1] - first;
         sp.first_triangle = mesh.triangle_count();
-        const size_t n = ring.size();
-        for (size_t k = 0; k < n; ++k) {
-            const RingVertex &a = ring[k], &c = ring[(k + 1) % n];
+        for (int k = 0; k < n; ++k) {
+            const RingVertex &a = rings[first + k], &c = rings[first + (k + 1) % n];
             if (a.vertex == c.vertex) continue;
-            mesh.triangles.push_back({centre, a.vertex, c.vertex});
+            mesh.triangles.push_back({centres[i], a.vertex, c.vertex});
             mesh.triangle_surface.push_back(b.surface);
             mesh.corner_normals.push_back(
-                {centre_normal, ring_normals[k], ring_normals[(k + 1) % n]});
+                {centre_normals[i], ring_normals[first + k], ring_normals[first + (k + 1) % n]});
             mesh.corner_uvs.push_back({std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
                                        std::array<double, 2>{b.u_at(a.fs), b.v_at(a.ft)},
                                        std::array<double, 2>{b.u_at(c.fs), b.v_at(c.ft)}});
@@ -250,11 +376,14 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
                                       const TessellationOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     std::unordered_set<std::uint64_t> split;
+    PassMemo memo(patches.size(), options.tolerance > 0);
     Tessellation t;
+    constexpr int kPasses = 5;
     int pass = 0;
     for (;; ++pass) {
-        t = tessellate_pass(model, patches, options, split);
-        if (options.tolerance <= 0 || t.stats.above_tolerance == 0 || pass == 4) break;
+        const bool last = options.tolerance <= 0 || pass == kPasses - 1;
+        t = tessellate_pass(model, patches, options, split, memo, last);
+        if (last || t.stats.above_tolerance == 0) break;
         for (const Subpatch& sp : t.subpatches)
             if (sp.error_bound > t.stats.tolerance && sp.depth < options.max_depth)
                 split.insert(subpatch_key(sp.patch, sp.rect));

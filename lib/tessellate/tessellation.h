@@ -56,6 +56,9 @@ struct TessellationOptions {
     // on its two sides and closed components face outward
     // (surface_orientation.h); false keeps each surface's dP/du x dP/dv side.
     bool orient_surfaces = true;
+    // Worker threads (0: every core, 1: sequential). The output, vertex order
+    // included, is the same for any count.
+    int threads = 0;
 };
 
 struct TessellationStats {

@@ -66,8 +66,14 @@ TEST_CASE("a requested tolerance is certified and met within a factor 2", "[tole
 TEST_CASE("tolerances from 1e-1 to 1e-5 of d_max stay certified and crack-free", "[tolerance]") {
     const Model sphere = load_model(test::model_path("sphere.json"));
     for (double relative : {1e-1, 1e-4, 1e-5}) check_tolerance(sphere, relative, false);
+    // The teapot at 1e-1 and 1e-2 d_max (at 1e-4 d_max five passes leave 12
+    // subpatches above: docs/results/tessellation.md); the fuselage, whose
+    // cylinder rulings are straight but unevenly parametrised, kept its bound
+    // above any tolerance until the subdivision split by second derivatives.
     const Model teapot = load_model(test::model_path("teapot.json"));
-    check_tolerance(teapot, 1e-1, false);
+    for (double relative : {1e-1, 1e-2}) check_tolerance(teapot, relative, false);
+    const Model fuselage = load_model(test::model_path("cad/bug28366_fuselage.json"));
+    for (double relative : {1e-2, 1e-3, 1e-4}) check_tolerance(fuselage, relative, false);
 }
 
 TEST_CASE("finer tolerances give more triangles and smaller bounds", "[tolerance]") {

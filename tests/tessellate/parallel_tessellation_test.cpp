@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// The tessellation on 1, 2 and 3 threads (TessellationOptions::threads) is one
+// and the same output: vertices in the same order at the same bits, the same
+// triangles, normals, (u,v), trees, subpatches and statistics, with a
+// requested tolerance (several passes) and with the paper's planarity test.
+#include "test_util.h"
+
+#include <seamless/model/model.h>
+#include <seamless/tessellate/tessellation.h>
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <string>
+
+using namespace seamless;
+
+namespace {
+
+// Bitwise equality of two arrays of plain values.
+template <class T> bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+void require_same(const Tessellation& a, const Tessellation& b) {
+    CHECK(same_bits(a.mesh.positions, b.mesh.positions));
+    CHECK(same_bits(a.mesh.triangles, b.mesh.triangles));
+    CHECK(same_bits(a.mesh.triangle_surface, b.mesh.triangle_surface));
+    CHECK(same_bits(a.mesh.corner_normals, b.mesh.corner_normals));
+    CHECK(same_bits(a.mesh.corner_uvs, b.mesh.corner_uvs));
+    CHECK(a.trees.roots == b.trees.roots);
+    CHECK(a.trees.depth == b.trees.depth);
+    REQUIRE(a.trees.nodes.size() == b.trees.nodes.size());
+    for (size_t i = 0; i < a.trees.nodes.size(); ++i) {
+        const PatchNode &p = a.trees.nodes[i], &q = b.trees.nodes[i];
+        INFO("node " << i);
+        CHECK((p.child[0] == q.child[0] && p.child[1] == q.child[1] && p.triangle == q.triangle &&
+               p.subpatch == q.subpatch && p.split == q.split));
+    }
+    REQUIRE(a.subpatches.size() == b.subpatches.size());
+    for (size_t i = 0; i < a.subpatches.size(); ++i) {
+        const Subpatch &p = a.subpatches[i], &q = b.subpatches[i];
+        INFO("subpatch " << i);
+        CHECK((p.patch == q.patch && p.node == q.node && p.rect == q.rect && p.depth == q.depth &&
+               p.first_triangle == q.first_triangle && p.triangle_count == q.triangle_count &&
+               p.error_bound == q.error_bound && p.fan_error == q.fan_error));
+    }
+    const TessellationStats &s = a.stats, &t = b.stats;
+    CHECK(s.subpatches == t.subpatches);
+    CHECK(s.triangles == t.triangles);
+    CHECK(s.vertices == t.vertices);
+    CHECK(s.shared_edges == t.shared_edges);
+    CHECK(s.seams == t.seams);
+    CHECK(s.seam_vertices == t.seam_vertices);
+    CHECK(s.flipped_surfaces == t.flipped_surfaces);
+    CHECK(s.max_depth == t.max_depth);
+    CHECK(s.max_error_bound == t.max_error_bound);
+    CHECK(s.above_tolerance == t.above_tolerance);
+    CHECK(s.passes == t.passes);
+}
+
+void check_thread_counts(const std::string& model, double tolerance_of_d_max) {
+    const Model m = load_model(test::model_path(model));
+    TessellationOptions o;
+    o.tolerance = tolerance_of_d_max * control_box(m).max_extent();
+    o.threads = 1;
+    const Tessellation one = tessellate(m, o);
+    REQUIRE(one.stats.triangles > 0);
+    for (int threads : {2, 3}) {
+        INFO(model << ", tolerance " << o.tolerance << ", " << threads << " threads");
+        o.threads = threads;
+        require_same(one, tessellate(m, o));
+    }
+}
+
+} // namespace
+
+TEST_CASE("Tessellation output is the same on 1, 2 and 3 threads: teapot with a tolerance",
+          "[tessellation][parallel]") {
+    check_thread_counts("teapot.json", 1e-3);
+}
+
+TEST_CASE("Tessellation output is the same on 1, 2 and 3 threads: CAD fuselage",
+          "[tessellation][parallel]") {
+    check_thread_counts("cad/bug28366_fuselage.json", 1e-4);
+}
+
+TEST_CASE("Tessellation output is the same on 1, 2 and 3 threads: planarity test",
+          "[tessellation][parallel]") {
+    // tolerance_of_d_max 0: the paper's planarity tolerances.
+    check_thread_counts("teapot.json", 0);
+    check_thread_counts("cad/rounded_cube.json", 0);
+}
