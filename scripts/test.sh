@@ -21,7 +21,29 @@ failed=0
 launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 stamp() { date +%s; }
-report_time() { echo "test.sh: $1 took $(($(stamp) - $2)) s" >&2; }
+# CPU seconds (user + system) of every finished child process so far, from
+# bash's `times` (run in this shell, not a subshell, so it sees the children):
+# with the wall time it tells how much of a part was waiting for a loaded
+# machine. On an idle 2-core machine a part takes about its CPU seconds / 2
+# when it keeps both cores busy, up to its CPU seconds when it does not.
+times_file=$(mktemp)
+trap 'rm -f "$times_file"' EXIT
+cpu_seconds() {
+  times >"$times_file"
+  cpu=$(tail -n 1 "$times_file" | awk '{
+    n = 0
+    for (i = 1; i <= 2; i++) { split($i, a, /[ms]/); n += a[1] * 60 + a[2] }
+    printf "%d", n }')
+}
+start_part() {
+  t0=$(stamp)
+  cpu_seconds
+  c0=$cpu
+}
+report_time() {
+  cpu_seconds
+  echo "test.sh: $1 took $(($(stamp) - t0)) s (CPU $((cpu - c0)) s; $(uptime | sed 's/.*load/load/'))" >&2
+}
 
 # ctest's summary "N% tests passed, F tests failed out of T" -> passed/failed.
 count_ctest() {
@@ -38,12 +60,14 @@ count_ctest() {
 }
 
 # --- Release build and the whole suite -------------------------------------
-t0=$(stamp)
+start_part
 "$here/scripts/setup.sh" "$here/build"
+report_time "set-up and Release build"
+start_part
 cd "$here/build"
 ctest --output-on-failure -j"$jobs" --timeout 600 2>&1 | tee ctest.log || true
 count_ctest ctest.log
-report_time "Release build and ctest" "$t0"
+report_time "Release ctest"
 
 # --- (a)+(b) one clang build with ASan + UBSan, assertions enabled ------------
 # The library is compiled once with -fsanitize=address,undefined (plus
@@ -54,7 +78,7 @@ report_time "Release build and ctest" "$t0"
 # (a) runs the fast tests: intervals, models (readers), meshes (IO and check)
 # and the CLI. The spline enclosure sweeps and the render and tessellation
 # tests stay in the Release run: under ASan they cost more than the budget.
-t0=$(stamp)
+start_part
 # clang-14 is what scripts/setup.sh installs; the clang++ link comes from another package.
 clangxx=$(command -v clang++-14 || command -v clang++)
 san="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
@@ -64,19 +88,19 @@ cmake -S "$here" -B "$here/build-san" -DCMAKE_CXX_COMPILER="$clangxx" -DCMAKE_BU
 san_targets=(seamless seamless_cli test_interval test_model test_mesh test_tools fuzz)
 san_tests='^(interval|model|mesh|tools):'
 if cmake --build "$here/build-san" -j"$jobs" --target "${san_targets[@]}" >"$here/build-san/build.log" 2>&1; then
-  report_time "sanitizer build" "$t0"
-  t0=$(stamp)
+  report_time "sanitizer build"
+  start_part
   cd "$here/build-san"
   # detect_leaks: LeakSanitizer too; halt_on_error: the first report fails the test.
   ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1 \
     UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
     ctest --output-on-failure -j"$jobs" --timeout 600 -R "$san_tests" 2>&1 | tee ctest.log || true
   count_ctest ctest.log
-  report_time "sanitizer tests" "$t0"
+  report_time "sanitizer tests"
 
   # (b) fuzz smoke run: each target FUZZ_SECONDS on a scratch copy of its
   # committed corpus (new inputs stay out of the source tree), two at a time.
-  t0=$(stamp)
+  start_part
   fuzz_seconds=${SEAMLESS_FUZZ_SECONDS:-20}
   cd "$here/build-san/fuzz"
   run_fuzz() {
@@ -104,7 +128,7 @@ if cmake --build "$here/build-san" -j"$jobs" --target "${san_targets[@]}" >"$her
       cat "result-$r"
     done
   done
-  report_time "fuzz smoke run" "$t0"
+  report_time "fuzz smoke run"
 else
   tail -n 40 "$here/build-san/build.log"
   echo "test.sh: sanitizer build FAILED (log: build-san/build.log)"
