@@ -115,7 +115,11 @@ if cmake --build "$here/build-san" -j"$jobs" --target "${san_targets[@]}" >"$her
     tail -n 40 "fuzz_$r.log"
     return 1
   }
-  readers=(model_json bpt scene off obj ply stl gltf glb step_iges)
+  # fuzz_step_iges is built but not run here: OpenCASCADE (uninstrumented)
+  # reads one input in 0.1 to several seconds, so 20 s would try some 50
+  # inputs, and mutated files reach its slow approximation paths past the
+  # 10-s time-out under ASan (docs/fuzzing.md, "STEP and IGES").
+  readers=(model_json bpt scene off obj ply stl gltf glb)
   for ((i = 0; i < ${#readers[@]}; i += 2)); do
     pids=()
     for r in "${readers[@]:i:2}"; do
