@@ -98,8 +98,10 @@ if cmake --build "$here/build-san" -j"$jobs" --target "${san_targets[@]}" >"$her
   report_time "sanitizer build"
   start_part
   cd "$here/build-san"
-  # detect_leaks: LeakSanitizer too; halt_on_error: the first report fails the test.
+  # detect_leaks: LeakSanitizer too (OpenCASCADE's once-per-process tables
+  # suppressed: tests/lsan.supp); halt_on_error: the first report fails the test.
   ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1 \
+    LSAN_OPTIONS="suppressions=$here/tests/lsan.supp:print_suppressions=0" \
     UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
     ctest --output-on-failure -j"$jobs" --timeout 600 -R "$san_tests" 2>&1 | tee ctest.log || true
   count_ctest ctest.log
