@@ -1,17 +1,15 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs what is missing, builds (Release) and runs every test through ctest;
-# then (a) an ASan+UBSan build with assertions on (build-asan/) runs the fast
-# tests, and (b) every libFuzzer target (build-fuzz/) runs 20 s on its seed
-# corpus. Any failure, sanitizer report or fuzzer crash fails the script. The
-# last line is "N passed, N failed" over all three parts.
+# then one clang build with ASan+UBSan and assertions on (build-san/) serves
+# (a) the fast tests and (b) every libFuzzer target but STEP/IGES, each 20 s
+# on its seed corpus. Any failure, sanitizer report or fuzzer crash fails the
+# script. The last line is "N passed, N failed" over all parts.
 #
-# Time: .ci/run must stay under 20 minutes on 2 cores. Measured parts and the
-# estimate for an idle machine are in docs/fuzzing.md ("CI budget"); the
-# fuzz smoke run is 9 targets x 20 s, two at a time (about 2 minutes).
-# Parts (a) and (b) run only with SEAMLESS_SANITIZERS=1 and SEAMLESS_FUZZ_SMOKE=1:
-# they have not yet run end to end within the CI budget (issue 12 stays open
-# until they do); the script says in its last lines which parts it left out.
+# Time: .ci/run must stay under 20 minutes on 2 cores. Each part prints
+# "test.sh: <part> took N s (CPU M s; load ...)"; the measured parts and the
+# estimate for an idle machine are in docs/fuzzing.md ("CI budget"). The fuzz
+# smoke run is 9 targets x 20 s, two at a time (about 100 s).
 set -euo pipefail
 # scripts/setup.sh installs every tool the tests need, so a test that finds
 # one missing fails here instead of warning (the glTF validator test reads CI).
@@ -62,23 +60,18 @@ count_ctest() {
   failed=$((failed + f))
 }
 
-# SEAMLESS_TEST_PARTS chooses parts ("release sanitize", the default, is both;
-# for timing one part alone). "sanitize" expects scripts/setup.sh to have run.
-parts=" ${SEAMLESS_TEST_PARTS:-release sanitize} "
-
 # --- Release build and the whole suite -------------------------------------
-if [[ $parts == *" release "* ]]; then
-start_part
-"$here/scripts/setup.sh" "$here/build"
-report_time "set-up and Release build"
-start_part
-cd "$here/build"
-ctest --output-on-failure -j"$jobs" --timeout 600 2>&1 | tee ctest.log || true
-count_ctest ctest.log
-report_time "Release ctest"
-fi
+release_part() {
+  start_part
+  "$here/scripts/setup.sh" "$here/build"
+  report_time "set-up and Release build"
+  start_part
+  cd "$here/build"
+  ctest --output-on-failure -j"$jobs" --timeout 600 2>&1 | tee ctest.log || true
+  count_ctest ctest.log
+  report_time "Release ctest"
+}
 
-if [[ $parts == *" sanitize "* ]]; then
 # --- (a)+(b) one clang build with ASan + UBSan, assertions enabled ------------
 # The library is compiled once with -fsanitize=address,undefined (plus
 # float-cast-overflow, -fno-sanitize-recover=all, and fuzzer-no-link for the
@@ -88,69 +81,76 @@ if [[ $parts == *" sanitize "* ]]; then
 # (a) runs the fast tests: intervals, models (readers), meshes (IO and check)
 # and the CLI. The spline enclosure sweeps and the render and tessellation
 # tests stay in the Release run: under ASan they cost more than the budget.
-start_part
-# clang-14 is what scripts/setup.sh installs; the clang++ link comes from another package.
-clangxx=$(command -v clang++-14 || command -v clang++)
-san="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
-cmake -S "$here" -B "$here/build-san" -DCMAKE_CXX_COMPILER="$clangxx" -DCMAKE_BUILD_TYPE=Sanitize \
-  -DCMAKE_CXX_FLAGS="-O1 -g $san -fsanitize=fuzzer-no-link" -DSEAMLESS_BUILD_BENCH=OFF \
-  -DSEAMLESS_FUZZ=ON -DSEAMLESS_FUZZ_LINK_LIBRARY=ON "${launcher[@]}" >/dev/null
-san_targets=(seamless seamless_cli test_interval test_model test_mesh test_tools fuzz)
-san_tests='^(interval|model|mesh|tools):'
-if cmake --build "$here/build-san" -j"$jobs" --target "${san_targets[@]}" >"$here/build-san/build.log" 2>&1; then
-  report_time "sanitizer build"
+sanitize_part() {
   start_part
-  cd "$here/build-san"
-  # detect_leaks: LeakSanitizer too (OpenCASCADE's once-per-process tables
-  # suppressed: tests/lsan.supp); halt_on_error: the first report fails the test.
-  ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1 \
-    LSAN_OPTIONS="suppressions=$here/tests/lsan.supp:print_suppressions=0" \
-    UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-    ctest --output-on-failure -j"$jobs" --timeout 600 -R "$san_tests" 2>&1 | tee ctest.log || true
-  count_ctest ctest.log
-  report_time "sanitizer tests"
+  # clang-14 is what scripts/setup.sh installs; the clang++ link comes from another package.
+  clangxx=$(command -v clang++-14 || command -v clang++)
+  san="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
+  cmake -S "$here" -B "$here/build-san" -DCMAKE_CXX_COMPILER="$clangxx" -DCMAKE_BUILD_TYPE=Sanitize \
+    -DCMAKE_CXX_FLAGS="-O1 -g $san -fsanitize=fuzzer-no-link" -DSEAMLESS_BUILD_BENCH=OFF \
+    -DSEAMLESS_FUZZ=ON -DSEAMLESS_FUZZ_LINK_LIBRARY=ON "${launcher[@]}" >/dev/null
+  san_targets=(seamless seamless_cli test_interval test_model test_mesh test_tools fuzz)
+  san_tests='^(interval|model|mesh|tools):'
+  if cmake --build "$here/build-san" -j"$jobs" --target "${san_targets[@]}" >"$here/build-san/build.log" 2>&1; then
+    report_time "sanitizer build"
+    start_part
+    cd "$here/build-san"
+    # detect_leaks: LeakSanitizer too (OpenCASCADE's once-per-process tables
+    # suppressed: tests/lsan.supp); halt_on_error: the first report fails the test.
+    ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1 \
+      LSAN_OPTIONS="suppressions=$here/tests/lsan.supp:print_suppressions=0" \
+      UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+      ctest --output-on-failure -j"$jobs" --timeout 600 -R "$san_tests" 2>&1 | tee ctest.log || true
+    count_ctest ctest.log
+    report_time "sanitizer tests"
 
-  # (b) fuzz smoke run: each target FUZZ_SECONDS on a scratch copy of its
-  # committed corpus (new inputs stay out of the source tree), two at a time.
-  start_part
-  fuzz_seconds=${SEAMLESS_FUZZ_SECONDS:-20}
-  cd "$here/build-san/fuzz"
-  run_fuzz() {
-    local r=$1
-    rm -rf "work-$r" && mkdir -p "work-$r" "crashes-$r"
-    if "./fuzz_$r" -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-      -artifact_prefix="crashes-$r/" "work-$r" "$here/tests/fuzz/corpus/$r" >"fuzz_$r.log" 2>&1; then
-      echo "fuzz_$r: $(grep -E '^stat::number_of_executed_units' "fuzz_$r.log" | awk '{print $2}') runs, no crash"
-      return 0
-    fi
-    echo "fuzz_$r: FAILED (reproducer in $PWD/crashes-$r/)"
-    tail -n 40 "fuzz_$r.log"
-    return 1
-  }
-  # fuzz_step_iges is built but not run here: OpenCASCADE (uninstrumented)
-  # reads one input in 0.1 to several seconds, so 20 s would try some 50
-  # inputs, and mutated files reach its slow approximation paths past the
-  # 10-s time-out under ASan (docs/fuzzing.md, "STEP and IGES").
-  readers=(model_json bpt scene off obj ply stl gltf glb)
-  for ((i = 0; i < ${#readers[@]}; i += 2)); do
-    pids=()
-    for r in "${readers[@]:i:2}"; do
-      run_fuzz "$r" >"result-$r" 2>&1 &
-      pids+=($!)
+    # (b) fuzz smoke run: each target SEAMLESS_FUZZ_SECONDS (20) on a scratch copy of its
+    # committed corpus (new inputs stay out of the source tree), two at a time.
+    start_part
+    fuzz_seconds=${SEAMLESS_FUZZ_SECONDS:-20}
+    cd "$here/build-san/fuzz"
+    run_fuzz() {
+      local r=$1
+      rm -rf "work-$r" && mkdir -p "work-$r" "crashes-$r"
+      if "./fuzz_$r" -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+        -artifact_prefix="crashes-$r/" "work-$r" "$here/tests/fuzz/corpus/$r" >"fuzz_$r.log" 2>&1; then
+        echo "fuzz_$r: $(grep -E '^stat::number_of_executed_units' "fuzz_$r.log" | awk '{print $2}') runs, no crash"
+        return 0
+      fi
+      echo "fuzz_$r: FAILED (reproducer in $PWD/crashes-$r/)"
+      tail -n 40 "fuzz_$r.log"
+      return 1
+    }
+    # fuzz_step_iges is built but not run here: OpenCASCADE (uninstrumented)
+    # reads one input in 0.1 to several seconds, so 20 s would try some 50
+    # inputs, and mutated files reach its slow approximation paths past the
+    # 10-s time-out under ASan (docs/fuzzing.md, "STEP and IGES").
+    readers=(model_json bpt scene off obj ply stl gltf glb)
+    for ((i = 0; i < ${#readers[@]}; i += 2)); do
+      pids=()
+      for r in "${readers[@]:i:2}"; do
+        run_fuzz "$r" >"result-$r" 2>&1 &
+        pids+=($!)
+      done
+      for k in "${!pids[@]}"; do
+        r=${readers[i + k]}
+        if wait "${pids[k]}"; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+        cat "result-$r"
+      done
     done
-    for k in "${!pids[@]}"; do
-      r=${readers[i + k]}
-      if wait "${pids[k]}"; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
-      cat "result-$r"
-    done
-  done
-  report_time "fuzz smoke run"
-else
-  tail -n 40 "$here/build-san/build.log"
-  echo "test.sh: sanitizer build FAILED (log: build-san/build.log)"
-  failed=$((failed + 1))
-fi
-fi
+    report_time "fuzz smoke run"
+  else
+    tail -n 40 "$here/build-san/build.log"
+    echo "test.sh: sanitizer build FAILED (log: build-san/build.log)"
+    failed=$((failed + 1))
+  fi
+}
+
+# SEAMLESS_TEST_PARTS chooses the parts ("release sanitize", the default, is
+# both; one alone for timing it). "sanitize" expects scripts/setup.sh to have run.
+for part in ${SEAMLESS_TEST_PARTS:-release sanitize}; do
+  "${part}_part"
+done
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
