@@ -15,22 +15,26 @@ packages=(build-essential cmake pkg-config libopenmesh-dev libcgal-dev libtinygl
           nlohmann-json3-dev libstb-dev libcli11-dev libtbb-dev libboost-dev python3
           libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
           libocct-foundation-dev libembree-dev clang-14 libclang-rt-14-dev libfuzzer-14-dev)
+# node and npm run the Khronos glTF validator (tests/mesh/mesh_io_test.cpp);
+# by command, since a node from elsewhere (nodesource) brings its own npm.
+command -v node >/dev/null 2>&1 || packages+=(nodejs)
+command -v npm >/dev/null 2>&1 || packages+=(npm)
+sudo_cmd=""
+[ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}" >&2
-  sudo_cmd=""
-  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
   $sudo_cmd apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# The Khronos glTF validator (npm) for the .glb export test, when npm is there.
-# Without it the test warns that it checked nothing, and fails under CI=true.
-if command -v npm >/dev/null 2>&1 && ! npm ls -g gltf-validator >/dev/null 2>&1; then
-  npm install -g --silent --no-audit --no-fund gltf-validator >/dev/null 2>&1 ||
+# The Khronos glTF validator (npm) for the .glb export test. Without it the
+# test warns that it checked nothing, and fails under CI=true.
+if ! npm ls -g gltf-validator >/dev/null 2>&1; then
+  $sudo_cmd npm install -g --silent --no-audit --no-fund gltf-validator >/dev/null 2>&1 ||
     echo "setup: gltf-validator not installed (npm failed); its test fails under CI" >&2
 fi
 

@@ -211,6 +211,8 @@ AccessorView view_of(const tinygltf::Model& model, int index, size_t elem, const
     if (r.stride < elem) fail(file, field, "byteStride smaller than an element");
     r.count = a.count;
     const size_t start = add(v.byteOffset, a.byteOffset, file, field);
+    // Also for an empty accessor: base must point into the buffer.
+    if (start > view_end) fail(file, field, "accessor byteOffset exceeds its bufferView");
     if (a.count > 0) {
         const size_t last = add(mul(a.count - 1, r.stride, file, field), elem, file, field);
         if (add(start, last, file, field) > view_end)

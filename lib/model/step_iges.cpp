@@ -31,7 +31,9 @@
 #include <IGESControl_Reader.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
+#include <Interface_Check.hxx>
 #include <Interface_InterfaceModel.hxx>
+#include <Interface_ReportEntity.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -42,7 +44,9 @@
 #include <StepData_GlobalFactors.hxx>
 #include <StepData_StepModel.hxx>
 #include <StepGeom_GeomRepContextAndGlobUnitAssCtxAndGlobUncertaintyAssCtx.hxx>
+#include <StepGeom_GeometricRepresentationItem.hxx>
 #include <StepRepr_GlobalUnitAssignedContext.hxx>
+#include <StepShape_TopologicalRepresentationItem.hxx>
 #include <TCollection_HAsciiString.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -129,6 +133,36 @@ Handle(Geom_Surface) exact_form(Handle(Geom_Surface) s) {
     if (auto e = Handle(Geom_SurfaceOfLinearExtrusion)::DownCast(s))
         return exact_curve(e->BasisCurve()) ? s : Handle(Geom_Surface)();
     return Handle(Geom_Surface)();
+}
+
+// An entity the file reader could not read as its type says (a misspelt
+// entity name, a parameter of the wrong kind) stays in the model with a fail
+// message, and the entities referring to it get null references that
+// OpenCASCADE 7.6's transfer dereferences (SIGSEGV in
+// StepToGeom::MakeCartesianPoint on a torus whose CARTESIAN_POINT is misspelt;
+// tests/fuzz/occt-crashes/). A file with such an entity among its geometry or
+// topology (every IGES entity; STEP's geometric and topological
+// representation items) is refused before the transfer. Elsewhere (a STEP
+// presentation style, as splinecage.stp's curve_font) it is left to OpenCASCADE.
+void refuse_error_entities(const Handle(Interface_InterfaceModel) & model, const std::string& file,
+                           bool iges) {
+    for (Standard_Integer i = 1; i <= model->NbEntities(); ++i) {
+        if (!model->IsErrorEntity(i)) continue;
+        const Handle(Standard_Transient) entity = model->Value(i);
+        if (!iges && !entity.IsNull() &&
+            !entity->IsKind(STANDARD_TYPE(StepGeom_GeometricRepresentationItem)) &&
+            !entity->IsKind(STANDARD_TYPE(StepShape_TopologicalRepresentationItem)))
+            continue;
+        std::string what = "entity " + std::to_string(i);
+        const Handle(TCollection_HAsciiString) label = model->StringLabel(entity);
+        if (!label.IsNull()) what = "entity " + std::string(label->ToCString());
+        const Handle(Interface_ReportEntity) report = model->ReportEntity(i);
+        if (!report.IsNull() && !report->Check().IsNull() && report->Check()->NbFails() > 0)
+            what += " (" + std::string(report->Check()->CFail(1)) + ")";
+        throw InputError(file, "",
+                         std::string("not a readable ") + (iges ? "IGES" : "STEP") +
+                             " file: OpenCASCADE could not read " + what);
+    }
 }
 
 struct Converted {
@@ -342,6 +376,7 @@ Model read_locked(const std::filesystem::path& path, const ModelLoadOptions& opt
         keep_step_units(static_cast<STEPControl_Reader&>(*reader));
     if (reader->Model().IsNull() || reader->Model()->NbEntities() == 0)
         throw InputError(file, "", "not a readable " + format + " file (no entities)");
+    refuse_error_entities(reader->Model(), file, iges);
     if (reader->NbRootsForTransfer() == 0)
         throw InputError(file, "", "no surfaces (the " + format + " file has nothing to transfer)");
     reader->TransferRoots();

@@ -8,7 +8,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
+#include <unistd.h>
 
 namespace seamless::fuzz {
 
@@ -28,6 +31,20 @@ template <class F> void expect_clean(const std::string& file, F&& f) {
         for (char c : what)
             if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) __builtin_trap();
     }
+}
+
+// A scratch folder of this process for harnesses whose readers open files
+// (`seamless-fuzz-<name>-<pid>` in the temp directory), removed at exit.
+inline std::filesystem::path scratch_folder(const std::string& name) {
+    static std::filesystem::path folder;
+    folder = std::filesystem::temp_directory_path() /
+             ("seamless-fuzz-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    std::atexit([] {
+        std::error_code ec;
+        std::filesystem::remove_all(folder, ec);
+    });
+    return folder;
 }
 
 } // namespace seamless::fuzz

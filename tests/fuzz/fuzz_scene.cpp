@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace {
 
@@ -16,18 +15,12 @@ std::filesystem::path folder;
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    folder = std::filesystem::temp_directory_path() /
-             ("seamless-fuzz-scene-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(folder);
+    folder = seamless::fuzz::scratch_folder("scene");
     std::ofstream(folder / "m.json")
         << R"({"version": 1, "surfaces": [{"degree": [1, 1], "size": [2, 2],
                "knots_u": [0, 0, 1, 1], "knots_v": [0, 0, 1, 1],
                "control_points": [[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 1]]}]})";
     std::ofstream(folder / "m.bpt") << "1\n1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n";
-    std::atexit([] {
-        std::error_code ec;
-        std::filesystem::remove_all(folder, ec);
-    });
     return 0;
 }
 

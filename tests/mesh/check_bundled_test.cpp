@@ -188,7 +188,9 @@ TEST_CASE("teapot and teacup pass: the handles are shells touching the body", "[
         const CheckReport r = check_mesh(t.mesh, {});
         INFO(name);
         auto surface = [&](int tri) { return t.mesh.triangle_surface[tri]; };
-        auto handle = [&](int tri) { return surface(tri) >= 12 && surface(tri) <= last; };
+        // A copy: clang 14 cannot capture a structured binding in a lambda.
+        const int last_handle = last;
+        auto handle = [&](int tri) { return surface(tri) >= 12 && surface(tri) <= last_handle; };
         std::set<int> handle_shells, other_shells;
         for (int tri = 0; tri < t.mesh.triangle_count(); ++tri)
             (handle(tri) ? handle_shells : other_shells).insert(r.triangle_component[tri]);

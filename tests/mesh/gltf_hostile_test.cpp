@@ -104,6 +104,17 @@ TEST_CASE("glTF byteOffset near 2^64 is refused, not read before the buffer", "[
     }
 }
 
+// Found by fuzz_glb in the CI smoke run: an accessor of 0 elements was not
+// checked, and its byteOffset near 2^64 moved the element pointer before the
+// buffer (undefined behaviour UBSan reports, in the sanitizer run of this test).
+TEST_CASE("glb accessor of 0 elements with a byteOffset near 2^64 is refused", "[gltf][hostile]") {
+    const std::filesystem::path file = std::filesystem::path(SEAMLESS_SOURCE_DIR) / "tests" /
+                                       "fuzz" / "corpus" / "glb" /
+                                       "empty-accessor-offset-wraps.glb";
+    REQUIRE(std::filesystem::is_regular_file(file));
+    CHECK_THROWS_AS(read_mesh(file), InputError);
+}
+
 TEST_CASE("glTF nested 200,000 levels deep is refused before parsing, no stack overflow",
           "[gltf][hostile][cli]") {
     const auto dir = test::scratch_dir("gltf-deep-nesting");

@@ -14,7 +14,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <vector>
 
 using namespace seamless;
@@ -209,6 +211,31 @@ TEST_CASE("bad STEP/IGES files: one InputError naming the file", "[model][cad][e
         CHECK(err.find('\n') == std::string::npos);
     }
     CHECK_THAT(load_error(dir / "missing.step"), Catch::Contains("cannot open file"));
+}
+
+// Issue 12, found by fuzz_step_iges: one misspelt entity name
+// (CA0RTESIAN_POINT) left a null reference that OpenCASCADE 7.6's transfer
+// dereferenced (SIGSEGV, the CLI exited 139). The reproducer is also in
+// tests/fuzz/corpus/step_iges/misspelt-point.step.
+TEST_CASE("a STEP file whose geometry refers to an unreadable entity is refused, not a crash",
+          "[model][cad][errors]") {
+    std::string text;
+    {
+        std::ifstream in(cad("generated/torus.step"), std::ios::binary);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        text = ss.str();
+    }
+    const std::string point = "#54 = CARTESIAN_POINT(";
+    const size_t at = text.find(point);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, point.size(), "#54 = CA0RTESIAN_POINT(");
+    const auto file = test::scratch_dir("step-iges-misspelt") / "misspelt-point.step";
+    test::write_file(file, text);
+    const std::string err = load_error(file);
+    CHECK_THAT(err, Catch::StartsWith(file.string() + ": not a readable STEP file") &&
+                        Catch::Contains("entity #53"));
+    CHECK(err.find('\n') == std::string::npos);
 }
 
 namespace {
