@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Installs what is missing, builds (Release) and runs every test through ctest;
-# then one clang build with ASan+UBSan and assertions on (build-san/) serves
-# (a) the fast tests and (b) every libFuzzer target but STEP/IGES, each 20 s
+# Installs what is missing, builds (Release) and runs every test through ctest.
+# With SEAMLESS_TEST_PARTS="release sanitize", one clang build with ASan+UBSan
+# and assertions on (build-san/) then serves (a) the fast tests and (b) every libFuzzer target but STEP/IGES, each 20 s
 # on its seed corpus. Any failure, sanitizer report or fuzzer crash fails the
 # script. The last line is "N passed, N failed" over all parts.
 #
@@ -150,9 +150,12 @@ sanitize_part() {
   fi
 }
 
-# SEAMLESS_TEST_PARTS chooses the parts ("release sanitize", the default, is
-# both; one alone for timing it). "sanitize" expects scripts/setup.sh to have run.
-for part in ${SEAMLESS_TEST_PARTS:-release sanitize}; do
+# SEAMLESS_TEST_PARTS chooses the parts: "release" (the default, what CI runs),
+# "release sanitize" (both), or one alone for timing it. "sanitize" expects
+# scripts/setup.sh to have run. The sanitizer part is not CI's default: cold,
+# the two parts take about 31 minutes on an idle 2-core machine (docs/fuzzing.md,
+# "CI budget"), over the 20-minute budget; issue 12 stays open until they fit.
+for part in ${SEAMLESS_TEST_PARTS:-release}; do
   "${part}_part"
 done
 
