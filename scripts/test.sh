@@ -153,7 +153,7 @@ sanitize_part() {
 # SEAMLESS_TEST_PARTS chooses the parts: "release" (the default, what CI runs),
 # "release sanitize" (both), or one alone for timing it. "sanitize" expects
 # scripts/setup.sh to have run. The sanitizer part is not CI's default: cold,
-# the two parts take about 31 minutes on an idle 2-core machine (docs/fuzzing.md,
+# the two parts took 27.8 minutes on an idle 2-core machine (docs/fuzzing.md,
 # "CI budget"), over the 20-minute budget; issue 12 stays open until they fit.
 for part in ${SEAMLESS_TEST_PARTS:-release}; do
   "${part}_part"
