@@ -3,18 +3,11 @@
 
 #include <catch2/catch.hpp>
 
+#include "welded.h"
+
 using namespace seamless;
 
-namespace {
-
-WeldedMesh welded(std::vector<Vec3> p, std::vector<std::array<int, 3>> t) {
-    TriangleMesh m;
-    m.positions = std::move(p);
-    m.triangles = std::move(t);
-    return weld_vertices(m);
-}
-
-} // namespace
+using seamless::test::welded;
 
 TEST_CASE("edge_topology: borders, a non-manifold edge and a misoriented pair",
           "[check][edge_topology]") {

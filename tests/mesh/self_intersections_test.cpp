@@ -4,18 +4,11 @@
 
 #include <catch2/catch.hpp>
 
+#include "welded.h"
+
 using namespace seamless;
 
-namespace {
-
-WeldedMesh welded(std::vector<Vec3> p, std::vector<std::array<int, 3>> t) {
-    TriangleMesh m;
-    m.positions = std::move(p);
-    m.triangles = std::move(t);
-    return weld_vertices(m);
-}
-
-} // namespace
+using seamless::test::welded;
 
 TEST_CASE("self_intersections: duplicates are hashed, each repeat paired with the first",
           "[check][self_intersections]") {

@@ -7,25 +7,18 @@
 
 #include <catch2/catch.hpp>
 
+#include "dome_patch.h"
+
 #include <random>
 
 using namespace seamless;
 
 namespace {
 
-// A bicubic dome in front of the eye (camera coordinates: Z forward), bulging
-// towards it, so that rays near its rim meet folds of the silhouette.
+// The dome of dome_patch.h, bulging towards the eye, so that rays near its
+// rim meet folds of the silhouette.
 ProjectedPatch dome(std::mt19937& rng, double bulge) {
-    std::uniform_real_distribution<double> J(-0.05, 0.05);
-    BezierPatch b;
-    b.p = b.q = 3;
-    for (int i = 0; i <= 3; ++i)
-        for (int j = 0; j <= 3; ++j) {
-            const bool inner = (i == 1 || i == 2) && (j == 1 || j == 2);
-            b.at(i, j) = HPoint::from({-1 + 2.0 * i / 3 + J(rng), -1 + 2.0 * j / 3 + J(rng),
-                                       5 - (inner ? bulge : 0.0) + J(rng)},
-                                      1.0);
-        }
+    const BezierPatch b = test::random_dome(rng, bulge);
     ProjectedPatch pp;
     pp.patch = b;
     pp.forms = patch_forms(b);
