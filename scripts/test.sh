@@ -77,7 +77,9 @@ release_part() {
 # float-cast-overflow, -fno-sanitize-recover=all, and fuzzer-no-link for the
 # fuzzer's coverage); the chosen Catch2 tests link it as they are, the fuzz_*
 # harnesses link it with -fsanitize=fuzzer (tests/fuzz/CMakeLists.txt,
-# SEAMLESS_FUZZ_LINK_LIBRARY). No NDEBUG: every assert is live.
+# SEAMLESS_FUZZ_LINK_LIBRARY). No NDEBUG: every assert is live. Compile time
+# is most of this part: line tables only (stack traces keep file:line) and
+# the CLI and the tests at -O0 (SEAMLESS_CLI_TEST_COMPILE_OPTIONS) halve it.
 # (a) runs the fast tests: intervals, models (readers), meshes (IO and check)
 # and the CLI. The spline enclosure sweeps and the render and tessellation
 # tests stay in the Release run: under ASan they cost more than the budget.
@@ -87,8 +89,9 @@ sanitize_part() {
   clangxx=$(command -v clang++-14 || command -v clang++)
   san="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
   cmake -S "$here" -B "$here/build-san" -DCMAKE_CXX_COMPILER="$clangxx" -DCMAKE_BUILD_TYPE=Sanitize \
-    -DCMAKE_CXX_FLAGS="-O1 -g $san -fsanitize=fuzzer-no-link" -DSEAMLESS_BUILD_BENCH=OFF \
-    -DSEAMLESS_FUZZ=ON -DSEAMLESS_FUZZ_LINK_LIBRARY=ON "${launcher[@]}" >/dev/null
+    -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only $san -fsanitize=fuzzer-no-link" -DSEAMLESS_BUILD_BENCH=OFF \
+    -DSEAMLESS_CLI_TEST_COMPILE_OPTIONS=-O0 -DSEAMLESS_FUZZ=ON -DSEAMLESS_FUZZ_LINK_LIBRARY=ON \
+    "${launcher[@]}" >/dev/null
   san_targets=(seamless seamless_cli test_interval test_model test_mesh test_tools fuzz)
   san_tests='^(interval|model|mesh|tools):'
   # Tests of test_mesh that tessellate the bundled models finely before they

@@ -8,10 +8,12 @@
 #include <seamless/tessellate/triangle_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace seamless::test {
@@ -105,45 +107,64 @@ inline MeshReport analyse_mesh(const TriangleMesh& m, double d_max, bool t_junct
         grid.push_back({key_of(c[0], c[1], c[2]), static_cast<int>(i)});
     }
     std::sort(grid.begin(), grid.end());
+    // Cell key -> its run [begin, end) in grid: one hash lookup per cell.
+    std::unordered_map<std::uint64_t, std::pair<int, int>> runs;
+    runs.reserve(grid.size());
+    for (size_t i = 0; i < grid.size();) {
+        size_t j = i;
+        while (j < grid.size() && grid[j].first == grid[i].first) ++j;
+        runs.emplace(grid[i].first, std::pair<int, int>{static_cast<int>(i), static_cast<int>(j)});
+        i = j;
+    }
     const double tol = 1e-10 * d_max;
+    std::vector<std::uint64_t> cells; // of one edge, deduplicated
     for (size_t ei = 0; ei < edges.size(); ++ei) {
         const auto& key = edges[ei];
         const Vec3 a = m.positions[key.first], b = m.positions[key.second];
         const Vec3 d = b - a;
         const double dd = dot(d, d);
         if (!(dd > 0)) continue;
+        // A vertex within tol of the edge lies within tol of one piece of it
+        // no longer than h, so in a cell meeting that piece's box grown by tol.
         const int steps = 1 + static_cast<int>(std::sqrt(dd) / h);
+        cells.clear();
+        for (int k = 0; k < steps; ++k) {
+            const Vec3 p = a + (double(k) / steps) * d, q = a + (double(k + 1) / steps) * d;
+            const auto lo = cell(
+                Vec3{std::min(p.x, q.x) - tol, std::min(p.y, q.y) - tol, std::min(p.z, q.z) - tol});
+            const auto hi = cell(
+                Vec3{std::max(p.x, q.x) + tol, std::max(p.y, q.y) + tol, std::max(p.z, q.z) + tol});
+            for (long long x = lo[0]; x <= hi[0]; ++x)
+                for (long long y = lo[1]; y <= hi[1]; ++y)
+                    for (long long z = lo[2]; z <= hi[2]; ++z) cells.push_back(key_of(x, y, z));
+        }
+        std::sort(cells.begin(), cells.end());
+        cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
         bool found = false;
-        for (int k = 0; k <= steps && !found; ++k) {
-            const auto c = cell(a + (double(k) / steps) * d);
-            for (long long dx = -1; dx <= 1 && !found; ++dx)
-                for (long long dy = -1; dy <= 1 && !found; ++dy)
-                    for (long long dz = -1; dz <= 1 && !found; ++dz) {
-                        const std::uint64_t ck = key_of(c[0] + dx, c[1] + dy, c[2] + dz);
-                        auto it = std::lower_bound(grid.begin(), grid.end(),
-                                                   std::pair<std::uint64_t, int>{ck, -1});
-                        for (; it != grid.end() && it->first == ck; ++it) {
-                            const int v = it->second;
-                            if (v == key.first || v == key.second) continue;
-                            if (free_overlaps && edge_border[ei] && border_vertex[v]) continue;
-                            const Vec3 p = m.positions[v];
-                            const double t = dot(p - a, d) / dd;
-                            if (t <= 1e-9 || t >= 1 - 1e-9) continue;
-                            if (distance(p, a + t * d) <= tol) {
-                                if (r.example.empty()) {
-                                    std::ostringstream os;
-                                    os.precision(17);
-                                    os << "vertex " << v << " (" << p.x << ", " << p.y << ", "
-                                       << p.z << ") inside edge " << key.first << " (" << a.x
-                                       << ", " << a.y << ", " << a.z << ") - " << key.second << " ("
-                                       << b.x << ", " << b.y << ", " << b.z << ") at " << t;
-                                    r.example = os.str();
-                                }
-                                found = true;
-                                break;
-                            }
-                        }
+        for (size_t ci = 0; ci < cells.size() && !found; ++ci) {
+            const auto run = runs.find(cells[ci]);
+            if (run == runs.end()) continue;
+            for (int g = run->second.first; g < run->second.second; ++g) {
+                const int v = grid[g].second;
+                if (v == key.first || v == key.second) continue;
+                if (free_overlaps && edge_border[ei] && border_vertex[v]) continue;
+                const Vec3 p = m.positions[v];
+                const double t = dot(p - a, d) / dd;
+                if (t <= 1e-9 || t >= 1 - 1e-9) continue;
+                if (distance(p, a + t * d) <= tol) {
+                    if (r.example.empty()) {
+                        std::ostringstream os;
+                        os.precision(17);
+                        os << "vertex " << v << " (" << p.x << ", " << p.y << ", " << p.z
+                           << ") inside edge " << key.first << " (" << a.x << ", " << a.y << ", "
+                           << a.z << ") - " << key.second << " (" << b.x << ", " << b.y << ", "
+                           << b.z << ") at " << t;
+                        r.example = os.str();
                     }
+                    found = true;
+                    break;
+                }
+            }
         }
         if (found) ++r.t_junctions;
     }
