@@ -373,7 +373,11 @@ namespace {
 // Sides shared by two fans are split into kSideRefinement pieces, the same
 // for both; phi is linear between those points. Inside, a fan triangle is
 // refined m = kSideRefinement * 2^k times (k chosen from its derivative bounds).
-constexpr int kSideRefinement = 2;
+// Between the shared points phi is linear in the parameters, not a foot, so
+// the tangential drift there counts in full: with 2 pieces a fan whose four
+// triangles passed at 0.9 of a tolerance could certify at 1.25 of it (teapot,
+// lid seams) and the passes never ended; with 4 they agree within a few percent.
+constexpr int kSideRefinement = 4;
 constexpr int kMaxCertifyRefinement = 16;
 
 // phi at a mesh vertex, a function of its grid point and position alone, so
@@ -411,31 +415,15 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                            std::span<const RingPoint> ring, double scale) {
     const size_t n = ring.size();
     assert(n >= 3);
-    // Derivative bounds over the subpatch grown by its size on every side
-    // (phi may reach into the neighbours), or over the whole patch.
-    const long long ws = r.s1 - r.s0, wt = r.t1 - r.t0;
-    ParamRect e;
-    e.s0 = static_cast<int>(std::max<long long>(0, r.s0 - ws));
-    e.s1 = static_cast<int>(std::min<long long>(kParamOne, r.s1 + ws));
-    e.t0 = static_cast<int>(std::max<long long>(0, r.t0 - wt));
-    e.t1 = static_cast<int>(std::min<long long>(kParamOne, r.t1 + wt));
-    const double es0 = param_of(e.s0), es1 = param_of(e.s1);
-    const double et0 = param_of(e.t0), et1 = param_of(e.t1);
-    const BezierPatch grown = extract_subpatch(patch, e);
-    const Net net = make_net(grown, centre);
-    const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
-    std::optional<Net> whole;
-    DerivativeBounds whole_full;
-
     // m: the tangential remainder of an unrefined fan triangle of the subpatch
     // against its normal remainder (about the geometric deviation).
     int m = kSideRefinement;
     {
+        const Net net = make_net(extract_subpatch(patch, r), centre);
+        const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
         const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
-        const double lw = (param_of(r.s1) - param_of(r.s0)) / (es1 - es0);
-        const double lt = (param_of(r.t1) - param_of(r.t0)) / (et1 - et0);
-        const double R1 = remainder(full, lw, lt);
-        const double Rn1 = remainder(split_bounds(net, nz, full).normal, lw, lt);
+        const double R1 = remainder(full, 1, 1);
+        const double Rn1 = remainder(split_bounds(net, nz, full).normal, 1, 1);
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     const int side_step = m / kSideRefinement;
@@ -445,8 +433,14 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     const double inner_limit =
         0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
 
+    // (1) phi at the refined vertices of every fan triangle: grid k, a, c is
+    // centre + a/m (P - centre) + c/m (Q - centre), P Q the ring's k-th side.
     constexpr int K = kMaxCertifyRefinement + 1;
-    std::vector<std::array<Node, K>> radial(n);
+    thread_local std::vector<std::array<Node, K>> radial;
+    thread_local std::vector<Node> grids;
+    radial.resize(n);
+    grids.resize(n * K * K);
+    auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
     for (size_t i = 0; i < n; ++i) {
         radial[i][0] = centre_node;
         radial[i][m] = vertex_phi(patch, ring[i]);
@@ -460,30 +454,21 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             radial[i][a] = {u, g};
         }
     }
-
-    const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
-    double bound = 0;
-    Node grid[K][K];
     for (size_t k = 0; k < n; ++k) {
         const size_t k1 = (k + 1) % n;
         const RingPoint &P = ring[k], &Q = ring[k1];
-        Vec3 nk = cross(P.position - centre, Q.position - centre);
-        const double len = norm(nk);
-        nk = len > 1e-300 && std::isfinite(len) ? nk / len : normalize(diag);
-        const SplitBounds nb = split_bounds(net, nk, full);
-        for (int a = 0; a <= m; ++a) grid[a][0] = radial[k][a];
-        for (int c = 0; c <= m; ++c) grid[0][c] = radial[k1][c];
+        for (int a = 0; a <= m; ++a) node(k, a, 0) = radial[k][a];
+        for (int c = 0; c <= m; ++c) node(k, 0, c) = radial[k1][c];
         // The side P Q: points in a canonical order (from the endpoint with the
         // smaller grid point), the same for the fan on its other side.
         const bool forward = std::pair(param(P).s, param(P).t) < std::pair(param(Q).s, param(Q).t);
         const RingPoint& lo = forward ? P : Q;
         const RingPoint& hi = forward ? Q : P;
-        const Node& nlo = forward ? grid[m][0] : grid[0][m];
-        const Node& nhi = forward ? grid[0][m] : grid[m][0];
+        const Node& nlo = forward ? node(k, m, 0) : node(k, 0, m);
+        const Node& nhi = forward ? node(k, 0, m) : node(k, m, 0);
         const Param plo = param(lo), phi_ = param(hi);
         const bool side = on_patch_side(lo, hi);
         const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
-        double prev = 0;
         Node canon[kSideRefinement + 1];
         canon[0] = nlo;
         canon[kSideRefinement] = nhi;
@@ -491,33 +476,31 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             const double f = static_cast<double>(j) / kSideRefinement;
             const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
             const Vec3 x = lo.position + f * (hi.position - lo.position);
-            Node& node = canon[j];
+            Node& cn = canon[j];
             if (side) {
                 // Along the patch's side, between phi(lo) and phi(hi).
-                prev = foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement,
-                                    node.g);
-                node.u = {nlo.u.s + prev * (nhi.u.s - nlo.u.s),
-                          nlo.u.t + prev * (nhi.u.t - nlo.u.t)};
+                const double z =
+                    foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
+                cn.u = {nlo.u.s + z * (nhi.u.s - nlo.u.s), nlo.u.t + z * (nhi.u.t - nlo.u.t)};
             } else {
-                node.u = foot_iterated(patch, x, w, seg_limit, 2, node.g);
+                cn.u = foot_iterated(patch, x, w, seg_limit, 2, cn.g);
             }
         }
         // The refined points between: phi linear between the shared points.
         for (int j = 1; j < m; ++j) {
             const int c = forward ? j : m - j;
             if (j % side_step == 0) {
-                grid[m - c][c] = canon[j / side_step];
+                node(k, m - c, c) = canon[j / side_step];
                 continue;
             }
             const Node& a0 = canon[j / side_step];
             const Node& a1 = canon[j / side_step + 1];
             const double f = static_cast<double>(j % side_step) / side_step;
             const double fx = static_cast<double>(j) / m;
-            Node node;
-            node.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
-            node.g = evaluate(patch, node.u.s, node.u.t).point -
-                     (lo.position + fx * (hi.position - lo.position));
-            grid[m - c][c] = node;
+            Node& x = node(k, m - c, c);
+            x.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
+            x.g = evaluate(patch, x.u.s, x.u.t).point -
+                  (lo.position + fx * (hi.position - lo.position));
         }
         // Inside the fan triangle.
         const Param pp = param(P), pq = param(Q);
@@ -527,10 +510,34 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                 const Param w{sc + fa * (pp.s - sc) + fc * (pq.s - sc),
                               tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
                 const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
-                Vec3 g;
-                const Param u = foot_iterated(patch, x, w, inner_limit, 2, g);
-                grid[a][c] = {u, g};
+                Node& y = node(k, a, c);
+                y.u = foot_iterated(patch, x, w, inner_limit, 2, y.g);
             }
+    }
+
+    // (2) Derivative bounds over the box of all those parameters: phi is
+    // linear on each refined triangle, so phi(sigma) lies in the box of its
+    // three vertices, inside this one (the subpatch plus the feet's moves).
+    double bs0 = param_of(r.s0), bs1 = param_of(r.s1), bt0 = param_of(r.t0), bt1 = param_of(r.t1);
+    for (size_t k = 0; k < n; ++k)
+        for (int a = 0; a <= m; ++a)
+            for (int c = 0; a + c <= m; ++c) {
+                const Param& u = node(k, a, c).u;
+                bs0 = std::min(bs0, u.s), bs1 = std::max(bs1, u.s);
+                bt0 = std::min(bt0, u.t), bt1 = std::max(bt1, u.t);
+            }
+    const Net net = make_net(extract_box(patch, bs0, bs1, bt0, bt1), centre);
+    const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
+
+    // (3) The bound on every refined triangle.
+    const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
+    double bound = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const size_t k1 = (k + 1) % n;
+        Vec3 nk = cross(ring[k].position - centre, ring[k1].position - centre);
+        const double len = norm(nk);
+        nk = len > 1e-300 && std::isfinite(len) ? nk / len : normalize(diag);
+        const SplitBounds nb = split_bounds(net, nk, full);
         auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
             double gn = 0, gt = 0;
             for (const Node* q : {&p0, &p1, &p2}) {
@@ -542,21 +549,9 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             const double s1 = std::max({p0.u.s, p1.u.s, p2.u.s});
             const double t0 = std::min({p0.u.t, p1.u.t, p2.u.t});
             const double t1 = std::max({p0.u.t, p1.u.t, p2.u.t});
-            double Rn = 0, R = 0;
-            if (s0 >= es0 && s1 <= es1 && t0 >= et0 && t1 <= et1) {
-                const double ds = (s1 - s0) / (es1 - es0), dt = (t1 - t0) / (et1 - et0);
-                Rn = remainder(nb.normal, ds, dt);
-                R = remainder(nb.tangential, ds, dt);
-            } else {
-                // phi left the grown rectangle: bounds over the whole patch.
-                if (!whole) {
-                    whole = make_net(patch, centre);
-                    whole_full = derivative_bounds(*whole, [](Vec3 v) { return norm(v); });
-                }
-                const SplitBounds wn = split_bounds(*whole, nk, whole_full);
-                Rn = remainder(wn.normal, s1 - s0, t1 - t0);
-                R = remainder(wn.tangential, s1 - s0, t1 - t0);
-            }
+            const double ds = (s1 - s0) / (bs1 - bs0), dt = (t1 - t0) / (bt1 - bt0);
+            double Rn = remainder(nb.normal, ds, dt);
+            double R = remainder(nb.tangential, ds, dt);
             // Only where it can raise the running maximum (lossless).
             if (R > gn + Rn && s1 > s0 && t1 > t0 &&
                 (gn + Rn) * (gn + Rn) + (gt + R) * (gt + R) > bound * bound) {
@@ -573,8 +568,9 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
-                tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
-                if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
+                tri(node(k, a, c), node(k, a + 1, c), node(k, a, c + 1));
+                if (a + c + 2 <= m)
+                    tri(node(k, a + 1, c), node(k, a + 1, c + 1), node(k, a, c + 1));
             }
     }
     return bound * (1 + 64 * kEps) + rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
