@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -167,54 +168,50 @@ template <int N> void bernstein_fixed(double s, double* B, double* dB) {
     }
 }
 
-template <int P, int Q> SurfacePoint evaluate_fixed(const BezierPatch& b, double s, double t) {
+// Rational: in homogeneous coordinates and the quotient rule, as evaluate().
+// Polynomial (every weight 1): no weight sums and no quotient (W = 1 up to the
+// rounding of the Bernstein sums, which the rounding allowance counts).
+template <int P, int Q, bool Rational>
+SurfacePoint evaluate_fixed(const BezierPatch& b, double s, double t) {
+    using Point = std::conditional_t<Rational, HPoint, Vec3>;
+    auto point = [&b](int i, int j) {
+        const HPoint& h = b.at(i, j);
+        if constexpr (Rational)
+            return h;
+        else
+            return Vec3{h.x, h.y, h.z};
+    };
     double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
     bernstein_fixed<P>(s, Bu, dBu);
     bernstein_fixed<Q>(t, Bv, dBv);
-    HPoint X{0, 0, 0, 0}, Xu{0, 0, 0, 0}, Xv{0, 0, 0, 0};
+    Point X{}, Xu{}, Xv{};
+    if constexpr (Rational) X.w = Xu.w = Xv.w = 0;
     for (int i = 0; i <= P; ++i) {
-        HPoint row{0, 0, 0, 0}, rowv{0, 0, 0, 0};
+        Point row{}, rowv{};
+        if constexpr (Rational) row.w = rowv.w = 0;
         for (int j = 0; j <= Q; ++j) {
-            row = row + Bv[j] * b.at(i, j);
-            rowv = rowv + dBv[j] * b.at(i, j);
+            row = row + Bv[j] * point(i, j);
+            rowv = rowv + dBv[j] * point(i, j);
         }
         X = X + Bu[i] * row;
         Xu = Xu + dBu[i] * row;
         Xv = Xv + Bu[i] * rowv;
     }
-    SurfacePoint r;
-    r.point = X.xyz() / X.w;
-    r.du = (Xu.xyz() - Xu.w * r.point) / X.w;
-    r.dv = (Xv.xyz() - Xv.w * r.point) / X.w;
-    return r;
-}
-
-// Same for a polynomial patch (every weight 1): no weight sums, no quotient
-// (W = 1 up to the rounding of the Bernstein sums, which the rounding
-// allowance already counts for the evaluation).
-template <int P, int Q> SurfacePoint evaluate_polynomial(const BezierPatch& b, double s, double t) {
-    double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
-    bernstein_fixed<P>(s, Bu, dBu);
-    bernstein_fixed<Q>(t, Bv, dBv);
-    SurfacePoint r{};
-    for (int i = 0; i <= P; ++i) {
-        Vec3 row{}, rowv{};
-        for (int j = 0; j <= Q; ++j) {
-            const HPoint& h = b.at(i, j);
-            const Vec3 c{h.x, h.y, h.z};
-            row = row + Bv[j] * c;
-            rowv = rowv + dBv[j] * c;
-        }
-        r.point = r.point + Bu[i] * row;
-        r.du = r.du + dBu[i] * row;
-        r.dv = r.dv + Bu[i] * rowv;
+    if constexpr (!Rational) {
+        return {X, Xu, Xv};
+    } else {
+        SurfacePoint r;
+        r.point = X.xyz() / X.w;
+        r.du = (Xu.xyz() - Xu.w * r.point) / X.w;
+        r.dv = (Xv.xyz() - Xv.w * r.point) / X.w;
+        return r;
     }
-    return r;
 }
 
 SurfacePoint surface_point(const BezierPatch& b, double s, double t) {
     if (b.p == 3 && b.q == 3)
-        return b.rational ? evaluate_fixed<3, 3>(b, s, t) : evaluate_polynomial<3, 3>(b, s, t);
+        return b.rational ? evaluate_fixed<3, 3, true>(b, s, t)
+                          : evaluate_fixed<3, 3, false>(b, s, t);
     return evaluate(b, s, t);
 }
 
