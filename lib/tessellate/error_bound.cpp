@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -56,49 +57,61 @@ Net make_net(const BezierPatch& b, Vec3 c) {
     return n;
 }
 
-template <class Mag> DerivativeBounds derivative_bounds(const Net& n, Mag&& mag) {
+// M magnitudes of each difference at once (mag returns M values): one pass
+// over the net for the normal and the tangential bounds together.
+template <size_t M, class Mag>
+std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
+    using Mags = std::array<double, M>;
+    auto raise = [](Mags& to, const Mags& v) {
+        for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], v[k]);
+    };
     const int p = n.p, q = n.q;
-    double P0 = 0, Xs = 0, Xt = 0, Xss = 0, Xst = 0, Xtt = 0;
+    Mags P0{}, Xs{}, Xt{}, Xss{}, Xst{}, Xtt{};
     double Ws = 0, Wt = 0, Wss = 0, Wst = 0, Wtt = 0;
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j) {
-            P0 = std::max(P0, mag(n.D(i, j)));
+            raise(P0, mag(n.D(i, j)));
             if (i < p) {
-                Xs = std::max(Xs, mag(n.X(i + 1, j) - n.X(i, j)));
+                raise(Xs, mag(n.X(i + 1, j) - n.X(i, j)));
                 Ws = std::max(Ws, std::abs(n.W(i + 1, j) - n.W(i, j)));
             }
             if (j < q) {
-                Xt = std::max(Xt, mag(n.X(i, j + 1) - n.X(i, j)));
+                raise(Xt, mag(n.X(i, j + 1) - n.X(i, j)));
                 Wt = std::max(Wt, std::abs(n.W(i, j + 1) - n.W(i, j)));
             }
             if (i + 1 < p) {
-                Xss = std::max(Xss, mag(n.X(i + 2, j) - 2 * n.X(i + 1, j) + n.X(i, j)));
+                raise(Xss, mag(n.X(i + 2, j) - 2 * n.X(i + 1, j) + n.X(i, j)));
                 Wss = std::max(Wss, std::abs(n.W(i + 2, j) - 2 * n.W(i + 1, j) + n.W(i, j)));
             }
             if (j + 1 < q) {
-                Xtt = std::max(Xtt, mag(n.X(i, j + 2) - 2 * n.X(i, j + 1) + n.X(i, j)));
+                raise(Xtt, mag(n.X(i, j + 2) - 2 * n.X(i, j + 1) + n.X(i, j)));
                 Wtt = std::max(Wtt, std::abs(n.W(i, j + 2) - 2 * n.W(i, j + 1) + n.W(i, j)));
             }
             if (i < p && j < q) {
-                Xst = std::max(Xst,
-                               mag(n.X(i + 1, j + 1) - n.X(i + 1, j) - n.X(i, j + 1) + n.X(i, j)));
+                raise(Xst, mag(n.X(i + 1, j + 1) - n.X(i + 1, j) - n.X(i, j + 1) + n.X(i, j)));
                 Wst = std::max(
                     Wst, std::abs(n.W(i + 1, j + 1) - n.W(i + 1, j) - n.W(i, j + 1) + n.W(i, j)));
             }
         }
-    Xs *= p, Ws *= p, Xt *= q, Wt *= q;
-    Xss *= p * (p - 1), Wss *= p * (p - 1);
-    Xtt *= q * (q - 1), Wtt *= q * (q - 1);
-    Xst *= p * q, Wst *= p * q;
-    const double Ps = (Xs + P0 * Ws) / n.wlo, Pt = (Xt + P0 * Wt) / n.wlo;
-    DerivativeBounds r;
-    r.A = (Xss + 2 * Ps * Ws + P0 * Wss) / n.wlo;
-    r.B = (Xst + Ps * Wt + Pt * Ws + P0 * Wst) / n.wlo;
-    r.C = (Xtt + 2 * Pt * Wt + P0 * Wtt) / n.wlo;
+    Ws *= p, Wt *= q, Wss *= p * (p - 1), Wtt *= q * (q - 1), Wst *= p * q;
     // Rounding of the differences and products: relative, a few ulps each.
     const double inflate = 1 + 64 * kEps;
-    r.A *= inflate, r.B *= inflate, r.C *= inflate;
-    return r;
+    std::array<DerivativeBounds, M> out;
+    for (size_t k = 0; k < M; ++k) {
+        const double xs = Xs[k] * p, xt = Xt[k] * q, xss = Xss[k] * (p * (p - 1));
+        const double xtt = Xtt[k] * (q * (q - 1)), xst = Xst[k] * (p * q), p0 = P0[k];
+        const double Ps = (xs + p0 * Ws) / n.wlo, Pt = (xt + p0 * Wt) / n.wlo;
+        DerivativeBounds& r = out[k];
+        r.A = (xss + 2 * Ps * Ws + p0 * Wss) / n.wlo * inflate;
+        r.B = (xst + Ps * Wt + Pt * Ws + p0 * Wst) / n.wlo * inflate;
+        r.C = (xtt + 2 * Pt * Wt + p0 * Wtt) / n.wlo * inflate;
+    }
+    return out;
+}
+
+// Bounds of S itself (Euclidean norm).
+DerivativeBounds derivative_bounds(const Net& n) {
+    return derivative_bounds_of<1>(n, [](Vec3 v) { return std::array<double, 1>{norm(v)}; })[0];
 }
 
 double remainder(const DerivativeBounds& d, double ds, double dt) {
@@ -114,20 +127,102 @@ struct SplitBounds {
     DerivativeBounds normal, tangential;
 };
 
-SplitBounds split_bounds(const Net& net, Vec3 n, const DerivativeBounds& full) {
-    if (!(norm(n) > 0)) return {full, full};
-    return {derivative_bounds(net, [&](Vec3 v) { return std::abs(dot(v, n)); }),
-            derivative_bounds(net, [&](Vec3 v) { return norm(v - dot(v, n) * n); })};
+SplitBounds split_bounds(const Net& net, Vec3 n) {
+    if (!(norm(n) > 0)) {
+        const DerivativeBounds full = derivative_bounds(net);
+        return {full, full};
+    }
+    const std::array<DerivativeBounds, 2> b = derivative_bounds_of<2>(net, [&](Vec3 v) {
+        const double d = dot(v, n);
+        return std::array<double, 2>{std::abs(d), norm(v - d * n)};
+    });
+    return {b[0], b[1]};
 }
 
 struct Param {
     double s = 0, t = 0;
 };
 
+// evaluate() (bezier_patch.h) with the degrees known at compile time: the
+// same operations in the same order (so the same values), the loops unrolled.
+// The bound's foot projections evaluate the surface millions of times
+// (docs/results/tessellation.md, profile), nearly always a bicubic patch.
+template <int N> void bernstein_fixed(double s, double* B, double* dB) {
+    double tmp[N + 1];
+    tmp[0] = 1.0;
+    const double r = 1.0 - s;
+    for (int d = 1; d < N; ++d) {
+        double prev = 0.0;
+        for (int i = 0; i < d; ++i) {
+            const double x = tmp[i];
+            tmp[i] = prev + r * x;
+            prev = s * x;
+        }
+        tmp[d] = prev;
+    }
+    for (int i = 0; i <= N; ++i) {
+        const double a = i >= 1 ? tmp[i - 1] : 0.0;
+        const double b = i <= N - 1 ? tmp[i] : 0.0;
+        B[i] = s * a + r * b;
+        dB[i] = N * (a - b);
+    }
+}
+
+// Rational: in homogeneous coordinates and the quotient rule, as evaluate().
+// Polynomial (every weight 1): no weight sums and no quotient (W = 1 up to the
+// rounding of the Bernstein sums, which the rounding allowance counts).
+template <int P, int Q, bool Rational>
+SurfacePoint evaluate_fixed(const BezierPatch& b, double s, double t) {
+    using Point = std::conditional_t<Rational, HPoint, Vec3>;
+    auto point = [&b](int i, int j) {
+        const HPoint& h = b.at(i, j);
+        if constexpr (Rational)
+            return h;
+        else
+            return Vec3{h.x, h.y, h.z};
+    };
+    double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
+    bernstein_fixed<P>(s, Bu, dBu);
+    bernstein_fixed<Q>(t, Bv, dBv);
+    Point X{}, Xu{}, Xv{};
+    if constexpr (Rational) X.w = Xu.w = Xv.w = 0;
+    for (int i = 0; i <= P; ++i) {
+        Point row{}, rowv{};
+        if constexpr (Rational) row.w = rowv.w = 0;
+        for (int j = 0; j <= Q; ++j) {
+            row = row + Bv[j] * point(i, j);
+            rowv = rowv + dBv[j] * point(i, j);
+        }
+        X = X + Bu[i] * row;
+        Xu = Xu + dBu[i] * row;
+        Xv = Xv + Bu[i] * rowv;
+    }
+    if constexpr (!Rational) {
+        return {X, Xu, Xv};
+    } else {
+        SurfacePoint r;
+        r.point = X.xyz() / X.w;
+        r.du = (Xu.xyz() - Xu.w * r.point) / X.w;
+        r.dv = (Xv.xyz() - Xv.w * r.point) / X.w;
+        return r;
+    }
+}
+
+SurfacePoint surface_point(const BezierPatch& b, double s, double t) {
+    if (b.p == 3 && b.q == 3)
+        return b.rational ? evaluate_fixed<3, 3, true>(b, s, t)
+                          : evaluate_fixed<3, 3, false>(b, s, t);
+    return evaluate(b, s, t);
+}
+
 // One Gauss-Newton step from u (sp = S and its derivatives there) toward the
 // foot of x on S, each coordinate's step at most `limit` (near a pole the foot
 // is ill-determined), kept only when it brings S closer to x; clamped to
-// [0,1]^2. Returns whether it moved; u and sp follow.
+// [0,1]^2. Returns whether it moved; u and sp follow. No step (and no
+// evaluation) once the residual's tangential part is below kConverged of the
+// residual: the bound counts that part (|g_i - (n.g_i) n|), so it stays within
+// kConverged^2 / 2 of its value at the exact foot, a fraction of a percent.
+constexpr double kConverged = 0.02;
 bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
     const Vec3 r = x - sp.point;
     const double a11 = dot(sp.du, sp.du), a22 = dot(sp.dv, sp.dv), a12 = dot(sp.du, sp.dv);
@@ -137,10 +232,12 @@ bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double 
     if (!(det > 0) || !std::isfinite(det) || !(limit > 0)) return false;
     const double ds = ((a22 + reg) * g1 - a12 * g2) / det, dt = ((a11 + reg) * g2 - a12 * g1) / det;
     if (!std::isfinite(ds) || !std::isfinite(dt)) return false;
+    // ds g1 + dt g2: the squared length of r's projection on the tangent plane.
+    if (ds * g1 + dt * g2 <= kConverged * kConverged * dot(r, r)) return false;
     const Param v{std::clamp(u.s + std::clamp(ds, -limit, limit), 0.0, 1.0),
                   std::clamp(u.t + std::clamp(dt, -limit, limit), 0.0, 1.0)};
     if (v.s == u.s && v.t == u.t) return false;
-    const SurfacePoint sv = evaluate(b, v.s, v.t);
+    const SurfacePoint sv = surface_point(b, v.s, v.t);
     const Vec3 gv = sv.point - x;
     if (!(dot(gv, gv) < dot(r, r))) return false;
     u = v;
@@ -149,7 +246,7 @@ bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double 
 }
 
 Param foot(const BezierPatch& b, Vec3 x, Param u, double limit, Vec3& g) {
-    SurfacePoint sp = evaluate(b, u.s, u.t);
+    SurfacePoint sp = surface_point(b, u.s, u.t);
     foot_step(b, x, u, sp, limit);
     g = sp.point - x;
     return u;
@@ -161,7 +258,7 @@ double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau
     auto at = [&](double z) { return Param{c0.s + z * (c1.s - c0.s), c0.t + z * (c1.t - c0.t)}; };
     tau = std::clamp(tau, lo, hi);
     const Param u = at(tau);
-    const SurfacePoint sp = evaluate(b, u.s, u.t);
+    const SurfacePoint sp = surface_point(b, u.s, u.t);
     g = sp.point - x;
     const Vec3 d = (c1.s - c0.s) * sp.du + (c1.t - c0.t) * sp.dv;
     const double dd = dot(d, d);
@@ -170,7 +267,7 @@ double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau
     if (!std::isfinite(step)) return tau;
     const double z = std::clamp(tau + std::clamp(step, -limit, limit), lo, hi);
     const Param v = at(z);
-    const Vec3 gv = evaluate(b, v.s, v.t).point - x;
+    const Vec3 gv = surface_point(b, v.s, v.t).point - x;
     if (!(dot(gv, gv) < dot(g, g))) return tau;
     g = gv;
     return z;
@@ -180,7 +277,7 @@ double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau
 // per coordinate.
 Param foot_iterated(const BezierPatch& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
     Param u = w;
-    SurfacePoint sp = evaluate(b, u.s, u.t);
+    SurfacePoint sp = surface_point(b, u.s, u.t);
     for (int it = 0; it < iterations; ++it) {
         const double left = limit - std::max(std::abs(u.s - w.s), std::abs(u.t - w.t));
         if (!foot_step(b, x, u, sp, left)) break;
@@ -213,7 +310,7 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
 
 double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, double target) {
     const Net net = make_net(b, centre);
-    const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
+    const DerivativeBounds full = derivative_bounds(net);
 
     // Unit normals of the fan triangles (any unit vector keeps the bound valid:
     // degenerate triangles borrow the subpatch's corner normal).
@@ -225,7 +322,7 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
         n[k] = len > 1e-300 && std::isfinite(len) ? c / len : normalize(diag);
     }
     std::array<SplitBounds, 4> nb{};
-    for (int k = 0; k < 4; ++k) nb[k] = split_bounds(net, n[k], full);
+    for (int k = 0; k < 4; ++k) nb[k] = split_bounds(net, n[k]);
 
     // m: the tangential remainder of an unrefined fan triangle (extents 1 x 1/2)
     // against its normal remainder (about the geometric deviation) or the target.
@@ -267,7 +364,7 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
             Vec3 g;
             if (a == 0 || a == m) {
                 u = a == 0 ? kCentre : kCorner[k];
-                g = evaluate(b, u.s, u.t).point - x;
+                g = surface_point(b, u.s, u.t).point - x;
             } else {
                 u = foot(b, x, w, 0.5 / m, g);
             }
@@ -334,8 +431,7 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
 } // namespace
 
 std::array<double, 2> second_derivative_bounds(const BezierPatch& b) {
-    const DerivativeBounds d =
-        derivative_bounds(make_net(b, b.corner(0)), [](Vec3 v) { return norm(v); });
+    const DerivativeBounds d = derivative_bounds(make_net(b, b.corner(0)));
     return {d.A, d.C};
 }
 
@@ -373,7 +469,11 @@ namespace {
 // Sides shared by two fans are split into kSideRefinement pieces, the same
 // for both; phi is linear between those points. Inside, a fan triangle is
 // refined m = kSideRefinement * 2^k times (k chosen from its derivative bounds).
-constexpr int kSideRefinement = 2;
+// Between the shared points phi is linear in the parameters, not a foot, so
+// the tangential drift there counts in full: with 2 pieces a fan whose four
+// triangles passed at 0.9 of a tolerance could certify at 1.25 of it (teapot,
+// lid seams) and the passes never ended; with 4 they agree within a few percent.
+constexpr int kSideRefinement = 4;
 constexpr int kMaxCertifyRefinement = 16;
 
 // phi at a mesh vertex, a function of its grid point and position alone, so
@@ -389,8 +489,8 @@ Node vertex_phi(const BezierPatch& b, const RingPoint& p) {
     const Vec3 x = p.position;
     const Param w = param(p);
     // A seam vertex of another patch lies on this patch's side: phi keeps it.
-    if (gs < 0 || gt < 0) return {w, evaluate(b, w.s, w.t).point - x};
-    Vec3 g = evaluate(b, w.s, w.t).point - x;
+    if (gs < 0 || gt < 0) return {w, surface_point(b, w.s, w.t).point - x};
+    Vec3 g = surface_point(b, w.s, w.t).point - x;
     const bool s_side = gs == 0 || gs == kParamOne, t_side = gt == 0 || gt == kParamOne;
     if (s_side && t_side) return {w, g};
     auto spacing = [](int i) { return param_of(i & -i); }; // lowest set bit
@@ -411,42 +511,32 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                            std::span<const RingPoint> ring, double scale) {
     const size_t n = ring.size();
     assert(n >= 3);
-    // Derivative bounds over the subpatch grown by its size on every side
-    // (phi may reach into the neighbours), or over the whole patch.
-    const long long ws = r.s1 - r.s0, wt = r.t1 - r.t0;
-    ParamRect e;
-    e.s0 = static_cast<int>(std::max<long long>(0, r.s0 - ws));
-    e.s1 = static_cast<int>(std::min<long long>(kParamOne, r.s1 + ws));
-    e.t0 = static_cast<int>(std::max<long long>(0, r.t0 - wt));
-    e.t1 = static_cast<int>(std::min<long long>(kParamOne, r.t1 + wt));
-    const double es0 = param_of(e.s0), es1 = param_of(e.s1);
-    const double et0 = param_of(e.t0), et1 = param_of(e.t1);
-    const BezierPatch grown = extract_subpatch(patch, e);
-    const Net net = make_net(grown, centre);
-    const DerivativeBounds full = derivative_bounds(net, [](Vec3 v) { return norm(v); });
-    std::optional<Net> whole;
-    DerivativeBounds whole_full;
-
     // m: the tangential remainder of an unrefined fan triangle of the subpatch
     // against its normal remainder (about the geometric deviation).
     int m = kSideRefinement;
     {
+        const Net net = make_net(extract_subpatch(patch, r), centre);
+        const DerivativeBounds full = derivative_bounds(net);
         const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
-        const double lw = (param_of(r.s1) - param_of(r.s0)) / (es1 - es0);
-        const double lt = (param_of(r.t1) - param_of(r.t0)) / (et1 - et0);
-        const double R1 = remainder(full, lw, lt);
-        const double Rn1 = remainder(split_bounds(net, nz, full).normal, lw, lt);
+        const double R1 = remainder(full, 1, 1);
+        const double Rn1 = remainder(split_bounds(net, nz).normal, 1, 1);
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     const int side_step = m / kSideRefinement;
     const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
     const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-    const Node centre_node{{sc, tc}, evaluate(patch, sc, tc).point - centre};
+    const Node centre_node{{sc, tc}, surface_point(patch, sc, tc).point - centre};
     const double inner_limit =
         0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
 
+    // (1) phi at the refined vertices of every fan triangle: grid k, a, c is
+    // centre + a/m (P - centre) + c/m (Q - centre), P Q the ring's k-th side.
     constexpr int K = kMaxCertifyRefinement + 1;
-    std::vector<std::array<Node, K>> radial(n);
+    thread_local std::vector<std::array<Node, K>> radial;
+    thread_local std::vector<Node> grids;
+    radial.resize(n);
+    grids.resize(n * K * K);
+    auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
     for (size_t i = 0; i < n; ++i) {
         radial[i][0] = centre_node;
         radial[i][m] = vertex_phi(patch, ring[i]);
@@ -460,30 +550,21 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             radial[i][a] = {u, g};
         }
     }
-
-    const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
-    double bound = 0;
-    Node grid[K][K];
     for (size_t k = 0; k < n; ++k) {
         const size_t k1 = (k + 1) % n;
         const RingPoint &P = ring[k], &Q = ring[k1];
-        Vec3 nk = cross(P.position - centre, Q.position - centre);
-        const double len = norm(nk);
-        nk = len > 1e-300 && std::isfinite(len) ? nk / len : normalize(diag);
-        const SplitBounds nb = split_bounds(net, nk, full);
-        for (int a = 0; a <= m; ++a) grid[a][0] = radial[k][a];
-        for (int c = 0; c <= m; ++c) grid[0][c] = radial[k1][c];
+        for (int a = 0; a <= m; ++a) node(k, a, 0) = radial[k][a];
+        for (int c = 0; c <= m; ++c) node(k, 0, c) = radial[k1][c];
         // The side P Q: points in a canonical order (from the endpoint with the
         // smaller grid point), the same for the fan on its other side.
         const bool forward = std::pair(param(P).s, param(P).t) < std::pair(param(Q).s, param(Q).t);
         const RingPoint& lo = forward ? P : Q;
         const RingPoint& hi = forward ? Q : P;
-        const Node& nlo = forward ? grid[m][0] : grid[0][m];
-        const Node& nhi = forward ? grid[0][m] : grid[m][0];
+        const Node& nlo = forward ? node(k, m, 0) : node(k, 0, m);
+        const Node& nhi = forward ? node(k, 0, m) : node(k, m, 0);
         const Param plo = param(lo), phi_ = param(hi);
         const bool side = on_patch_side(lo, hi);
         const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
-        double prev = 0;
         Node canon[kSideRefinement + 1];
         canon[0] = nlo;
         canon[kSideRefinement] = nhi;
@@ -491,33 +572,31 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             const double f = static_cast<double>(j) / kSideRefinement;
             const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
             const Vec3 x = lo.position + f * (hi.position - lo.position);
-            Node& node = canon[j];
+            Node& cn = canon[j];
             if (side) {
                 // Along the patch's side, between phi(lo) and phi(hi).
-                prev = foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement,
-                                    node.g);
-                node.u = {nlo.u.s + prev * (nhi.u.s - nlo.u.s),
-                          nlo.u.t + prev * (nhi.u.t - nlo.u.t)};
+                const double z =
+                    foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
+                cn.u = {nlo.u.s + z * (nhi.u.s - nlo.u.s), nlo.u.t + z * (nhi.u.t - nlo.u.t)};
             } else {
-                node.u = foot_iterated(patch, x, w, seg_limit, 2, node.g);
+                cn.u = foot_iterated(patch, x, w, seg_limit, 2, cn.g);
             }
         }
         // The refined points between: phi linear between the shared points.
         for (int j = 1; j < m; ++j) {
             const int c = forward ? j : m - j;
             if (j % side_step == 0) {
-                grid[m - c][c] = canon[j / side_step];
+                node(k, m - c, c) = canon[j / side_step];
                 continue;
             }
             const Node& a0 = canon[j / side_step];
             const Node& a1 = canon[j / side_step + 1];
             const double f = static_cast<double>(j % side_step) / side_step;
             const double fx = static_cast<double>(j) / m;
-            Node node;
-            node.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
-            node.g = evaluate(patch, node.u.s, node.u.t).point -
-                     (lo.position + fx * (hi.position - lo.position));
-            grid[m - c][c] = node;
+            Node& x = node(k, m - c, c);
+            x.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
+            x.g = surface_point(patch, x.u.s, x.u.t).point -
+                  (lo.position + fx * (hi.position - lo.position));
         }
         // Inside the fan triangle.
         const Param pp = param(P), pq = param(Q);
@@ -527,10 +606,33 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                 const Param w{sc + fa * (pp.s - sc) + fc * (pq.s - sc),
                               tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
                 const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
-                Vec3 g;
-                const Param u = foot_iterated(patch, x, w, inner_limit, 2, g);
-                grid[a][c] = {u, g};
+                Node& y = node(k, a, c);
+                y.u = foot_iterated(patch, x, w, inner_limit, 2, y.g);
             }
+    }
+
+    // (2) Derivative bounds over the box of all those parameters: phi is
+    // linear on each refined triangle, so phi(sigma) lies in the box of its
+    // three vertices, inside this one (the subpatch plus the feet's moves).
+    double bs0 = param_of(r.s0), bs1 = param_of(r.s1), bt0 = param_of(r.t0), bt1 = param_of(r.t1);
+    for (size_t k = 0; k < n; ++k)
+        for (int a = 0; a <= m; ++a)
+            for (int c = 0; a + c <= m; ++c) {
+                const Param& u = node(k, a, c).u;
+                bs0 = std::min(bs0, u.s), bs1 = std::max(bs1, u.s);
+                bt0 = std::min(bt0, u.t), bt1 = std::max(bt1, u.t);
+            }
+    const Net net = make_net(extract_box(patch, bs0, bs1, bt0, bt1), centre);
+
+    // (3) The bound on every refined triangle.
+    const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
+    double bound = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const size_t k1 = (k + 1) % n;
+        Vec3 nk = cross(ring[k].position - centre, ring[k1].position - centre);
+        const double len = norm(nk);
+        nk = len > 1e-300 && std::isfinite(len) ? nk / len : normalize(diag);
+        const SplitBounds nb = split_bounds(net, nk);
         auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
             double gn = 0, gt = 0;
             for (const Node* q : {&p0, &p1, &p2}) {
@@ -542,29 +644,16 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             const double s1 = std::max({p0.u.s, p1.u.s, p2.u.s});
             const double t0 = std::min({p0.u.t, p1.u.t, p2.u.t});
             const double t1 = std::max({p0.u.t, p1.u.t, p2.u.t});
-            double Rn = 0, R = 0;
-            if (s0 >= es0 && s1 <= es1 && t0 >= et0 && t1 <= et1) {
-                const double ds = (s1 - s0) / (es1 - es0), dt = (t1 - t0) / (et1 - et0);
-                Rn = remainder(nb.normal, ds, dt);
-                R = remainder(nb.tangential, ds, dt);
-            } else {
-                // phi left the grown rectangle: bounds over the whole patch.
-                if (!whole) {
-                    whole = make_net(patch, centre);
-                    whole_full = derivative_bounds(*whole, [](Vec3 v) { return norm(v); });
-                }
-                const SplitBounds wn = split_bounds(*whole, nk, whole_full);
-                Rn = remainder(wn.normal, s1 - s0, t1 - t0);
-                R = remainder(wn.tangential, s1 - s0, t1 - t0);
-            }
+            const double ds = (s1 - s0) / (bs1 - bs0), dt = (t1 - t0) / (bt1 - bt0);
+            double Rn = remainder(nb.normal, ds, dt);
+            double R = remainder(nb.tangential, ds, dt);
             // Only where it can raise the running maximum (lossless).
             if (R > gn + Rn && s1 > s0 && t1 > t0 &&
                 (gn + Rn) * (gn + Rn) + (gt + R) * (gt + R) > bound * bound) {
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
                 const Net local = make_net(extract_box(patch, s0, s1, t0, t1), centre);
-                const SplitBounds ln = split_bounds(
-                    local, nk, derivative_bounds(local, [](Vec3 v) { return norm(v); }));
+                const SplitBounds ln = split_bounds(local, nk);
                 Rn = std::min(Rn, remainder(ln.normal, 1, 1));
                 R = std::min(R, remainder(ln.tangential, 1, 1));
             }
@@ -573,8 +662,9 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
-                tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
-                if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
+                tri(node(k, a, c), node(k, a + 1, c), node(k, a, c + 1));
+                if (a + c + 2 <= m)
+                    tri(node(k, a + 1, c), node(k, a + 1, c + 1), node(k, a, c + 1));
             }
     }
     return bound * (1 + 64 * kEps) + rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);

@@ -66,9 +66,12 @@ struct RingPoint {
 // phi may slide a vertex a neighbour moved onto its straight edge toward its
 // foot. Hence with B_f this bound for every fan f of a patch, the patch and
 // its triangles are within max_f B_f of each other both ways; each point of
-// this fan's triangles is within this bound of the patch. m = 4; derivative
-// bounds over the subpatch grown by its size on every side (or the whole
-// patch where phi reaches further). Includes the rounding allowance.
+// this fan's triangles is within this bound of the patch. Each side shared
+// with another fan is cut into 4 pieces (phi linear between), m = 4 to 16;
+// derivative bounds over the parameter box of phi's refined vertices (phi is
+// linear on each refined triangle, so phi(sigma) lies in it: the subpatch and
+// the feet's small moves, as tight as the four-triangle bound's own net).
+// Includes the rounding allowance.
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
                            std::span<const RingPoint> ring, double scale);
 

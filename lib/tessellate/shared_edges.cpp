@@ -318,7 +318,8 @@ int vertex_of(VertexRegistry& vr, VertexKey key) {
         // side holding it (Fig. 3, Q0 = (Q1 + Q2) / 2 recursively), else the
         // curve point of the reference patch.
         const int ref = vr.match->group_ref[key.id];
-        const LineSegment* seg = vr.crack_free ? containing(*vr.edges, key.id, key.a) : nullptr;
+        const LineSegment* seg =
+            vr.crack_free && vr.straight_segments ? containing(*vr.edges, key.id, key.a) : nullptr;
         int gs = 0, gt = 0;
         if (seg) {
             edge_grid_point(ref % 4, seg->a, gs, gt);
@@ -336,7 +337,7 @@ int vertex_of(VertexRegistry& vr, VertexKey key) {
         const int patch = key.id, s = key.a, t = key.b;
         const LineSegment* seg = nullptr;
         bool along_s = true;
-        if (vr.crack_free) {
+        if (vr.crack_free && vr.straight_segments) {
             // At most one subpatch side holds a grid point strictly inside.
             const int h = find_interior_line(*vr.edges, patch, 0, t);
             if (h >= 0) seg = containing(*vr.edges, h, s);

@@ -115,6 +115,13 @@ struct VertexRegistry {
     const EdgeRegistry* edges = nullptr;
     const VertexAlias* alias = nullptr; // optional: seams matched geometrically
     bool crack_free = true;
+    // Crack-free, true: Fig. 3's rule, a vertex inside a subpatch side lies on
+    // that side's straight segment. false: every vertex is its exact surface or
+    // curve point; the fans on both sides still run over it by index (each
+    // subpatch fans over every vertex on its sides), so no crack opens, and no
+    // fan corner sits off the surface by a coarser neighbour's sagitta, which
+    // phi cannot take back across a patch edge (error_bound.h).
+    bool straight_segments = true;
 
     std::unordered_map<VertexKey, int, VertexKeyHash> index;
     std::vector<Vec3> positions;

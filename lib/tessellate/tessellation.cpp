@@ -223,6 +223,13 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     vr.edges = &reg;
     vr.alias = &graph.alias;
     vr.crack_free = options.crack_free;
+    // With a tolerance every vertex is its exact surface point: a corner a
+    // coarser neighbour's straight segment held off the surface by its sagitta
+    // lifted the finer side's bound above the tolerance across patch edges,
+    // where phi may not move it, and halving either side did not end it (the
+    // sides stayed a level apart pass after pass). The fans on both sides run
+    // over every vertex on their sides, by index, so no crack opens.
+    vr.straight_segments = st.tolerance <= 0;
 
     // (d) Fans: each planar subpatch from its centre over its ring.
     TriangleMesh& mesh = out.mesh;
@@ -370,8 +377,9 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
 }
 
 // With a tolerance: a subpatch accepted by its four-triangle bound can end
-// above the tolerance once neighbours move its corners onto their straight
-// edges; such subpatches are split in another pass (at most a few).
+// above the tolerance once neighbours add vertices to its sides (its final
+// fan and phi differ from the four triangles'); such subpatches are split in
+// another pass (rarely more than one).
 Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
                                       const TessellationOptions& options) {
     const auto start = std::chrono::steady_clock::now();

@@ -3,7 +3,8 @@
 // patch is split by the planarity test, or until a requested deviation is
 // certified (subdivision.h, error_bound.h), shared boundaries are matched
 // across patches and surfaces (shared_edges.h, edge_graph.h), vertices follow the
-// straight-midpoint rule of Fig. 3, each planar subpatch becomes a fan from
+// straight-midpoint rule of Fig. 3 (with a requested tolerance: exact surface
+// points, VertexRegistry::straight_segments), each planar subpatch becomes a fan from
 // its centre over every vertex on its sides, and the binary patch trees of
 // Proposition 11, remark 2 are built in the same pass.
 #pragma once
