@@ -275,7 +275,14 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
 
     // (d2) Each subpatch's certified bound on its own, in parallel.
     std::vector<char> fresh(count, 0);
-    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+    const bool certify = options.certify || st.tolerance > 0;
+    if (!certify) {
+        for (Subpatch& sp : out.subpatches)
+            sp.error_bound = std::numeric_limits<double>::quiet_NaN();
+        st.max_error_bound = std::numeric_limits<double>::quiet_NaN();
+    }
+    const int certified = certify ? static_cast<int>(count) : 0;
+    parallel_chunks(certified, options.threads, [&](int begin, int end) {
         std::vector<RingPoint> fan;
         for (int i = begin; i < end; ++i) {
             Subpatch& sp = out.subpatches[i];
@@ -298,7 +305,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
             }
         }
     });
-    for (size_t i = 0; i < count; ++i) {
+    for (size_t i = 0; certify && i < count; ++i) {
         const Subpatch& sp = out.subpatches[i];
         if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
         st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);

@@ -60,6 +60,12 @@ struct TessellationOptions {
     // Worker threads (0: every core, 1: sequential). The output, vertex order
     // included, is the same for any count.
     int threads = 0;
+    // false: leave out the certified bound of every subpatch (error_bound.h;
+    // about half the time in planarity mode) when no tolerance is given;
+    // Subpatch::error_bound and TessellationStats::max_error_bound are then NaN.
+    // For callers that only need the triangles (TRAY, topology tests). A
+    // tolerance needs the bound and computes it whatever this says.
+    bool certify = true;
 };
 
 struct TessellationStats {
@@ -73,7 +79,8 @@ struct TessellationStats {
     double seam_tolerance = 0;
     double tolerance = 0; // requested (0: none), model units
     // Largest Subpatch::error_bound: the certified two-way distance between the
-    // surfaces and the mesh, model units.
+    // surfaces and the mesh, model units (NaN when TessellationOptions::certify
+    // left it out).
     double max_error_bound = 0;
     // Subpatches whose final bound exceeds the tolerance (neighbours moved a
     // corner onto their straight edge after the subpatch passed), or that

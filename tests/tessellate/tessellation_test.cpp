@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 
 using namespace seamless;
@@ -64,6 +65,7 @@ void check_crack_free(const Case& c, double factor, bool t_junctions) {
     TessellationOptions opt;
     opt.eps1 = 0.001 * d_max(m) / factor;
     opt.eps2 = 0.02 * d_max(m) / factor;
+    opt.certify = false; // topology only: the bound is error_bound_test's
     const Tessellation t = tessellate(m, opt);
     INFO(c.path.filename().string() << " at 1/" << factor << " of the default tolerances: "
                                     << t.stats.triangles << " triangles");
@@ -219,4 +221,23 @@ TEST_CASE("corner uvs lie on the source surface's domain and map to the vertices
         }
     // Vertices moved onto straight edges stay within the error bound of the surface.
     CHECK(worst <= t.stats.max_error_bound);
+}
+
+TEST_CASE("certify = false leaves out the bound and nothing else", "[tessellation]") {
+    const Model m = load_model(test::model_path("teapot.json"));
+    TessellationOptions opt;
+    const Tessellation with = tessellate(m, opt);
+    opt.certify = false;
+    const Tessellation without = tessellate(m, opt);
+    CHECK(with.mesh.positions == without.mesh.positions);
+    CHECK(with.mesh.triangles == without.mesh.triangles);
+    CHECK(with.stats.subpatches == without.stats.subpatches);
+    CHECK(with.stats.max_error_bound > 0);
+    CHECK(std::isnan(without.stats.max_error_bound));
+    for (const Subpatch& sp : without.subpatches) REQUIRE(std::isnan(sp.error_bound));
+    // A tolerance is defined by the bound: it is computed whatever certify says.
+    opt.tolerance = 0.01;
+    const Tessellation tol = tessellate(m, opt);
+    CHECK(tol.stats.max_error_bound > 0);
+    CHECK(tol.stats.max_error_bound <= 0.01);
 }
