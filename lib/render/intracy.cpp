@@ -58,6 +58,7 @@ namespace {
 struct SubScreen {
     int x0, y0, x1, y1;   // inclusive pixel range
     size_t offset, count; // its marks in the arena
+    size_t coef_end;      // end of its marks' subpatches in the coefficient arena
 };
 
 // SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
@@ -102,14 +103,23 @@ class PartRenderer {
     void run(int x0, int y0, int x1, int y1, RenderStats& st) {
         arena_.clear();
         stack_.clear();
-        for (size_t k = 0; k < ps_.patches.size(); ++k)
-            arena_.push_back({static_cast<int>(k), ParamBox{}, ps_.patches[k].hull});
-        stack_.push_back({x0, y0, x1, y1, 0, arena_.size()});
+        coefs_.clear();
+        for (size_t k = 0; k < ps_.patches.size(); ++k) {
+            const ProjectedPatch& pp = ps_.patches[k];
+            Mark m{static_cast<int>(k), ParamBox{}, pp.hull, coefs_.size()};
+            coefs_.resize(coefs_.size() + pp.shape.size());
+            control_coefficients(pp.patch, pp.shape, &coefs_[m.coef]);
+            update_enclosures(coefs_, pp.shape, m);
+            for (int c = 0; c < 3; ++c) m.hull[c] = intersect(m.hull[c], pp.hull[c]);
+            arena_.push_back(m);
+        }
+        stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size()});
         const long long enclosures0 = range_enclosure_count();
         while (!stack_.empty()) {
             SubScreen B = stack_.back();
             stack_.pop_back();
             arena_.resize(B.offset + B.count);
+            coefs_.resize(B.coef_end);
             ++st.subscreens;
             step(B, st);
         }
@@ -151,58 +161,48 @@ class PartRenderer {
         if (!thin) narrowing.emplace(st.narrow_seconds);
         for (size_t k = B.offset; k < B.offset + B.count; ++k) {
             // Covering method (section 5, remark 2 after Theorem 10): where Theorem 10
-            // cannot narrow a box (its derivative hull holds 0, near a silhouette) and
-            // the box still projects far beyond B, it is bisected and both halves go on.
+            // cannot narrow a box (near a silhouette) and the box still projects far
+            // beyond B, it is bisected and both halves go on.
             work_.clear();
             work_.push_back(arena_[k]);
             int budget = kMaxBisections;
             while (!work_.empty()) {
                 Mark m = work_.back();
                 work_.pop_back();
-                const ProjectedPatch& pp = ps_.patches[m.patch];
-                // Hull comparison with the hull the mark brought from its parent.
-                const IVec3& P = m.hull;
-                if (!(P[2].hi() > 0)) continue; // behind the eye
-                if (!(P[0] - a * P[2]).contains(0.0) || !(P[1] - b * P[2]).contains(0.0)) continue;
+                // Hull comparison with the enclosures the mark brought from its parent.
+                if (!may_meet(m, a, b)) continue;
                 if (thin) {
                     arena_.push_back(m);
                     continue;
                 }
-                cluster_system(pp.forms, a, b, sys_);
+                const SubpatchShape sh = ps_.patches[m.patch].shape;
                 ++st.marks_narrowed;
                 IMat<2> A;
-                if (!narrow(sys_, m.box, &A)) continue;
-                const IVec3 Q = enclose_point(pp.forms, m.box);
-                m.hull = Q;
-                const bool wide = !(Q[2].lo() > 0) ||
-                                  (Q[0] / Q[2]).width() > 2 * (a.width() + pitch_a) ||
-                                  (Q[1] / Q[2]).width() > 2 * (b.width() + pitch_b);
+                if (!narrow_mark(coefs_, sh, a, b, m, &A)) continue;
+                update_enclosures(coefs_, sh, m);
+                const IVec3& Q = m.hull;
+                const Interval pa = m.pa.is_finite() ? m.pa : Q[0] / Q[2];
+                const Interval pb = m.pb.is_finite() ? m.pb : Q[1] / Q[2];
+                const bool wide = !(Q[2].lo() > 0) || pa.width() > 2 * (a.width() + pitch_a) ||
+                                  pb.width() > 2 * (b.width() + pitch_b);
                 if (wide && budget > 0 && std::max(m.box.s.width(), m.box.t.width()) > 1e-9) {
                     --budget;
                     ++st.mark_bisections;
-                    Mark lo = m, hi = m;
-                    if (m.box.s.width() >= m.box.t.width()) {
-                        const double sm = m.box.s.mid();
-                        lo.box.s = {m.box.s.lo(), sm};
-                        hi.box.s = {sm, m.box.s.hi()};
-                    } else {
-                        const double tm = m.box.t.mid();
-                        lo.box.t = {m.box.t.lo(), tm};
-                        hi.box.t = {tm, m.box.t.hi()};
-                    }
-                    work_.push_back(hi);
-                    work_.push_back(lo);
+                    Mark half[2];
+                    bisect_mark(coefs_, sh, m, m.box.s.width() >= m.box.t.width() ? 0 : 1, half);
+                    work_.push_back(half[1]);
+                    work_.push_back(half[0]);
                     continue;
                 }
                 // Remark 3: where a silhouette is possible the patch is separated. In
                 // the projected problem the silhouette is where the Jacobian of G
                 // (the projected normal's z component) vanishes; its entries are the
-                // narrowing's last ranges, over boxes holding m.box.
+                // clipping's last derivative ranges, over subpatches holding m.box.
                 const Interval J = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
-                ParamBox parts[2];
+                Mark parts[2];
                 const int n =
-                    J.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);
-                for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i], Q});
+                    J.contains(0.0) ? separate_mark(coefs_, sh, a, b, m, parts) : (parts[0] = m, 1);
+                for (int i = 0; i < n; ++i) arena_.push_back(parts[i]);
             }
         }
         narrowing.reset();
@@ -226,22 +226,23 @@ class PartRenderer {
         SubScreen kids[4];
         int nk = 0;
         if (w > 1 && h > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0};
-            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0};
-            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0};
-            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0};
+            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0, 0};
+            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0, 0};
+            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0, 0};
+            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0, 0};
         } else if (w > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0};
-            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0};
+            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0, 0};
+            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0, 0};
         } else {
-            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0};
-            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0};
+            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0, 0};
+            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0, 0};
         }
         // Each child gets the marks of B (already at the top of the arena for
         // the first; copies for the others). Pushed in reverse so the first is next.
         for (int i = nk - 1; i >= 0; --i) {
             kids[i].offset = first;
             kids[i].count = nmarks;
+            kids[i].coef_end = coefs_.size();
         }
         // All children share one mark list: a child's processing truncates the
         // arena to offset+count before appending, so the list survives for the next.
@@ -264,21 +265,20 @@ class PartRenderer {
                 pixel_jacobians_.clear();
                 for (size_t k = B.offset; k < B.offset + B.count; ++k) {
                     const Mark m = arena_[k]; // a copy: push_back may move the arena
-                    const IVec3& P = m.hull;
-                    if (!(P[2].hi() > 0)) continue; // behind the eye
-                    if (!(P[0] - Interval(a) * P[2]).contains(0.0) ||
-                        !(P[1] - Interval(b) * P[2]).contains(0.0))
-                        continue;
+                    if (!may_meet(m, Interval(a), Interval(b))) continue;
                     arena_.push_back(m);
                     const size_t j = k - B.offset;
                     if (!known_[j]) {
-                        cluster_system(ps_.patches[m.patch].forms, aB, bB, sys_);
-                        jacobians_[j] = mark_jacobian(sys_, m.box);
+                        // From the mark's subpatch: a hull of coefficient
+                        // differences instead of four power-form ranges.
+                        const SubpatchShape sh = ps_.patches[m.patch].shape;
+                        jacobians_[j] =
+                            mark_jacobian(subpatch_jacobian(&coefs_[m.coef], sh, m.box, aB, bB));
                         known_[j] = 1;
                     }
                     pixel_jacobians_.push_back(jacobians_[j]);
                 }
-                const SubScreen pixel{x, y, x, y, 0, 0};
+                const SubScreen pixel{x, y, x, y, 0, 0, 0};
                 if (arena_.size() == first) {
                     paint_background(x, y, x, y, st);
                     count(pixel, st);
@@ -313,7 +313,13 @@ class PartRenderer {
     bool improve(SubScreen& B, size_t first, size_t n, RenderStats& st) {
         Interval ha = Interval::empty(), hb = Interval::empty();
         for (size_t k = first; k < first + n; ++k) {
-            const IVec3& P = arena_[k].hull;
+            const Mark& m = arena_[k];
+            if (m.pa.is_finite() && m.pb.is_finite()) {
+                ha = hull(ha, m.pa);
+                hb = hull(hb, m.pb);
+                continue;
+            }
+            const IVec3& P = m.hull;
             if (!(P[2].lo() > 0)) return false; // crosses the eye plane: no projection hull
             ha = hull(ha, P[0] / P[2]);
             hb = hull(hb, P[1] / P[2]);
@@ -456,6 +462,7 @@ class PartRenderer {
     std::uint16_t bg_[3];
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     std::vector<Mark> arena_, work_;
+    SubpatchArena coefs_; // the marks' subpatches
     std::vector<SubScreen> stack_;
     PixelScratch pixel_;
     std::vector<MarkJacobian> jacobians_,

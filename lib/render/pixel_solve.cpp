@@ -52,9 +52,13 @@ bool regular(const IMat<2>& A) {
 } // namespace
 
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box) {
+    return mark_jacobian(jacobian(sys, box));
+}
+
+MarkJacobian mark_jacobian(const IMat<2>& A) {
     MarkJacobian j;
-    j.A = jacobian(sys, box);
-    j.regular = regular(j.A);
+    j.A = A;
+    j.regular = regular(A);
     return j;
 }
 

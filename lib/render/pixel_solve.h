@@ -50,6 +50,8 @@ struct MarkJacobian {
     bool regular = false;
 };
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
+// The same from a Jacobian enclosed otherwise (subpatch_jacobian of primary_cluster.h).
+MarkJacobian mark_jacobian(const IMat<2>& A);
 
 // The certified Newton solve above for the ray through screen point (a, b) and
 // patch pp in `box`; sys: cluster_system(pp.forms, a, b). hit: exactly one hit in box, in `hit`
