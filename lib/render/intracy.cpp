@@ -266,7 +266,13 @@ class PartRenderer {
                 for (size_t k = B.offset; k < B.offset + B.count; ++k) {
                     const Mark m = arena_[k]; // a copy: push_back may move the arena
                     if (!may_meet(m, Interval(a), Interval(b))) continue;
-                    arena_.push_back(m);
+                    // The pixel's own clip: a certain miss, or a smaller box to
+                    // solve in (the copy's subpatch is not used beyond here).
+                    Mark pm = m;
+                    if (!clip_box(coefs_, ps_.patches[m.patch].shape, Interval(a), Interval(b), m,
+                                  pm.box))
+                        continue;
+                    arena_.push_back(pm);
                     const size_t j = k - B.offset;
                     if (!known_[j]) {
                         // From the mark's subpatch: a hull of coefficient

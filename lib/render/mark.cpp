@@ -86,6 +86,14 @@ bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b,
     return true;
 }
 
+bool clip_box(const SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, const Mark& m,
+              ParamBox& box) {
+    Interval u, v;
+    if (!clip_cluster(&arena[m.coef], sh, a, b, u, v)) return false;
+    box = {to_global(m.box.s, u), to_global(m.box.t, v)};
+    return true;
+}
+
 void bisect_mark(SubpatchArena& arena, SubpatchShape sh, const Mark& m, int dir, Mark out[2]) {
     const Interval D = side(m.box, dir);
     const double mid = D.mid();

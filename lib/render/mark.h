@@ -53,6 +53,14 @@ void update_enclosures(const SubpatchArena& arena, SubpatchShape sh, Mark& m);
 bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, Mark& m,
                  IMat<2>* D);
 
+// One Bezier clip of m's subpatch for the rays through [a] x [b] (a single
+// ray when thin), without restricting the subpatch: false when no such ray
+// meets the patch in m.box, else `box` (within m.box) holds every hit. For a
+// pixel's solve: cheaper than a Hansen-Sengupta step, and it decides most
+// rays that pass beside a patch's edge.
+bool clip_box(const SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, const Mark& m,
+              ParamBox& box);
+
 // m's box halved at the midpoint of direction dir, each half with its own
 // subpatch (appended to the arena); enclosures not updated.
 void bisect_mark(SubpatchArena& arena, SubpatchShape sh, const Mark& m, int dir, Mark out[2]);
