@@ -115,6 +115,7 @@ class PartRenderer {
         }
         stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size()});
         const long long enclosures0 = range_enclosure_count();
+        const PartCpuScale cpu;
         while (!stack_.empty()) {
             SubScreen B = stack_.back();
             stack_.pop_back();
@@ -125,6 +126,10 @@ class PartRenderer {
         }
         st.range_enclosures += range_enclosure_count() - enclosures0;
         st.shade_seconds -= st.secondary_seconds; // reported apart
+        const double f = cpu.factor();
+        for (double* x : {&st.narrow_seconds, &st.certify_seconds, &st.shade_seconds,
+                          &st.secondary_seconds, &st.single_pixel_seconds})
+            *x *= f;
     }
 
   private:
@@ -213,6 +218,7 @@ class PartRenderer {
             return;
         }
         if (thin) {
+            const StepClock clock(st.single_pixel_seconds);
             paint_single_pixel(B, first, nmarks, st);
             return;
         }
@@ -253,6 +259,7 @@ class PartRenderer {
     // without a cluster attempt: a few certified Newton solves cost less than
     // narrowing, certificate and SHADE for a cluster of a handful of pixels.
     void paint_pixels(const SubScreen& B, RenderStats& st) {
+        const StepClock clock(st.single_pixel_seconds);
         // The Jacobian of each mark over its box for the rays of all of B,
         // computed on the first pixel that needs it and shared by the others.
         const Interval aB = screen_a(B.x0, B.x1), bB = screen_b(B.y0, B.y1);
@@ -299,7 +306,6 @@ class PartRenderer {
     // Step 6: a one-pixel B, solved by Hansen-Sengupta on its marked patches.
     void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st,
                             const MarkJacobian* jacobians = nullptr) {
-        const StepClock clock(st.single_pixel_seconds);
         ++st.single_pixels;
         const PixelHit h =
             solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
@@ -351,6 +357,7 @@ class PartRenderer {
         B.y0 = ny0;
         B.y1 = ny1;
         if (B.x0 == B.x1 && B.y0 == B.y1) { // down to one pixel: solve it now
+            const StepClock clock(st.single_pixel_seconds);
             paint_single_pixel(B, first, n, st);
             return true;
         }

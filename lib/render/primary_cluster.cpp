@@ -3,6 +3,7 @@
 
 #include <seamless/interval/hansen_sengupta.h>
 
+#include <cmath>
 #include <limits>
 
 namespace seamless {
@@ -24,9 +25,17 @@ void primary_rows(const PowerForm& f, Interval a, Interval b, PowerForm& g) {
         }
 }
 
-// The zeros' range along one direction: the hull of the points (i / n, C_i),
-// C_i = hull of column i, meets the axis in [lo, hi] (outward rounded), found
-// from the crossings of all segments between points on opposite sides.
+// The zeros' range along one direction: the hull of the points (i / n, y),
+// y in C_i = hull of column i, meets the axis in [lo, hi] (outward), found
+// from the crossings of the segments between points on opposite sides.
+//
+// A crossing x = (i + (j - i) y_i / (y_i - y_j)) / n is computed in doubles:
+// f = y_i / (y_i - y_j) in (0, 1) with absolute error below 3u (u = 2^-53),
+// (j - i) f, the sum with i and the product with fl(1 / n) add at most a few
+// roundings of numbers below n <= 9, so |error| < (6n + 10) u < 1e-14; the
+// bounds are widened by 1e-13 and clamped to [i / n, j / n] (enclosed by
+// interval division), where the crossing lies. Where y_i - y_j could be subnormal (relative bounds
+// fail) the whole [i / n, j / n] is taken.
 Interval clip_columns(const Interval* C, int n) {
     bool above = true, below = true;
     for (int i = 0; i <= n; ++i) {
@@ -35,25 +44,31 @@ Interval clip_columns(const Interval* C, int n) {
     }
     if (above || below) return Interval::empty();
     if (n == 0) return {0.0, 1.0};
+    const double inv = 1.0 / n;
     const Interval N(static_cast<double>(n));
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    auto add = [&](double a, double b) {
+        lo = std::min(lo, a);
+        hi = std::max(hi, b);
+    };
     for (int i = 0; i <= n; ++i) {
-        if (C[i].contains(0.0)) {
-            const Interval x = Interval(static_cast<double>(i)) / N;
-            lo = std::min(lo, x.lo());
-            hi = std::max(hi, x.hi());
-        }
-        for (int j = i + 1; j <= n; ++j)
+        const Interval xi = Interval(static_cast<double>(i)) / N;
+        const double xi_lo = xi.lo(), xi_hi = xi.hi();
+        if (C[i].contains(0.0)) add(xi_lo, xi_hi);
+        for (int j = i + 1; j <= n; ++j) {
+            const double xj_hi = (Interval(static_cast<double>(j)) / N).hi();
             for (double yi : {C[i].lo(), C[i].hi()})
                 for (double yj : {C[j].lo(), C[j].hi()}) {
                     if (!((yi > 0 && yj < 0) || (yi < 0 && yj > 0))) continue;
-                    const Interval f = Interval(yi) / (Interval(yi) - Interval(yj));
-                    const Interval x = (Interval(static_cast<double>(i)) +
-                                        Interval(static_cast<double>(j - i)) * f) /
-                                       N;
-                    lo = std::min(lo, x.lo());
-                    hi = std::max(hi, x.hi());
+                    const double d = yi - yj;
+                    if (!(std::abs(d) > 0x1p-1000)) {
+                        add(xi_lo, xj_hi);
+                        continue;
+                    }
+                    const double x = (i + (j - i) * (yi / d)) * inv;
+                    add(std::max(xi_lo, x - 1e-13), std::min(xj_hi, x + 1e-13));
                 }
+        }
     }
     return intersect(Interval(lo, hi), Interval(0.0, 1.0));
 }

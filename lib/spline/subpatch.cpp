@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/subpatch.h>
 
+#include <cassert>
+#include <cmath>
+#include <limits>
+
 namespace seamless {
 namespace {
 
@@ -8,25 +12,36 @@ namespace {
 // coefficient enters once, so widths do not grow from step to step (the form
 // c_i + u (c_{i+1} - c_i) would double them at every level).
 //
+// w c for w >= 0 (the de Casteljau weights): two products instead of the
+// sign cases of both factors; the general product where a bound is infinite.
+inline Interval weight_times(Interval w, Interval c) {
+    const double lo = c.lo() >= 0 ? w.lo() * c.lo() : w.hi() * c.lo();
+    const double hi = c.hi() >= 0 ? w.hi() * c.hi() : w.lo() * c.hi();
+    if (!(std::abs(lo) <= std::numeric_limits<double>::max() &&
+          std::abs(hi) <= std::numeric_limits<double>::max()))
+        return w * c;
+    return {next_down(lo), next_up(hi)};
+}
+
 // One row of n + 1 coefficients with stride `stride`: the left part of a split
 // at u (domain [0, u]), in place. After pass k, position i >= k holds
 // b_{i-k}^{(k)} of the de Casteljau triangle, so position k keeps b_0^{(k)}.
 void left_part(Interval* c, int n, int stride, Interval u) {
-    const Interval v = Interval(1.0) - u;
+    const Interval v = intersect(Interval(1.0) - u, Interval(0.0, 1.0)); // u in [0, 1]
     for (int k = 1; k <= n; ++k)
         for (int i = n; i >= k; --i) {
             Interval& ci = c[i * stride];
-            ci = v * c[(i - 1) * stride] + u * ci;
+            ci = weight_times(v, c[(i - 1) * stride]) + weight_times(u, ci);
         }
 }
 // The right part of a split at u (domain [u, 1]), in place: position j keeps
 // b_j^{(n-j)}.
 void right_part(Interval* c, int n, int stride, Interval u) {
-    const Interval v = Interval(1.0) - u;
+    const Interval v = intersect(Interval(1.0) - u, Interval(0.0, 1.0)); // u in [0, 1]
     for (int k = 1; k <= n; ++k)
         for (int i = 0; i <= n - k; ++i) {
             Interval& ci = c[i * stride];
-            ci = v * ci + u * c[(i + 1) * stride];
+            ci = weight_times(v, ci) + weight_times(u, c[(i + 1) * stride]);
         }
 }
 
@@ -57,6 +72,9 @@ void control_coefficients(const BezierPatch& b, SubpatchShape sh, Interval* out)
 }
 
 void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Interval u1) {
+    u0 = intersect(u0, Interval(0.0, 1.0)); // the exact ends lie in [0, 1]
+    u1 = intersect(u1, Interval(0.0, 1.0));
+    assert(!u0.is_empty() && !u1.is_empty());
     const bool cut_hi = !(u1.is_thin() && u1.lo() == 1);
     const bool cut_lo = !(u0.is_thin() && u0.lo() == 0);
     if (cut_hi) for_rows(c, sh, dir, [&](Interval* r, int n, int st) { left_part(r, n, st, u1); });
