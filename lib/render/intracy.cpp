@@ -59,6 +59,7 @@ struct SubScreen {
     int x0, y0, x1, y1;   // inclusive pixel range
     size_t offset, count; // its marks in the arena
     size_t coef_end;      // end of its marks' subpatches in the coefficient arena
+    bool attempt;         // try step 7 (false: its parent's intensity was far too wide)
 };
 
 // SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
@@ -113,7 +114,7 @@ class PartRenderer {
             for (int c = 0; c < 3; ++c) m.hull[c] = intersect(m.hull[c], pp.hull[c]);
             arena_.push_back(m);
         }
-        stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size()});
+        stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size(), true});
         const long long enclosures0 = range_enclosure_count();
         const PartCpuScale cpu;
         while (!stack_.empty()) {
@@ -225,23 +226,27 @@ class PartRenderer {
         // Step 5: B shrinks to the hull of the projections of the marked patches.
         if (improve(B, first, nmarks, st)) return;
         // Step 7: a nearest q-separated patch that certainly covers B.
-        if (try_paint(B, first, nmarks, st)) return;
+        levels_over_ = 0;
+        if (B.attempt && try_paint(B, first, nmarks, st)) return;
+        // Step 9 failed by far: the children's enclosures (about half as wide)
+        // would fail too; they split at once and their children try again.
+        const bool kids_attempt = levels_over_ <= 2 * ((opt_.dither ? 1 : 0) + 1);
         // Step 10: split into four while possible (remark 3), else two.
         const int w = B.x1 - B.x0 + 1, h = B.y1 - B.y0 + 1;
         const int xm = B.x0 + w / 2 - 1, ym = B.y0 + h / 2 - 1;
         SubScreen kids[4];
         int nk = 0;
         if (w > 1 && h > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0, 0};
-            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0, 0};
-            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0, 0};
-            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0, 0};
+            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0, 0, true};
+            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0, 0, true};
+            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0, 0, true};
+            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0, 0, true};
         } else if (w > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0, 0};
-            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0, 0};
+            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0, 0, true};
+            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0, 0, true};
         } else {
-            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0, 0};
-            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0, 0};
+            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0, 0, true};
+            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0, 0, true};
         }
         // Each child gets the marks of B (already at the top of the arena for
         // the first; copies for the others). Pushed in reverse so the first is next.
@@ -249,6 +254,7 @@ class PartRenderer {
             kids[i].offset = first;
             kids[i].count = nmarks;
             kids[i].coef_end = coefs_.size();
+            kids[i].attempt = kids_attempt;
         }
         // All children share one mark list: a child's processing truncates the
         // arena to offset+count before appending, so the list survives for the next.
@@ -291,7 +297,7 @@ class PartRenderer {
                     }
                     pixel_jacobians_.push_back(jacobians_[j]);
                 }
-                const SubScreen pixel{x, y, x, y, 0, 0, 0};
+                const SubScreen pixel{x, y, x, y, 0, 0, 0, true};
                 if (arena_.size() == first) {
                     paint_background(x, y, x, y, st);
                     count(pixel, st);
@@ -413,6 +419,9 @@ class PartRenderer {
             if (!I[c].is_finite()) return false;
             lo[c] = quantise(I[c].lo(), levels_);
             hi[c] = quantise(I[c].hi(), levels_);
+            levels_over_ = std::max(levels_over_, hi[c] - lo[c]);
+        }
+        for (int c = 0; c < 3; ++c) {
             if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
             two |= hi[c] > lo[c];
         }
@@ -473,6 +482,7 @@ class PartRenderer {
     Image& image_;
     int levels_;
     std::uint16_t bg_[3];
+    int levels_over_ = 0; // the last step 9's widest enclosure in levels (0: not reached)
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     std::vector<Mark> arena_, work_;
     SubpatchArena coefs_; // the marks' subpatches
