@@ -52,13 +52,13 @@ bool regular(const IMat<2>& A) {
 } // namespace
 
 IVec<2> RaySystem::at(double s, double t) const {
-    const ParamBox p{Interval(s), Interval(t)};
-    const Interval Z = horner(f_.X, 2, p);
-    return IVec<2>{{horner(f_.X, 0, p) - Interval(a_) * Z, horner(f_.X, 1, p) - Interval(b_) * Z}};
+    Interval X[3];
+    enclose_homogeneous(pp_.patch, s, t, 3, X);
+    return IVec<2>{{X[0] - Interval(a_) * X[2], X[1] - Interval(b_) * X[2]}};
 }
 
 const ClusterSystem& RaySystem::forms() {
-    if (!built_) cluster_system(f_, Interval(a_), Interval(b_), sys_);
+    if (!built_) cluster_system(pp_.forms, Interval(a_), Interval(b_), sys_);
     built_ = true;
     return sys_;
 }
@@ -152,7 +152,7 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
         // (a covering method with the cheap test), and the full covering
         // method of ray_patch.h only on boxes still undecided at depth kDepth.
         constexpr int kDepth = 6;
-        RaySystem sys(pp.forms, a, b, scratch.sys);
+        RaySystem sys(pp, a, b, scratch.sys);
         auto& todo = scratch.boxes;
         todo.clear();
         todo.push_back({marks[k].box, 0});

@@ -47,15 +47,15 @@ struct PixelScratch {
 // caller-owned storage (nothing zeroed or allocated per ray).
 class RaySystem {
   public:
-    RaySystem(const PatchForms& f, double a, double b, ClusterSystem& storage)
-        : f_(f), a_(a), b_(b), sys_(storage) {}
-    // G at (s, t), enclosed.
+    RaySystem(const ProjectedPatch& pp, double a, double b, ClusterSystem& storage)
+        : pp_(pp), a_(a), b_(b), sys_(storage) {}
+    // G at (s, t) in [0,1]^2, enclosed (enclose_homogeneous of bezier_patch.h).
     IVec<2> at(double s, double t) const;
     // The power forms of G, G_s, G_t, built on the first call.
     const ClusterSystem& forms();
 
   private:
-    const PatchForms& f_;
+    const ProjectedPatch& pp_;
     double a_, b_;
     ClusterSystem& sys_;
     bool built_ = false;
@@ -74,7 +74,7 @@ MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
 MarkJacobian mark_jacobian(const IMat<2>& A);
 
 // The certified Newton solve above for the ray through screen point (a, b) and
-// patch pp in `box`; sys: the ray's system (RaySystem(pp.forms, a, b, ...)). hit: exactly one hit
+// patch pp in `box`; sys: the ray's system (RaySystem(pp, a, b, ...)). hit: exactly one hit
 // in box, in `hit` (local (s, t)), at depth `q` (camera z, enclosed); miss: certainly none in box
 // (a Hansen-Sengupta step over the box is empty, Theorem 6 ii); undecided: take the covering
 // method. J: the Jacobian over box for a sub-screen holding the ray (computed here when null).

@@ -80,7 +80,7 @@ TEST_CASE("Certified Newton agrees with the covering method", "[pixel_solve]") {
             b = P.y / P.z;
         }
         ClusterSystem storage;
-        RaySystem sys(pp.forms, a, b, storage);
+        RaySystem sys(pp, a, b, storage);
         RenderStats st;
         ParamBox hb;
         Interval q;
@@ -116,7 +116,7 @@ TEST_CASE("Certified Newton with a sub-screen's Jacobian: no hit lost, none inve
         ClusterSystem sub, storage;
         cluster_system(pp.forms, Interval(a - d, a + d), Interval(b - d, b + d), sub);
         const MarkJacobian J = mark_jacobian(sub, box);
-        RaySystem sys(pp.forms, a, b, storage);
+        RaySystem sys(pp, a, b, storage);
         RenderStats st;
         ParamBox hb, rest;
         Interval q;

@@ -75,3 +75,34 @@ TEST_CASE("Restricted subpatches enclose the patch over their box", "[subpatch]"
     }
     CHECK(tight == cases);
 }
+
+TEST_CASE("Point enclosures by de Casteljau hold the long double value", "[subpatch]") {
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    for (int n = 0; n < 400; ++n) {
+        const int p = n % BezierPatch::kMaxOrder, q = (n / 3) % BezierPatch::kMaxOrder;
+        BezierPatch b = test::random_patch(rng, p, q, n % 2 == 0);
+        const double scale = n % 5 == 0 ? 1e6 : 1.0;
+        for (auto& h : b.cp)
+            for (int c = 0; c < 4; ++c) h[c] *= scale;
+        const double s = n % 7 == 0 ? 0.0 : U(rng), t = n % 11 == 0 ? 1.0 : U(rng);
+        Interval X[4];
+        enclose_homogeneous(b, s, t, 4, X);
+        long double Bu[BezierPatch::kMaxOrder], dBu[BezierPatch::kMaxOrder];
+        long double Bv[BezierPatch::kMaxOrder], dBv[BezierPatch::kMaxOrder];
+        test::detail::bernstein_ld(p, s, Bu, dBu);
+        test::detail::bernstein_ld(q, t, Bv, dBv);
+        for (int c = 0; c < 4; ++c) {
+            long double ref = 0, M = 0;
+            for (int i = 0; i <= p; ++i)
+                for (int j = 0; j <= q; ++j) {
+                    ref += Bu[i] * Bv[j] * b.at(i, j)[c];
+                    M = std::max(M, std::abs(static_cast<long double>(b.at(i, j)[c])));
+                }
+            const long double slack = 1e-17L * M; // the long double reference's own error
+            CHECK(static_cast<long double>(X[c].lo()) <= ref + slack);
+            CHECK(static_cast<long double>(X[c].hi()) >= ref - slack);
+            CHECK(static_cast<long double>(X[c].width()) <= 1e-13L * M + 1e-300L);
+        }
+    }
+}
