@@ -6,10 +6,12 @@
 // The screen is prepartitioned into 8 x 8 parts (remark 4), each handled with
 // its own stack of sub-screens B and run in parallel. For each B:
 //  step 3: every marked patch is compared with B by hull (remark 1 of Prop. 11
-//          in its primary-ray form), then its (s, t) intervals are narrowed by
-//          Theorem 10 (remark 3: at the interval bounds, and at the midpoints
-//          where a silhouette is possible, which may separate the patch in two);
-//          a patch whose intervals become empty is unmarked;
+//          in its primary-ray form: the hull of its projected control points),
+//          then its (s, t) intervals are narrowed (Theorem 10's question, by
+//          Bezier clipping of the subpatch the mark carries from its parent,
+//          mark.h), separated at the midpoints where a silhouette is possible
+//          (remark 3), bisected where they stay wide (covering method); a patch
+//          whose intervals become empty is unmarked;
 //  step 5: B shrinks to the hull of the projections of the marked patches; the
 //          rest of B is background, certainly;
 //  step 6: a one-pixel B is solved on every marked patch, nearest first
@@ -28,7 +30,8 @@
 //          with the bilinear form of its four corner intensities (corner rays by
 //          Hansen-Sengupta, remark 2) plus dither in [-0.5, 0.5], kept within
 //          the enclosure's levels; without dithering B must hold one level;
-//  step 10: otherwise B is split into four (remark 3), or two, and pushed.
+//  step 10: otherwise B is split into four (remark 3), or two, and pushed;
+//          children of a B whose step 9 failed by far skip steps 7-9.
 // Step 7's certificate replaces the paper's conditions a)-c) of remark 4 with a
 // proof: a pixel painted from a cluster is never wrong by more than one level
 // (the enclosure holds the true intensity), and background is never painted
