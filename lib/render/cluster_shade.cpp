@@ -190,7 +190,10 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
                 if (blocked || tries >= kBlockerTries || ts_->triangle_patch[t] == patch) return;
                 const auto& tri = ts_->tess.mesh.triangles[t];
                 const auto& V = ts_->tess.mesh.positions;
-                if (!may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])) return;
+                if (!pyramid_may_meet_triangle(light.position, Pw, V[tri[0]], V[tri[1]],
+                                               V[tri[2]]) ||
+                    !may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]]))
+                    return;
                 maybe = true;
                 ++tries;
                 Interval q;

@@ -6,10 +6,12 @@
 // The screen is prepartitioned into 8 x 8 parts (remark 4), each handled with
 // its own stack of sub-screens B and run in parallel. For each B:
 //  step 3: every marked patch is compared with B by hull (remark 1 of Prop. 11
-//          in its primary-ray form), then its (s, t) intervals are narrowed by
-//          Theorem 10 (remark 3: at the interval bounds, and at the midpoints
-//          where a silhouette is possible, which may separate the patch in two);
-//          a patch whose intervals become empty is unmarked;
+//          in its primary-ray form: the hull of its projected control points),
+//          then its (s, t) intervals are narrowed (Theorem 10's question, by
+//          Bezier clipping of the subpatch the mark carries from its parent,
+//          mark.h), separated at the midpoints where a silhouette is possible
+//          (remark 3), bisected where they stay wide (covering method); a patch
+//          whose intervals become empty is unmarked;
 //  step 5: B shrinks to the hull of the projections of the marked patches; the
 //          rest of B is background, certainly;
 //  step 6: a one-pixel B is solved on every marked patch, nearest first
@@ -28,7 +30,8 @@
 //          with the bilinear form of its four corner intensities (corner rays by
 //          Hansen-Sengupta, remark 2) plus dither in [-0.5, 0.5], kept within
 //          the enclosure's levels; without dithering B must hold one level;
-//  step 10: otherwise B is split into four (remark 3), or two, and pushed.
+//  step 10: otherwise B is split into four (remark 3), or two, and pushed;
+//          children of a B whose step 9 failed by far skip steps 7-9.
 // Step 7's certificate replaces the paper's conditions a)-c) of remark 4 with a
 // proof: a pixel painted from a cluster is never wrong by more than one level
 // (the enclosure holds the true intensity), and background is never painted
@@ -58,6 +61,8 @@ namespace {
 struct SubScreen {
     int x0, y0, x1, y1;   // inclusive pixel range
     size_t offset, count; // its marks in the arena
+    size_t coef_end;      // end of its marks' subpatches in the coefficient arena
+    bool attempt;         // try step 7 (false: its parent's intensity was far too wide)
 };
 
 // SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
@@ -102,19 +107,33 @@ class PartRenderer {
     void run(int x0, int y0, int x1, int y1, RenderStats& st) {
         arena_.clear();
         stack_.clear();
-        for (size_t k = 0; k < ps_.patches.size(); ++k)
-            arena_.push_back({static_cast<int>(k), ParamBox{}, ps_.patches[k].hull});
-        stack_.push_back({x0, y0, x1, y1, 0, arena_.size()});
+        coefs_.clear();
+        for (size_t k = 0; k < ps_.patches.size(); ++k) {
+            const ProjectedPatch& pp = ps_.patches[k];
+            Mark m{static_cast<int>(k), ParamBox{}, pp.hull, coefs_.size()};
+            coefs_.resize(coefs_.size() + pp.shape.size());
+            control_coefficients(pp.patch, pp.shape, &coefs_[m.coef]);
+            update_enclosures(coefs_, pp.shape, m);
+            for (int c = 0; c < 3; ++c) m.hull[c] = intersect(m.hull[c], pp.hull[c]);
+            arena_.push_back(m);
+        }
+        stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size(), true});
         const long long enclosures0 = range_enclosure_count();
+        const PartCpuScale cpu;
         while (!stack_.empty()) {
             SubScreen B = stack_.back();
             stack_.pop_back();
             arena_.resize(B.offset + B.count);
+            coefs_.resize(B.coef_end);
             ++st.subscreens;
             step(B, st);
         }
         st.range_enclosures += range_enclosure_count() - enclosures0;
         st.shade_seconds -= st.secondary_seconds; // reported apart
+        const double f = cpu.factor();
+        for (double* x : {&st.narrow_seconds, &st.certify_seconds, &st.shade_seconds,
+                          &st.secondary_seconds, &st.single_pixel_seconds})
+            *x *= f;
     }
 
   private:
@@ -151,58 +170,48 @@ class PartRenderer {
         if (!thin) narrowing.emplace(st.narrow_seconds);
         for (size_t k = B.offset; k < B.offset + B.count; ++k) {
             // Covering method (section 5, remark 2 after Theorem 10): where Theorem 10
-            // cannot narrow a box (its derivative hull holds 0, near a silhouette) and
-            // the box still projects far beyond B, it is bisected and both halves go on.
+            // cannot narrow a box (near a silhouette) and the box still projects far
+            // beyond B, it is bisected and both halves go on.
             work_.clear();
             work_.push_back(arena_[k]);
             int budget = kMaxBisections;
             while (!work_.empty()) {
                 Mark m = work_.back();
                 work_.pop_back();
-                const ProjectedPatch& pp = ps_.patches[m.patch];
-                // Hull comparison with the hull the mark brought from its parent.
-                const IVec3& P = m.hull;
-                if (!(P[2].hi() > 0)) continue; // behind the eye
-                if (!(P[0] - a * P[2]).contains(0.0) || !(P[1] - b * P[2]).contains(0.0)) continue;
+                // Hull comparison with the enclosures the mark brought from its parent.
+                if (!may_meet(m, a, b)) continue;
                 if (thin) {
                     arena_.push_back(m);
                     continue;
                 }
-                cluster_system(pp.forms, a, b, sys_);
+                const SubpatchShape sh = ps_.patches[m.patch].shape;
                 ++st.marks_narrowed;
                 IMat<2> A;
-                if (!narrow(sys_, m.box, &A)) continue;
-                const IVec3 Q = enclose_point(pp.forms, m.box);
-                m.hull = Q;
-                const bool wide = !(Q[2].lo() > 0) ||
-                                  (Q[0] / Q[2]).width() > 2 * (a.width() + pitch_a) ||
-                                  (Q[1] / Q[2]).width() > 2 * (b.width() + pitch_b);
+                if (!narrow_mark(coefs_, sh, a, b, m, &A)) continue;
+                update_enclosures(coefs_, sh, m);
+                const IVec3& Q = m.hull;
+                const Interval pa = m.pa.is_finite() ? m.pa : Q[0] / Q[2];
+                const Interval pb = m.pb.is_finite() ? m.pb : Q[1] / Q[2];
+                const bool wide = !(Q[2].lo() > 0) || pa.width() > 2 * (a.width() + pitch_a) ||
+                                  pb.width() > 2 * (b.width() + pitch_b);
                 if (wide && budget > 0 && std::max(m.box.s.width(), m.box.t.width()) > 1e-9) {
                     --budget;
                     ++st.mark_bisections;
-                    Mark lo = m, hi = m;
-                    if (m.box.s.width() >= m.box.t.width()) {
-                        const double sm = m.box.s.mid();
-                        lo.box.s = {m.box.s.lo(), sm};
-                        hi.box.s = {sm, m.box.s.hi()};
-                    } else {
-                        const double tm = m.box.t.mid();
-                        lo.box.t = {m.box.t.lo(), tm};
-                        hi.box.t = {tm, m.box.t.hi()};
-                    }
-                    work_.push_back(hi);
-                    work_.push_back(lo);
+                    Mark half[2];
+                    bisect_mark(coefs_, sh, m, m.box.s.width() >= m.box.t.width() ? 0 : 1, half);
+                    work_.push_back(half[1]);
+                    work_.push_back(half[0]);
                     continue;
                 }
                 // Remark 3: where a silhouette is possible the patch is separated. In
                 // the projected problem the silhouette is where the Jacobian of G
                 // (the projected normal's z component) vanishes; its entries are the
-                // narrowing's last ranges, over boxes holding m.box.
+                // clipping's last derivative ranges, over subpatches holding m.box.
                 const Interval J = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
-                ParamBox parts[2];
+                Mark parts[2];
                 const int n =
-                    J.contains(0.0) ? separate(sys_, m.box, parts) : (parts[0] = m.box, 1);
-                for (int i = 0; i < n; ++i) arena_.push_back({m.patch, parts[i], Q});
+                    J.contains(0.0) ? separate_mark(coefs_, sh, a, b, m, parts) : (parts[0] = m, 1);
+                for (int i = 0; i < n; ++i) arena_.push_back(parts[i]);
             }
         }
         narrowing.reset();
@@ -213,35 +222,42 @@ class PartRenderer {
             return;
         }
         if (thin) {
+            const StepClock clock(st.single_pixel_seconds);
             paint_single_pixel(B, first, nmarks, st);
             return;
         }
         // Step 5: B shrinks to the hull of the projections of the marked patches.
         if (improve(B, first, nmarks, st)) return;
         // Step 7: a nearest q-separated patch that certainly covers B.
-        if (try_paint(B, first, nmarks, st)) return;
+        levels_over_ = 0;
+        if (B.attempt && try_paint(B, first, nmarks, st)) return;
+        // Step 9 failed by far: the children's enclosures (about half as wide)
+        // would fail too; they split at once and their children try again.
+        const bool kids_attempt = levels_over_ <= 2 * ((opt_.dither ? 1 : 0) + 1);
         // Step 10: split into four while possible (remark 3), else two.
         const int w = B.x1 - B.x0 + 1, h = B.y1 - B.y0 + 1;
         const int xm = B.x0 + w / 2 - 1, ym = B.y0 + h / 2 - 1;
         SubScreen kids[4];
         int nk = 0;
         if (w > 1 && h > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0};
-            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0};
-            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0};
-            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0};
+            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0, 0, true};
+            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0, 0, true};
+            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0, 0, true};
+            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0, 0, true};
         } else if (w > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0};
-            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0};
+            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0, 0, true};
+            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0, 0, true};
         } else {
-            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0};
-            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0};
+            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0, 0, true};
+            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0, 0, true};
         }
         // Each child gets the marks of B (already at the top of the arena for
         // the first; copies for the others). Pushed in reverse so the first is next.
         for (int i = nk - 1; i >= 0; --i) {
             kids[i].offset = first;
             kids[i].count = nmarks;
+            kids[i].coef_end = coefs_.size();
+            kids[i].attempt = kids_attempt;
         }
         // All children share one mark list: a child's processing truncates the
         // arena to offset+count before appending, so the list survives for the next.
@@ -252,6 +268,7 @@ class PartRenderer {
     // without a cluster attempt: a few certified Newton solves cost less than
     // narrowing, certificate and SHADE for a cluster of a handful of pixels.
     void paint_pixels(const SubScreen& B, RenderStats& st) {
+        const StepClock clock(st.single_pixel_seconds);
         // The Jacobian of each mark over its box for the rays of all of B,
         // computed on the first pixel that needs it and shared by the others.
         const Interval aB = screen_a(B.x0, B.x1), bB = screen_b(B.y0, B.y1);
@@ -264,21 +281,26 @@ class PartRenderer {
                 pixel_jacobians_.clear();
                 for (size_t k = B.offset; k < B.offset + B.count; ++k) {
                     const Mark m = arena_[k]; // a copy: push_back may move the arena
-                    const IVec3& P = m.hull;
-                    if (!(P[2].hi() > 0)) continue; // behind the eye
-                    if (!(P[0] - Interval(a) * P[2]).contains(0.0) ||
-                        !(P[1] - Interval(b) * P[2]).contains(0.0))
+                    if (!may_meet(m, Interval(a), Interval(b))) continue;
+                    // The pixel's own clip: a certain miss, or a smaller box to
+                    // solve in (the copy's subpatch is not used beyond here).
+                    Mark pm = m;
+                    if (!clip_box(coefs_, ps_.patches[m.patch].shape, Interval(a), Interval(b), m,
+                                  pm.box))
                         continue;
-                    arena_.push_back(m);
+                    arena_.push_back(pm);
                     const size_t j = k - B.offset;
                     if (!known_[j]) {
-                        cluster_system(ps_.patches[m.patch].forms, aB, bB, sys_);
-                        jacobians_[j] = mark_jacobian(sys_, m.box);
+                        // From the mark's subpatch: a hull of coefficient
+                        // differences instead of four power-form ranges.
+                        const SubpatchShape sh = ps_.patches[m.patch].shape;
+                        jacobians_[j] =
+                            mark_jacobian(subpatch_jacobian(&coefs_[m.coef], sh, m.box, aB, bB));
                         known_[j] = 1;
                     }
                     pixel_jacobians_.push_back(jacobians_[j]);
                 }
-                const SubScreen pixel{x, y, x, y, 0, 0};
+                const SubScreen pixel{x, y, x, y, 0, 0, 0, true};
                 if (arena_.size() == first) {
                     paint_background(x, y, x, y, st);
                     count(pixel, st);
@@ -293,7 +315,6 @@ class PartRenderer {
     // Step 6: a one-pixel B, solved by Hansen-Sengupta on its marked patches.
     void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st,
                             const MarkJacobian* jacobians = nullptr) {
-        const StepClock clock(st.single_pixel_seconds);
         ++st.single_pixels;
         const PixelHit h =
             solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
@@ -313,7 +334,13 @@ class PartRenderer {
     bool improve(SubScreen& B, size_t first, size_t n, RenderStats& st) {
         Interval ha = Interval::empty(), hb = Interval::empty();
         for (size_t k = first; k < first + n; ++k) {
-            const IVec3& P = arena_[k].hull;
+            const Mark& m = arena_[k];
+            if (m.pa.is_finite() && m.pb.is_finite()) {
+                ha = hull(ha, m.pa);
+                hb = hull(hb, m.pb);
+                continue;
+            }
+            const IVec3& P = m.hull;
             if (!(P[2].lo() > 0)) return false; // crosses the eye plane: no projection hull
             ha = hull(ha, P[0] / P[2]);
             hb = hull(hb, P[1] / P[2]);
@@ -339,6 +366,7 @@ class PartRenderer {
         B.y0 = ny0;
         B.y1 = ny1;
         if (B.x0 == B.x1 && B.y0 == B.y1) { // down to one pixel: solve it now
+            const StepClock clock(st.single_pixel_seconds);
             paint_single_pixel(B, first, n, st);
             return true;
         }
@@ -394,6 +422,9 @@ class PartRenderer {
             if (!I[c].is_finite()) return false;
             lo[c] = quantise(I[c].lo(), levels_);
             hi[c] = quantise(I[c].hi(), levels_);
+            levels_over_ = std::max(levels_over_, hi[c] - lo[c]);
+        }
+        for (int c = 0; c < 3; ++c) {
             if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
             two |= hi[c] > lo[c];
         }
@@ -454,8 +485,10 @@ class PartRenderer {
     Image& image_;
     int levels_;
     std::uint16_t bg_[3];
+    int levels_over_ = 0; // the last step 9's widest enclosure in levels (0: not reached)
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     std::vector<Mark> arena_, work_;
+    SubpatchArena coefs_; // the marks' subpatches
     std::vector<SubScreen> stack_;
     PixelScratch pixel_;
     std::vector<MarkJacobian> jacobians_,

@@ -51,17 +51,33 @@ bool regular(const IMat<2>& A) {
 
 } // namespace
 
+IVec<2> RaySystem::at(double s, double t) const {
+    Interval X[3];
+    enclose_homogeneous(pp_.patch, s, t, 3, X);
+    return IVec<2>{{X[0] - Interval(a_) * X[2], X[1] - Interval(b_) * X[2]}};
+}
+
+const ClusterSystem& RaySystem::forms() {
+    if (!built_) cluster_system(pp_.forms, Interval(a_), Interval(b_), sys_);
+    built_ = true;
+    return sys_;
+}
+
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box) {
+    return mark_jacobian(jacobian(sys, box));
+}
+
+MarkJacobian mark_jacobian(const IMat<2>& A) {
     MarkJacobian j;
-    j.A = jacobian(sys, box);
-    j.regular = regular(j.A);
+    j.A = A;
+    j.regular = regular(A);
     return j;
 }
 
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
+                               RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
                                const MarkJacobian* given, ParamBox* rest) {
-    const MarkJacobian J = given ? *given : mark_jacobian(sys, box);
+    const MarkJacobian J = given ? *given : mark_jacobian(sys.forms(), box);
     const IMat<2>& A = J.A;
     // At most one zero in box when A is regular: Newton in doubles from the
     // box's centre, kept inside the box; a run that keeps leaving the box
@@ -83,15 +99,14 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
             const double e = 1e-9;
             const IVec<2> Y{{intersect(Interval(next_down(s - e), next_up(s + e)), box.s),
                              intersect(Interval(next_down(t - e), next_up(t + e)), box.t)}};
-            IVec<2> F;
-            const ParamBox centre{Interval(s), Interval(t)};
-            for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, centre);
+            const IVec<2> F = sys.at(s, t);
             // A over the box bounds G' over Y too; only where it is too wide to
             // certify is the Jacobian enclosed over Y itself.
             HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
             ++st.hs_steps;
             if (!hs.unique) {
-                hs = hansen_sengupta<2>(jacobian(sys, ParamBox{Y[0], Y[1]}), F, Y, RVec<2>{s, t});
+                hs = hansen_sengupta<2>(jacobian(sys.forms(), ParamBox{Y[0], Y[1]}), F, Y,
+                                        RVec<2>{s, t});
                 ++st.hs_steps;
             }
             if (hs.unique) {
@@ -109,8 +124,7 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
     // means no zero there (Theorem 6 ii).
     const IVec<2> X{{box.s, box.t}};
     const RVec<2> c = mid(X);
-    IVec<2> Fc;
-    for (int k = 0; k < 2; ++k) Fc[k] = horner(sys.G, k, ParamBox{Interval(c[0]), Interval(c[1])});
+    const IVec<2> Fc = sys.at(c[0], c[1]);
     const HansenSenguptaStep<2> whole = hansen_sengupta<2>(A, Fc, X, c);
     ++st.hs_steps;
     if (whole.box.is_empty()) return NewtonOutcome::miss;
@@ -138,7 +152,7 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
         // (a covering method with the cheap test), and the full covering
         // method of ray_patch.h only on boxes still undecided at depth kDepth.
         constexpr int kDepth = 6;
-        cluster_system(pp.forms, Interval(a), Interval(b), scratch.sys);
+        RaySystem sys(pp, a, b, scratch.sys);
         auto& todo = scratch.boxes;
         todo.clear();
         todo.push_back({marks[k].box, 0});
@@ -149,8 +163,7 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
             Interval q;
             const MarkJacobian* J = depth == 0 && jacobians ? &jacobians[k] : nullptr;
             ParamBox rest = box;
-            const NewtonOutcome nc =
-                newton_certified(pp, a, b, box, scratch.sys, hb, q, st, J, &rest);
+            const NewtonOutcome nc = newton_certified(pp, a, b, box, sys, hb, q, st, J, &rest);
             if (nc == NewtonOutcome::miss) {
                 ++st.pixel_newton_certified;
                 continue;

@@ -41,6 +41,26 @@ struct PixelScratch {
     std::vector<std::pair<ParamBox, int>> boxes; // boxes still to solve, with their depth
 };
 
+// The system G = (X - aZ, Y - bZ) of one ray: point values from the patch's
+// power forms directly (X, Y and Z at the point), the power forms of G and its
+// derivatives (cluster_system) only when a Jacobian over a box is needed, into
+// caller-owned storage (nothing zeroed or allocated per ray).
+class RaySystem {
+  public:
+    RaySystem(const ProjectedPatch& pp, double a, double b, ClusterSystem& storage)
+        : pp_(pp), a_(a), b_(b), sys_(storage) {}
+    // G at (s, t) in [0,1]^2, enclosed (enclose_homogeneous of bezier_patch.h).
+    IVec<2> at(double s, double t) const;
+    // The power forms of G, G_s, G_t, built on the first call.
+    const ClusterSystem& forms();
+
+  private:
+    const ProjectedPatch& pp_;
+    double a_, b_;
+    ClusterSystem& sys_;
+    bool built_ = false;
+};
+
 // The interval Jacobian A of G over a mark's box, and whether it is regular
 // (||I - C A|| < 1). Computed from the cluster system of a sub-screen [a] x [b]
 // it encloses G' for every ray of the sub-screen (Definition 4), so the pixels
@@ -50,16 +70,18 @@ struct MarkJacobian {
     bool regular = false;
 };
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
+// The same from a Jacobian enclosed otherwise (subpatch_jacobian of primary_cluster.h).
+MarkJacobian mark_jacobian(const IMat<2>& A);
 
 // The certified Newton solve above for the ray through screen point (a, b) and
-// patch pp in `box`; sys: cluster_system(pp.forms, a, b). hit: exactly one hit in box, in `hit`
-// (local (s, t)), at depth `q` (camera z, enclosed); miss: certainly none in box (a Hansen-Sengupta
-// step over the box is empty, Theorem 6 ii); undecided: take the covering method.
-// J: the Jacobian over box for a sub-screen holding the ray (computed here when null).
+// patch pp in `box`; sys: the ray's system (RaySystem(pp, a, b, ...)). hit: exactly one hit
+// in box, in `hit` (local (s, t)), at depth `q` (camera z, enclosed); miss: certainly none in box
+// (a Hansen-Sengupta step over the box is empty, Theorem 6 ii); undecided: take the covering
+// method. J: the Jacobian over box for a sub-screen holding the ray (computed here when null).
 // rest: when undecided, the part of box that may hold hits (Theorem 6 i).
 enum class NewtonOutcome { hit, miss, undecided };
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                               ClusterSystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
+                               RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
                                const MarkJacobian* J = nullptr, ParamBox* rest = nullptr);
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)

@@ -3,6 +3,7 @@
 
 #include <seamless/interval/hansen_sengupta.h>
 
+#include <cmath>
 #include <limits>
 
 namespace seamless {
@@ -24,7 +25,129 @@ void primary_rows(const PowerForm& f, Interval a, Interval b, PowerForm& g) {
         }
 }
 
+// The zeros' range along one direction: the hull of the points (i / n, y),
+// y in C_i = hull of column i, meets the axis in [lo, hi] (outward), found
+// from the crossings of the segments between points on opposite sides.
+//
+// A crossing x = (i + (j - i) y_i / (y_i - y_j)) / n is computed in doubles:
+// f = y_i / (y_i - y_j) in (0, 1) with absolute error below 3u (u = 2^-53),
+// (j - i) f, the sum with i and the product with fl(1 / n) add at most a few
+// roundings of numbers below n <= 9, so |error| < (6n + 10) u < 1e-14; the
+// bounds are widened by 1e-13 and clamped to [i / n, j / n] (enclosed by
+// interval division), where the crossing lies. Where y_i - y_j could be subnormal (relative bounds
+// fail) the whole [i / n, j / n] is taken.
+Interval clip_columns(const Interval* C, int n) {
+    bool above = true, below = true;
+    for (int i = 0; i <= n; ++i) {
+        above = above && C[i].lo() > 0;
+        below = below && C[i].hi() < 0;
+    }
+    if (above || below) return Interval::empty();
+    if (n == 0) return {0.0, 1.0};
+    const double inv = 1.0 / n;
+    const Interval N(static_cast<double>(n));
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    auto add = [&](double a, double b) {
+        lo = std::min(lo, a);
+        hi = std::max(hi, b);
+    };
+    for (int i = 0; i <= n; ++i) {
+        const Interval xi = Interval(static_cast<double>(i)) / N;
+        const double xi_lo = xi.lo(), xi_hi = xi.hi();
+        if (C[i].contains(0.0)) add(xi_lo, xi_hi);
+        for (int j = i + 1; j <= n; ++j) {
+            const double xj_hi = (Interval(static_cast<double>(j)) / N).hi();
+            for (double yi : {C[i].lo(), C[i].hi()})
+                for (double yj : {C[j].lo(), C[j].hi()}) {
+                    if (!((yi > 0 && yj < 0) || (yi < 0 && yj > 0))) continue;
+                    const double d = yi - yj;
+                    if (!(std::abs(d) > 0x1p-1000)) {
+                        add(xi_lo, xj_hi);
+                        continue;
+                    }
+                    const double x = (i + (j - i) * (yi / d)) * inv;
+                    add(std::max(xi_lo, x - 1e-13), std::min(xj_hi, x + 1e-13));
+                }
+        }
+    }
+    return intersect(Interval(lo, hi), Interval(0.0, 1.0));
+}
+
+// Bernstein coefficient (i, j) of G_k = X_k - e Z (e = a for k = 0, b for k = 1).
+Interval g_at(const Interval* c, SubpatchShape sh, Interval e, int k, int i, int j) {
+    return c[sh.index(k, i, j)] - e * c[sh.index(2, i, j)];
+}
+
+// Hulls of the s- and t-differences of G_k's coefficients; x and z are
+// differenced first, so e enters once. 0 along a degree-0 direction.
+void difference_ranges(const Interval* c, SubpatchShape sh, Interval e, int k, Interval& du,
+                       Interval& dv) {
+    du = sh.p > 0 ? Interval::empty() : Interval(0.0);
+    dv = sh.q > 0 ? Interval::empty() : Interval(0.0);
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            if (i < sh.p)
+                du = hull(du, (c[sh.index(k, i + 1, j)] - c[sh.index(k, i, j)]) -
+                                  e * (c[sh.index(2, i + 1, j)] - c[sh.index(2, i, j)]));
+            if (j < sh.q)
+                dv = hull(dv, (c[sh.index(k, i, j + 1)] - c[sh.index(k, i, j)]) -
+                                  e * (c[sh.index(2, i, j + 1)] - c[sh.index(2, i, j)]));
+        }
+}
+
 } // namespace
+
+IMat<2> subpatch_jacobian(const Interval* c, SubpatchShape sh, const ParamBox& box, Interval a,
+                          Interval b) {
+    const Interval ws = Interval(box.s.hi()) - Interval(box.s.lo());
+    const Interval wt = Interval(box.t.hi()) - Interval(box.t.lo());
+    IMat<2> A;
+    for (int k = 0; k < 2; ++k) {
+        Interval du, dv;
+        difference_ranges(c, sh, k == 0 ? a : b, k, du, dv);
+        A(k, 0) = Interval(static_cast<double>(sh.p)) * du / ws;
+        A(k, 1) = Interval(static_cast<double>(sh.q)) * dv / wt;
+    }
+    return A;
+}
+
+bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, Interval& u,
+                  Interval& v, IMat<2>* D) {
+    constexpr int K = BezierPatch::kMaxOrder;
+    u = Interval(0.0, 1.0);
+    v = Interval(0.0, 1.0);
+    for (int k = 0; k < 2; ++k) {
+        const Interval e = k == 0 ? a : b;
+        Interval col[K], row[K];
+        for (int i = 0; i <= sh.p; ++i) col[i] = Interval::empty();
+        for (int j = 0; j <= sh.q; ++j) row[j] = Interval::empty();
+        for (int i = 0; i <= sh.p; ++i)
+            for (int j = 0; j <= sh.q; ++j) {
+                const Interval g = g_at(c, sh, e, k, i, j);
+                col[i] = hull(col[i], g);
+                row[j] = hull(row[j], g);
+            }
+        u = intersect(u, clip_columns(col, sh.p));
+        v = intersect(v, clip_columns(row, sh.q));
+        if (u.is_empty() || v.is_empty()) return false;
+        if (D) difference_ranges(c, sh, e, k, (*D)(k, 0), (*D)(k, 1));
+    }
+    return true;
+}
+
+Interval edge_range(const Interval* c, SubpatchShape sh, Interval a, Interval b, int k, int dir,
+                    bool far) {
+    const Interval e = k == 0 ? a : b;
+    Interval r = Interval::empty();
+    if (dir == 0) {
+        const int i = far ? sh.p : 0;
+        for (int j = 0; j <= sh.q; ++j) r = hull(r, g_at(c, sh, e, k, i, j));
+    } else {
+        const int j = far ? sh.q : 0;
+        for (int i = 0; i <= sh.p; ++i) r = hull(r, g_at(c, sh, e, k, i, j));
+    }
+    return r;
+}
 
 void cluster_system(const PatchForms& f, Interval a, Interval b, ClusterSystem& out) {
     primary_rows(f.X, a, b, out.G);

@@ -24,6 +24,7 @@ ProjectedScene project_scene(const Scene& scene, int width, int height) {
             pp.patch = b;
             pp.forms = patch_forms(b);
             pp.hull = enclose_point(pp.forms, ParamBox{});
+            pp.shape = subpatch_shape(b);
             pp.material = scene.surface_material[k];
             ps.patches.push_back(std::move(pp));
         }

@@ -8,15 +8,17 @@
 #include <seamless/render/scene.h>
 #include <seamless/spline/enclosure.h>
 #include <seamless/spline/ray_patch.h>
+#include <seamless/spline/subpatch.h>
 
 #include <vector>
 
 namespace seamless {
 
 struct ProjectedPatch {
-    BezierPatch patch; // homogeneous control points in camera coordinates
-    PatchForms forms;  // power forms of `patch` (section 4)
-    IVec3 hull;        // enclosure of the whole patch, camera coordinates
+    BezierPatch patch;   // homogeneous control points in camera coordinates
+    PatchForms forms;    // power forms of `patch` (section 4)
+    IVec3 hull;          // enclosure of the whole patch, camera coordinates
+    SubpatchShape shape; // layout of its subpatches' coefficients (mark.h)
     int material = 0;
 };
 

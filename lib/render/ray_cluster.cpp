@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/ray_cluster.h>
 
+#include <array>
+
 #include <seamless/interval/gauss_seidel.h>
 #include <seamless/interval/hansen_sengupta.h>
 
@@ -145,6 +147,53 @@ bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q
         if (x.is_empty()) return false;
     }
     return false;
+}
+
+namespace {
+
+using IV3 = std::array<Interval, 3>;
+
+IV3 isub(const IV3& a, const IV3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+IV3 icross(const IV3& a, const IV3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Interval idot(const IV3& a, const IV3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+IV3 iv(Vec3 v) {
+    return {Interval(v.x), Interval(v.y), Interval(v.z)};
+}
+// x and y certainly of the same strict sign.
+bool same_side(Interval x, Interval y) {
+    return (x.lo() > 0 && y.lo() > 0) || (x.hi() < 0 && y.hi() < 0);
+}
+
+} // namespace
+
+bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2, Vec3 T3) {
+    const IV3 L = iv(apex), A = iv(T1), B = iv(T2), C = iv(T3);
+    const IV3 E{ends[0], ends[1], ends[2]};
+    // The triangle's plane: apex and every end point strictly on one side.
+    const IV3 n = icross(isub(B, A), isub(C, A));
+    const Interval apex_side = idot(n, isub(L, A));
+    if (same_side(apex_side, idot(n, isub(E, A)))) return false;
+    // The apex itself lies on every side plane: only when it is certainly off
+    // the triangle's plane is it outside the triangle, and the box strictly
+    // beyond a side plane puts every other point of the hull outside too.
+    if (apex_side.contains(0.0)) return true;
+    // The side planes through the apex: the box strictly outside one of them
+    // (the linear form's range over the box is exact up to rounding: each
+    // coordinate of E enters once).
+    const IV3 V[3] = {A, B, C};
+    for (int e = 0; e < 3; ++e) {
+        const IV3 &P = V[e], &Q = V[(e + 1) % 3], &R = V[(e + 2) % 3];
+        const IV3 m = icross(isub(P, L), isub(Q, L));
+        const Interval inner = idot(m, isub(R, L)), box = idot(m, isub(E, L));
+        if ((inner.lo() > 0 && box.hi() < 0) || (inner.hi() < 0 && box.lo() > 0)) return false;
+    }
+    return true;
 }
 
 } // namespace seamless

@@ -48,4 +48,14 @@ bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q
 // true: some ray may meet it.
 bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3);
 
+// A cluster from one point (a light) to a box of end points, q in [0, 1]:
+// its rays' points are the convex hull of the apex and the box. false when a
+// plane certainly separates that hull from the triangle: the triangle's own
+// plane (apex and box strictly on one side), or a side plane of the pyramid
+// from the apex over the triangle (the box strictly outside it, the apex off
+// the triangle's plane). Exact
+// predicates evaluated in interval arithmetic; tighter than
+// may_hit_triangle for these clusters, whose direction box is wide.
+bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2, Vec3 T3);
+
 } // namespace seamless

@@ -82,8 +82,6 @@ struct SceneLimits {
     double min_extent = 0x1p-200;
 };
 
-
-
 // Reads a scene file and the models it names (paths relative to the scene's
 // folder). Throws InputError naming the file and the field on any defect.
 Scene load_scene(const std::filesystem::path& path, const SceneLimits& limits = {});

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/bezier_patch.h>
 
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
 namespace seamless {
 namespace {
 
@@ -59,6 +64,32 @@ HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t) {
     HPoint X, Xu, Xv;
     homogeneous_derivatives(b, s, t, X, Xu, Xv);
     return X;
+}
+
+void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out) {
+    assert(s >= 0 && s <= 1 && t >= 0 && t <= 1);
+    constexpr double u = 0x1p-53;
+    const double rs = 1.0 - s, rt = 1.0 - t;
+    const int levels = b.p + b.q;
+    for (int c = 0; c < dims; ++c) {
+        double M = 0, row[BezierPatch::kMaxOrder], col[BezierPatch::kMaxOrder];
+        for (int i = 0; i <= b.p; ++i) {
+            for (int j = 0; j <= b.q; ++j) {
+                row[j] = b.at(i, j)[c];
+                M = std::max(M, std::abs(row[j]));
+            }
+            for (int k = 1; k <= b.q; ++k)
+                for (int j = 0; j <= b.q - k; ++j) row[j] = rt * row[j] + t * row[j + 1];
+            col[i] = row[0];
+        }
+        for (int k = 1; k <= b.p; ++k)
+            for (int i = 0; i <= b.p - k; ++i) col[i] = rs * col[i] + s * col[i + 1];
+        const double v = col[0];
+        double e = 4 * u * levels * M + 3 * levels * std::numeric_limits<double>::denorm_min();
+        e = next_up(next_up(e));
+        out[c] = std::isfinite(v) && std::isfinite(e) ? Interval(next_down(v - e), next_up(v + e))
+                                                      : Interval::entire();
+    }
 }
 
 SurfacePoint evaluate(const BezierPatch& b, double s, double t) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <seamless/base/vec.h>
+#include <seamless/interval/interval.h>
 #include <seamless/spline/bspline_surface.h>
 
 #include <array>
@@ -15,10 +16,10 @@ namespace seamless {
 struct BezierPatch {
     static constexpr int kMaxOrder = kMaxDegree + 1;
 
-    int p = 3, q = 3;       // degrees in u and v
-    bool rational = false;  // some weight differs from 1
-    int surface = -1;       // index of the source B-spline surface in its model
-    double u0 = 0, u1 = 1;  // parameter rectangle on the source surface
+    int p = 3, q = 3;      // degrees in u and v
+    bool rational = false; // some weight differs from 1
+    int surface = -1;      // index of the source B-spline surface in its model
+    double u0 = 0, u1 = 1; // parameter rectangle on the source surface
     double v0 = 0, v1 = 1;
     std::array<HPoint, kMaxOrder * kMaxOrder> cp{}; // (i, j) at i * kMaxOrder + j
 
@@ -28,10 +29,14 @@ struct BezierPatch {
     // Corner points P(0,0), P(1,0), P(1,1), P(0,1) in local (s, t).
     Vec3 corner(int c) const {
         switch (c) {
-        case 0: return point(0, 0);
-        case 1: return point(p, 0);
-        case 2: return point(p, q);
-        default: return point(0, q);
+        case 0:
+            return point(0, 0);
+        case 1:
+            return point(p, 0);
+        case 2:
+            return point(p, q);
+        default:
+            return point(0, q);
         }
     }
     // Source-surface parameters of local (s, t) in [0,1]^2.
@@ -44,6 +49,16 @@ struct BezierPatch {
 SurfacePoint evaluate(const BezierPatch& b, double s, double t);
 // Homogeneous point X(s,t) = sum B_i(s) B_j(t) cp_ij.
 HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t);
+
+// Enclosures of the homogeneous coordinates 0..dims-1 of X(s, t), s, t in
+// [0, 1], by de Casteljau's algorithm in doubles with a proven error bound:
+// each level is a convex combination (1 - t) a + t b whose computed value is
+// within 3.1u ((1 - t)|a| + t|b|) <= 3.1u M of the exact one (u = 2^-53, M =
+// max |b_ij| of the coordinate; fl(1 - t) is exact or within u (1 - t)), and
+// earlier errors pass through with convex weights, so after p + q levels the
+// error is below 4u (p + q) M, plus 3 (p + q) denorm_min for underflow. Far
+// cheaper than interval Horner on the power form at a point.
+void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out);
 
 // De Casteljau subdivision at local parameter s (in u) or t (in v); the halves
 // keep the source surface and their part of the parameter rectangle.

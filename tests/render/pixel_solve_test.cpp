@@ -79,8 +79,8 @@ TEST_CASE("Certified Newton agrees with the covering method", "[pixel_solve]") {
             a = P.x / P.z;
             b = P.y / P.z;
         }
-        ClusterSystem sys;
-        cluster_system(pp.forms, Interval(a), Interval(b), sys);
+        ClusterSystem storage;
+        RaySystem sys(pp, a, b, storage);
         RenderStats st;
         ParamBox hb;
         Interval q;
@@ -113,10 +113,10 @@ TEST_CASE("Certified Newton with a sub-screen's Jacobian: no hit lost, none inve
         }
         // The sub-screen: a few pixels around the ray.
         const double d = 0.002 * S(rng);
-        ClusterSystem sub, sys;
+        ClusterSystem sub, storage;
         cluster_system(pp.forms, Interval(a - d, a + d), Interval(b - d, b + d), sub);
         const MarkJacobian J = mark_jacobian(sub, box);
-        cluster_system(pp.forms, Interval(a), Interval(b), sys);
+        RaySystem sys(pp, a, b, storage);
         RenderStats st;
         ParamBox hb, rest;
         Interval q;

@@ -2,6 +2,7 @@
 // Theorem 10 narrowing and the cluster certificate never lose a hit: every ray
 // of a sampled cluster that meets the patch does so inside the narrowed box,
 // and a certified box holds exactly one hit of every ray.
+#include <seamless/render/mark.h>
 #include <seamless/render/primary_cluster.h>
 #include <seamless/spline/ray_patch.h>
 
@@ -59,4 +60,59 @@ TEST_CASE("Theorem 10 narrowing keeps every hit of the cluster", "[primary_clust
     }
     CHECK(narrowed > 100);
     CHECK(certified > 100);
+}
+
+TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[primary_cluster]") {
+    std::mt19937 rng(33);
+    std::uniform_real_distribution<double> U(-0.15, 0.15), W(0.0, 0.01);
+    int narrowed = 0, separated = 0;
+    for (int n = 0; n < 200; ++n) {
+        const BezierPatch b = dome(rng);
+        const PatchForms f = patch_forms(b);
+        const SubpatchShape sh = subpatch_shape(b);
+        SubpatchArena arena(sh.size());
+        control_coefficients(b, sh, arena.data());
+        const double a0 = U(rng), b0 = U(rng);
+        const Interval a(a0, a0 + W(rng)), bb(b0, b0 + W(rng));
+        Mark m{0, ParamBox{}, IVec3{}, 0};
+        // A start box of a quarter or the whole patch, as a child sub-screen's mark.
+        if (n % 2) {
+            Mark half[2];
+            bisect_mark(arena, sh, m, n % 4 == 1 ? 0 : 1, half);
+            m = half[n % 3 == 0 ? 0 : 1];
+        }
+        const ParamBox start = m.box;
+        IMat<2> D;
+        const bool meets = narrow_mark(arena, sh, a, bb, m, &D);
+        narrowed += meets && m.box.s.width() * m.box.t.width() < 0.25 * start.s.width();
+        Mark parts[2];
+        int np = 0;
+        if (meets) {
+            update_enclosures(arena, sh, m);
+            np = separate_mark(arena, sh, a, bb, m, parts);
+            separated += np == 2;
+        }
+        std::uniform_real_distribution<double> A(a.lo(), a.hi()), B(bb.lo(), bb.hi());
+        for (int k = 0; k < 20; ++k) {
+            const double ra = A(rng), rb = B(rng);
+            const Ray ray{{0, 0, 0}, {ra, rb, 1}};
+            for (const RayPatchHit& h : intersect(f, ray)) {
+                if (!h.unique) continue;
+                const double s = h.box.s.mid(), t = h.box.t.mid();
+                if (!start.s.contains(s) || !start.t.contains(t)) continue;
+                CHECK(meets);
+                CHECK(m.box.s.contains(s));
+                CHECK(m.box.t.contains(t));
+                CHECK(m.pa.contains(ra));
+                CHECK(m.pb.contains(rb));
+                CHECK(m.hull[2].contains(h.q.mid()));
+                bool in_part = false;
+                for (int i = 0; i < np; ++i)
+                    in_part = in_part || (parts[i].box.s.contains(s) && parts[i].box.t.contains(t));
+                CHECK(in_part);
+            }
+        }
+    }
+    CHECK(narrowed > 50);
+    INFO("separated " << separated);
 }

@@ -152,3 +152,42 @@ TEST_CASE("A covered cluster has every ray meeting the triangle", "[ray_cluster]
     }
     CHECK(covered > 200);
 }
+
+TEST_CASE("A light's pyramid declared to miss a triangle has no segment that hits it",
+          "[ray_cluster]") {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.3);
+    int misses = 0, hits_seen = 0, tighter = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const Vec3 a{U(rng), U(rng), U(rng)}, b{U(rng), U(rng), U(rng)}, c{U(rng), U(rng), U(rng)};
+        const Vec3 L{U(rng) * 2, U(rng) * 2, 2 + U(rng)};
+        const Vec3 mid{U(rng), U(rng), U(rng) - 1};
+        IVec<3> ends;
+        for (int i = 0; i < 3; ++i) {
+            const double w = W(rng);
+            ends[i] = Interval(mid[i] - w, mid[i] + w);
+        }
+        const bool may = pyramid_may_meet_triangle(L, ends, a, b, c);
+        misses += !may;
+        RayCluster cl;
+        for (int i = 0; i < 3; ++i) {
+            cl.origin[i] = Interval(L[i]);
+            cl.direction[i] = ends[i] - Interval(L[i]);
+        }
+        tighter += !may && may_hit_triangle(cl, a, b, c);
+        bool any = false;
+        for (int k = 0; k < 300 && !any; ++k) {
+            Vec3 e;
+            for (int i = 0; i < 3; ++i) {
+                std::uniform_real_distribution<double> pe(ends[i].lo(), ends[i].hi());
+                e[i] = pe(rng);
+            }
+            any = segment_hits(L, e - L, 0.0, 1.0, a, b, c);
+        }
+        hits_seen += any;
+        if (any) CHECK(may);
+    }
+    CHECK(misses > 300);
+    CHECK(hits_seen > 300);
+    CHECK(tighter > 0); // it decides clusters that Proposition 11's test leaves open
+}

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/render/mark.h>
+#include <seamless/render/primary_cluster.h>
+
+namespace seamless {
+namespace {
+
+const Interval kUnit(0.0, 1.0);
+
+Interval& side(ParamBox& b, int dir) {
+    return dir == 0 ? b.s : b.t;
+}
+Interval side(const ParamBox& b, int dir) {
+    return dir == 0 ? b.s : b.t;
+}
+
+// Global parameters D.lo + (D.hi - D.lo) u of a local range u, outward.
+Interval to_global(Interval D, Interval u) {
+    if (u.lo() == 0 && u.hi() == 1) return D;
+    const Interval w = Interval(D.hi()) - Interval(D.lo());
+    const double lo = (Interval(D.lo()) + w * Interval(u.lo())).lo();
+    const double hi = (Interval(D.lo()) + w * Interval(u.hi())).hi();
+    return intersect(Interval(lo, hi), D);
+}
+
+// The local ends of T within D, as intervals holding the exact ones; false
+// when they cannot be enclosed narrowly (a box too thin for its position).
+bool to_local(Interval D, Interval T, Interval& u0, Interval& u1) {
+    const Interval w = Interval(D.hi()) - Interval(D.lo());
+    if (!(w.lo() > 0)) return false;
+    u0 = T.lo() == D.lo() ? Interval(0.0)
+                          : intersect((Interval(T.lo()) - Interval(D.lo())) / w, kUnit);
+    u1 = T.hi() == D.hi() ? Interval(1.0)
+                          : intersect((Interval(T.hi()) - Interval(D.lo())) / w, kUnit);
+    return !u0.is_empty() && !u1.is_empty() && u0.width() < 1e-6 && u1.width() < 1e-6;
+}
+
+// A copy of m's subpatch restricted to `to` (a sub-box of m.box), appended to
+// the arena; directions whose local ends cannot be enclosed narrowly keep
+// m.box's range. Returns the box the new coefficients belong to.
+ParamBox restrict_copy(SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
+                       size_t& out) {
+    out = arena.size();
+    arena.resize(out + sh.size());
+    std::copy_n(arena.begin() + static_cast<std::ptrdiff_t>(m.coef), sh.size(),
+                arena.begin() + static_cast<std::ptrdiff_t>(out));
+    for (int dir = 0; dir < 2; ++dir) {
+        const Interval D = side(m.box, dir), T = side(to, dir);
+        if (T.lo() == D.lo() && T.hi() == D.hi()) continue;
+        Interval u0, u1;
+        if (!to_local(D, T, u0, u1)) {
+            side(to, dir) = D;
+            continue;
+        }
+        restrict_subpatch(&arena[out], sh, dir, u0, u1);
+    }
+    return to;
+}
+
+double area(const ParamBox& b) {
+    return b.s.width() * b.t.width();
+}
+
+} // namespace
+
+void update_enclosures(const SubpatchArena& arena, SubpatchShape sh, Mark& m) {
+    const Interval* c = &arena[m.coef];
+    m.hull = subpatch_hull(c, sh);
+    if (!subpatch_projection(c, sh, m.pa, m.pb)) m.pa = m.pb = Interval::entire();
+}
+
+bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, Mark& m,
+                 IMat<2>* D) {
+    for (int pass = 0; pass < 3; ++pass) {
+        Interval u, v;
+        if (!clip_cluster(&arena[m.coef], sh, a, b, u, v, D)) return false;
+        if (u.lo() == 0 && u.hi() == 1 && v.lo() == 0 && v.hi() == 1) return true;
+        const double before = area(m.box);
+        size_t out;
+        const ParamBox got = restrict_copy(
+            arena, sh, m, ParamBox{to_global(m.box.s, u), to_global(m.box.t, v)}, out);
+        m.box = got;
+        m.coef = out;
+        if (area(got) > 0.8 * before) return true;
+    }
+    return true;
+}
+
+bool clip_box(const SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, const Mark& m,
+              ParamBox& box) {
+    Interval u, v;
+    if (!clip_cluster(&arena[m.coef], sh, a, b, u, v)) return false;
+    box = {to_global(m.box.s, u), to_global(m.box.t, v)};
+    return true;
+}
+
+void bisect_mark(SubpatchArena& arena, SubpatchShape sh, const Mark& m, int dir, Mark out[2]) {
+    const Interval D = side(m.box, dir);
+    const double mid = D.mid();
+    out[0] = out[1] = m;
+    ParamBox lo = m.box, hi = m.box;
+    side(lo, dir) = Interval(D.lo(), mid);
+    side(hi, dir) = Interval(mid, D.hi());
+    out[0].box = restrict_copy(arena, sh, m, lo, out[0].coef);
+    out[1].box = restrict_copy(arena, sh, m, hi, out[1].coef);
+}
+
+int separate_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, const Mark& m,
+                  Mark out[2]) {
+    for (int dir = 0; dir < 2; ++dir) {
+        const Interval D = side(m.box, dir);
+        if (!(D.width() > 1e-9)) continue;
+        const size_t mark_end = arena.size();
+        Mark half[2];
+        bisect_mark(arena, sh, m, dir, half);
+        // The far edge of the lower half is the midline.
+        bool apart = false;
+        for (int k = 0; k < 2 && !apart; ++k)
+            apart = !edge_range(&arena[half[0].coef], sh, a, b, k, dir, true).contains(0.0);
+        if (!apart || side(half[0].box, dir).hi() != side(half[1].box, dir).lo()) {
+            arena.resize(mark_end);
+            continue;
+        }
+        int n = 0;
+        for (Mark& h : half) {
+            if (!narrow_mark(arena, sh, a, b, h, nullptr)) continue;
+            update_enclosures(arena, sh, h);
+            out[n++] = h;
+        }
+        return n;
+    }
+    out[0] = m;
+    return 1;
+}
+
+} // namespace seamless

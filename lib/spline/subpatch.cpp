@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/spline/subpatch.h>
+
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace seamless {
+namespace {
+
+// De Casteljau steps are convex combinations (1 - u) c_i + u c_{i+1}: each
+// coefficient enters once, so widths do not grow from step to step (the form
+// c_i + u (c_{i+1} - c_i) would double them at every level).
+//
+// w c for w >= 0 (the de Casteljau weights): two products instead of the
+// sign cases of both factors; the general product where a bound is infinite.
+inline Interval weight_times(Interval w, Interval c) {
+    const double lo = c.lo() >= 0 ? w.lo() * c.lo() : w.hi() * c.lo();
+    const double hi = c.hi() >= 0 ? w.hi() * c.hi() : w.lo() * c.hi();
+    if (!(std::abs(lo) <= std::numeric_limits<double>::max() &&
+          std::abs(hi) <= std::numeric_limits<double>::max()))
+        return w * c;
+    return {next_down(lo), next_up(hi)};
+}
+
+// One row of n + 1 coefficients with stride `stride`: the left part of a split
+// at u (domain [0, u]), in place. After pass k, position i >= k holds
+// b_{i-k}^{(k)} of the de Casteljau triangle, so position k keeps b_0^{(k)}.
+void left_part(Interval* c, int n, int stride, Interval u) {
+    const Interval v = intersect(Interval(1.0) - u, Interval(0.0, 1.0)); // u in [0, 1]
+    for (int k = 1; k <= n; ++k)
+        for (int i = n; i >= k; --i) {
+            Interval& ci = c[i * stride];
+            ci = weight_times(v, c[(i - 1) * stride]) + weight_times(u, ci);
+        }
+}
+// The right part of a split at u (domain [u, 1]), in place: position j keeps
+// b_j^{(n-j)}.
+void right_part(Interval* c, int n, int stride, Interval u) {
+    const Interval v = intersect(Interval(1.0) - u, Interval(0.0, 1.0)); // u in [0, 1]
+    for (int k = 1; k <= n; ++k)
+        for (int i = 0; i <= n - k; ++i) {
+            Interval& ci = c[i * stride];
+            ci = weight_times(v, ci) + weight_times(u, c[(i + 1) * stride]);
+        }
+}
+
+// Calls f(row pointer, n, stride) for every row of direction dir.
+template <class F> void for_rows(Interval* c, SubpatchShape sh, int dir, F f) {
+    for (int d = 0; d < sh.dim; ++d) {
+        if (dir == 0) {
+            for (int j = 0; j <= sh.q; ++j) f(c + sh.index(d, 0, j), sh.p, sh.q + 1);
+        } else {
+            for (int i = 0; i <= sh.p; ++i) f(c + sh.index(d, i, 0), sh.q, 1);
+        }
+    }
+}
+
+} // namespace
+
+SubpatchShape subpatch_shape(const BezierPatch& b) {
+    bool rational = b.rational;
+    for (int i = 0; i <= b.p && !rational; ++i)
+        for (int j = 0; j <= b.q; ++j) rational = rational || b.at(i, j).w != 1;
+    return {b.p, b.q, rational ? 4 : 3};
+}
+
+void control_coefficients(const BezierPatch& b, SubpatchShape sh, Interval* out) {
+    for (int d = 0; d < sh.dim; ++d)
+        for (int i = 0; i <= sh.p; ++i)
+            for (int j = 0; j <= sh.q; ++j) out[sh.index(d, i, j)] = Interval(b.at(i, j)[d]);
+}
+
+void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Interval u1) {
+    u0 = intersect(u0, Interval(0.0, 1.0)); // the exact ends lie in [0, 1]
+    u1 = intersect(u1, Interval(0.0, 1.0));
+    assert(!u0.is_empty() && !u1.is_empty());
+    const bool cut_hi = !(u1.is_thin() && u1.lo() == 1);
+    const bool cut_lo = !(u0.is_thin() && u0.lo() == 0);
+    if (cut_hi) for_rows(c, sh, dir, [&](Interval* r, int n, int st) { left_part(r, n, st, u1); });
+    if (!cut_lo) return;
+    // Within [0, u1] the new lower end is at u0 / u1 (u1 >= u0 > 0 here).
+    Interval r = cut_hi ? u0 / u1 : u0;
+    r = intersect(r, Interval(0.0, 1.0));
+    for_rows(c, sh, dir, [&](Interval* row, int n, int st) { right_part(row, n, st, r); });
+}
+
+IVec<3> subpatch_hull(const Interval* c, SubpatchShape sh) {
+    IVec<3> h = IVec<3>::empty();
+    if (sh.dim == 4)
+        for (int i = 0; i <= sh.p; ++i)
+            for (int j = 0; j <= sh.q; ++j)
+                if (!(c[sh.index(3, i, j)].lo() > 0)) {
+                    for (int d = 0; d < 3; ++d) h[d] = Interval::entire();
+                    return h;
+                }
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j)
+            for (int d = 0; d < 3; ++d) {
+                Interval x = c[sh.index(d, i, j)];
+                if (sh.dim == 4) x = x / c[sh.index(3, i, j)];
+                h[d] = hull(h[d], x);
+            }
+    return h;
+}
+
+bool subpatch_projection(const Interval* c, SubpatchShape sh, Interval& a, Interval& b) {
+    a = b = Interval::empty();
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            const Interval z = c[sh.index(2, i, j)];
+            if (!(z.lo() > 0)) return false;
+            a = hull(a, c[sh.index(0, i, j)] / z);
+            b = hull(b, c[sh.index(1, i, j)] / z);
+        }
+    return true;
+}
+
+} // namespace seamless
