@@ -71,6 +71,8 @@ TriangleScene build_triangle_scene(const Scene& scene) {
     // patches, TRAY on the triangles' corner normals): keep every surface's side.
     TessellationOptions to;
     to.orient_surfaces = false;
+    // Nothing here reads the certified bound of the triangles (error_bound.h).
+    to.certify = false;
     ts.tess = tessellate(scene.model, to);
     const TriangleMesh& mesh = ts.tess.mesh;
     const int F = mesh.triangle_count();
