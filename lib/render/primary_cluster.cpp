@@ -35,7 +35,8 @@ void primary_rows(const PowerForm& f, Interval a, Interval b, PowerForm& g) {
 // roundings of numbers below n <= 9, so |error| < (6n + 10) u < 1e-14; the
 // bounds are widened by 1e-13 and clamped to [i / n, j / n] (enclosed by
 // interval division), where the crossing lies. Where y_i - y_j could be subnormal (relative bounds
-// fail) the whole [i / n, j / n] is taken.
+// fail) or overflows (outside the scene limits, docs/formats.md) the whole
+// [i / n, j / n] is taken.
 Interval clip_columns(const Interval* C, int n) {
     bool above = true, below = true;
     for (int i = 0; i <= n; ++i) {
@@ -61,7 +62,7 @@ Interval clip_columns(const Interval* C, int n) {
                 for (double yj : {C[j].lo(), C[j].hi()}) {
                     if (!((yi > 0 && yj < 0) || (yi < 0 && yj > 0))) continue;
                     const double d = yi - yj;
-                    if (!(std::abs(d) > 0x1p-1000)) {
+                    if (!(std::abs(d) > 0x1p-1000 && std::abs(d) < 0x1p1000)) {
                         add(xi_lo, xj_hi);
                         continue;
                     }
