@@ -21,17 +21,35 @@ BezierPatch dome(std::mt19937& rng) {
     return test::random_dome(rng, 0.8);
 }
 
+// A cluster of primary rays: screen intervals [a] x [b] of width up to 0.01.
+void random_cluster(std::mt19937& rng, Interval& a, Interval& b) {
+    std::uniform_real_distribution<double> U(-0.15, 0.15), W(0.0, 0.01);
+    const double a0 = U(rng), b0 = U(rng);
+    a = Interval(a0, a0 + W(rng));
+    b = Interval(b0, b0 + W(rng));
+}
+
+// 20 random rays of the cluster: ray(ra, rb, hits) with every hit of the ray
+// through (ra, rb).
+template <class RayHits>
+void for_sampled_rays(std::mt19937& rng, const PatchForms& f, Interval a, Interval b, RayHits ray) {
+    std::uniform_real_distribution<double> A(a.lo(), a.hi()), B(b.lo(), b.hi());
+    for (int k = 0; k < 20; ++k) {
+        const double ra = A(rng), rb = B(rng);
+        ray(ra, rb, intersect(f, Ray{{0, 0, 0}, {ra, rb, 1}}));
+    }
+}
+
 } // namespace
 
 TEST_CASE("Theorem 10 narrowing keeps every hit of the cluster", "[primary_cluster]") {
     std::mt19937 rng(21);
-    std::uniform_real_distribution<double> U(-0.15, 0.15), W(0.0, 0.01);
     int certified = 0, narrowed = 0;
     for (int n = 0; n < 200; ++n) {
         const BezierPatch b = dome(rng);
         const PatchForms f = patch_forms(b);
-        const double a0 = U(rng), b0 = U(rng);
-        const Interval a(a0, a0 + W(rng)), bb(b0, b0 + W(rng));
+        Interval a, bb;
+        random_cluster(rng, a, bb);
         ClusterSystem sys;
         cluster_system(f, a, bb, sys);
         ParamBox box;
@@ -40,10 +58,7 @@ TEST_CASE("Theorem 10 narrowing keeps every hit of the cluster", "[primary_clust
         ParamBox cbox = box;
         const bool cert = meets && certify_cluster(sys, cbox);
         certified += cert;
-        std::uniform_real_distribution<double> A(a.lo(), a.hi()), B(bb.lo(), bb.hi());
-        for (int k = 0; k < 20; ++k) {
-            const Ray ray{{0, 0, 0}, {A(rng), B(rng), 1}};
-            const auto hits = intersect(f, ray);
+        for_sampled_rays(rng, f, a, bb, [&](double, double, const auto& hits) {
             for (const RayPatchHit& h : hits) {
                 if (!h.unique) continue;
                 const double s = h.box.s.mid(), t = h.box.t.mid();
@@ -56,7 +71,7 @@ TEST_CASE("Theorem 10 narrowing keeps every hit of the cluster", "[primary_clust
                 }
             }
             if (cert) CHECK(hits.size() == 1);
-        }
+        });
     }
     CHECK(narrowed > 100);
     CHECK(certified > 100);
@@ -64,7 +79,6 @@ TEST_CASE("Theorem 10 narrowing keeps every hit of the cluster", "[primary_clust
 
 TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[primary_cluster]") {
     std::mt19937 rng(33);
-    std::uniform_real_distribution<double> U(-0.15, 0.15), W(0.0, 0.01);
     int narrowed = 0, separated = 0;
     for (int n = 0; n < 200; ++n) {
         const BezierPatch b = dome(rng);
@@ -72,8 +86,8 @@ TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[prima
         const SubpatchShape sh = subpatch_shape(b);
         SubpatchArena arena(sh.size());
         control_coefficients(b, sh, arena.data());
-        const double a0 = U(rng), b0 = U(rng);
-        const Interval a(a0, a0 + W(rng)), bb(b0, b0 + W(rng));
+        Interval a, bb;
+        random_cluster(rng, a, bb);
         Mark m{0, ParamBox{}, IVec3{}, 0};
         // A start box of a quarter or the whole patch, as a child sub-screen's mark.
         if (n % 2) {
@@ -92,11 +106,8 @@ TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[prima
             np = separate_mark(arena, sh, a, bb, m, parts);
             separated += np == 2;
         }
-        std::uniform_real_distribution<double> A(a.lo(), a.hi()), B(bb.lo(), bb.hi());
-        for (int k = 0; k < 20; ++k) {
-            const double ra = A(rng), rb = B(rng);
-            const Ray ray{{0, 0, 0}, {ra, rb, 1}};
-            for (const RayPatchHit& h : intersect(f, ray)) {
+        for_sampled_rays(rng, f, a, bb, [&](double ra, double rb, const auto& hits) {
+            for (const RayPatchHit& h : hits) {
                 if (!h.unique) continue;
                 const double s = h.box.s.mid(), t = h.box.t.mid();
                 if (!start.s.contains(s) || !start.t.contains(t)) continue;
@@ -111,7 +122,7 @@ TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[prima
                     in_part = in_part || (parts[i].box.s.contains(s) && parts[i].box.t.contains(t));
                 CHECK(in_part);
             }
-        }
+        });
     }
     CHECK(narrowed > 50);
     INFO("separated " << separated);
