@@ -2,14 +2,14 @@
 # SPDX-License-Identifier: MIT
 # Installs what is missing, builds (Release) and runs every test through ctest;
 # then one clang build with ASan+UBSan and assertions on (build-san/) serves
-# (a) the fast tests and (b) every libFuzzer target but STEP/IGES, each 20 s on
+# (a) the fast tests and (b) every libFuzzer target but STEP/IGES, each 10 s on
 # its seed corpus. Any failure, sanitizer report or fuzzer crash fails the
 # script. The last line is "N passed, N failed" over all parts.
 #
 # Time: .ci/run must stay under 20 minutes on 2 cores. Each part prints
 # "test.sh: <part> took N s (CPU M s; load ...)"; the measured parts and the
 # estimate for an idle machine are in docs/fuzzing.md ("CI budget"). The fuzz
-# smoke run is 9 targets x 20 s, two at a time (about 100 s).
+# smoke run is 9 targets x 10 s, two at a time (about 55 s).
 set -euo pipefail
 # scripts/setup.sh installs every tool the tests need, so a test that finds
 # one missing fails here instead of warning (the glTF validator test reads CI).
@@ -112,10 +112,10 @@ sanitize_part() {
     count_ctest ctest.log
     report_time "sanitizer tests"
 
-    # (b) fuzz smoke run: each target SEAMLESS_FUZZ_SECONDS (20) on a scratch copy of its
+    # (b) fuzz smoke run: each target SEAMLESS_FUZZ_SECONDS (10) on a scratch copy of its
     # committed corpus (new inputs stay out of the source tree), two at a time.
     start_part
-    fuzz_seconds=${SEAMLESS_FUZZ_SECONDS:-20}
+    fuzz_seconds=${SEAMLESS_FUZZ_SECONDS:-10}
     cd "$here/build-san/fuzz"
     run_fuzz() {
       local r=$1
