@@ -8,6 +8,7 @@
 //
 //   bench_render_embree SCENE [--size WxH] [--levels L] [--threads N] [-o OUT.png]
 // prints one JSON line: seconds (precalculation included), precalc_seconds.
+#include <seamless/base/error.h>
 #include <seamless/render/camera.h>
 #include <seamless/render/image.h>
 #include <seamless/render/parallel.h>
@@ -40,27 +41,44 @@ void skip_own_patch(const RTCFilterFunctionNArguments* args) {
     if (c->triangle_patch[prim] == c->skip_patch) args->valid[0] = 0;
 }
 
-} // namespace
+int usage(const char* argv0, int status) {
+    std::fprintf(status ? stderr : stdout,
+                 "usage: %s SCENE [--size WxH] [--levels L] [--threads N] [-o OUT.png]\n"
+                 "Traces SCENE's tessellation with Embree 3, one primary ray per pixel and one\n"
+                 "shadow ray per light (TRAY's shading, no secondary rays); prints JSON timings.\n",
+                 argv0);
+    return status;
+}
 
-int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: %s SCENE [--size WxH] [--levels L] [--threads N] [-o OUT]\n",
-                     argv[0]);
-        return 2;
-    }
+int run(int argc, char** argv) {
+    if (argc < 2) return usage(argv[0], 2);
+    for (int i = 1; i < argc; ++i)
+        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
+            return usage(argv[0], 0);
     const Scene scene = load_scene(argv[1]);
     int W = scene.camera.width, H = scene.camera.height, L = scene.levels, threads = 0;
     std::string out;
-    for (int i = 2; i + 1 < argc; i += 2) {
+    for (int i = 2; i < argc; i += 2) {
         const std::string a = argv[i];
+        if (i + 1 >= argc) {
+            std::fprintf(stderr, "%s: option %s needs a value\n", argv[0], a.c_str());
+            return 2;
+        }
+        bool ok = true;
         if (a == "--size")
-            std::sscanf(argv[i + 1], "%dx%d", &W, &H);
+            ok = std::sscanf(argv[i + 1], "%dx%d", &W, &H) == 2 && W > 0 && H > 0;
         else if (a == "--levels")
-            L = std::atoi(argv[i + 1]);
+            ok = (L = std::atoi(argv[i + 1])) >= 2;
         else if (a == "--threads")
-            threads = std::atoi(argv[i + 1]);
+            ok = (threads = std::atoi(argv[i + 1])) >= 0;
         else if (a == "-o")
             out = argv[i + 1];
+        else
+            return usage(argv[0], 2);
+        if (!ok) {
+            std::fprintf(stderr, "%s: bad value '%s' for %s\n", argv[0], argv[i + 1], a.c_str());
+            return 2;
+        }
     }
     const auto t0 = std::chrono::steady_clock::now();
     Camera cam = scene.camera;
@@ -94,7 +112,6 @@ int main(int argc, char** argv) {
     Image image(W, H, L);
     for_each_item(H, threads, [&](int y) {
         Scene lighting; // per row: the lights that reach the hit point
-        lighting.ambient = scene.ambient;
         for (int x = 0; x < W; ++x) {
             const Vec3 d = frame.ray_direction(frame.screen_a(x + 0.5), frame.screen_b(y + 0.5));
             RTCIntersectContext ctx;
@@ -128,30 +145,24 @@ int main(int argc, char** argv) {
                 const Vec3 view = -normalize(d);
                 const Vec3 Nf = dot(N, view) < 0 ? -N : N;
                 const Material& m = scene.materials[ts.triangle_material[f]];
-                lighting.lights.clear();
-                if (m.diffuse != 0 || m.specular != 0)
-                    for (const Light& light : scene.lights) {
-                        if (!light.on()) continue;
-                        const Vec3 Ld = light.position - P;
-                        if (!(dot(Nf, Ld) > 0)) continue;
-                        const double dist = norm(Ld);
-                        ShadowContext sc;
-                        rtcInitIntersectContext(&sc.context);
-                        sc.triangle_patch = ts.triangle_patch.data();
-                        sc.skip_patch = ts.triangle_patch[f];
-                        RTCRay r{};
-                        r.org_x = static_cast<float>(P.x);
-                        r.org_y = static_cast<float>(P.y);
-                        r.org_z = static_cast<float>(P.z);
-                        r.dir_x = static_cast<float>(Ld.x / dist);
-                        r.dir_y = static_cast<float>(Ld.y / dist);
-                        r.dir_z = static_cast<float>(Ld.z / dist);
-                        r.tnear = static_cast<float>(ts.ray_epsilon);
-                        r.tfar = static_cast<float>(dist);
-                        r.mask = ~0u;
-                        rtcOccluded1(rs, &sc.context, &r);
-                        if (r.tfar >= 0) lighting.lights.push_back(light); // not occluded
-                    }
+                lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist) {
+                    ShadowContext sc;
+                    rtcInitIntersectContext(&sc.context);
+                    sc.triangle_patch = ts.triangle_patch.data();
+                    sc.skip_patch = ts.triangle_patch[f];
+                    RTCRay r{};
+                    r.org_x = static_cast<float>(P.x);
+                    r.org_y = static_cast<float>(P.y);
+                    r.org_z = static_cast<float>(P.z);
+                    r.dir_x = static_cast<float>(dir.x);
+                    r.dir_y = static_cast<float>(dir.y);
+                    r.dir_z = static_cast<float>(dir.z);
+                    r.tnear = static_cast<float>(ts.ray_epsilon);
+                    r.tfar = static_cast<float>(dist);
+                    r.mask = ~0u;
+                    rtcOccluded1(rs, &sc.context, &r);
+                    return r.tfar < 0; // Embree sets tfar to -inf when occluded
+                });
                 I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);
                 for (double& c : I) c = clamp01(c);
             }
@@ -169,4 +180,14 @@ int main(int argc, char** argv) {
                 "\"triangles\": %d}\n",
                 seconds, precalc, mesh.triangle_count());
     return 0;
+}
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
+    }
 }

@@ -150,23 +150,13 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
     const double cos_v = dot(N, view);
     const Vec3 Nf = cos_v < 0 ? -N : N; // towards the viewer (surfaces have two sides)
 
-    // Step 2: the lights that reach P. A light behind the surface adds nothing
-    // to shade() and needs no shadow ray; neither does any light when the
-    // material has no diffuse or specular term. The lighting scene is a
-    // per-thread scratch, so the hot loop does not allocate, and it is done
+    // Step 2: the lights that reach P (lights_reaching). The lighting scene is
+    // a per-thread scratch, so the hot loop does not allocate, and it is done
     // with before the recursion below reuses it.
     thread_local Scene lighting;
-    lighting.ambient = scene.ambient;
-    lighting.lights.clear();
-    if (m.diffuse != 0 || m.specular != 0)
-        for (const Light& light : scene.lights) {
-            if (!light.on()) continue;
-            const Vec3 L = light.position - P;
-            if (!(dot(Nf, L) > 0)) continue;
-            const double dist = norm(L);
-            if (!any_hit(ts, P, L / dist, ts.ray_epsilon, dist, patch, tests))
-                lighting.lights.push_back(light);
-        }
+    lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist) {
+        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests);
+    });
     std::array<double, 3> I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);
 
     // Steps 3-4: reflected and refracted rays, up to the maximum recursion level.

@@ -59,6 +59,27 @@ bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, d
 bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
              int skip_patch, long long* tests = nullptr);
 
+// SHADE step 2 for one ray: into `lighting` (its ambient and the lights that
+// reach P), every light that is on, in front of the surface (Nf: the normal
+// turned towards the viewer) and not blocked: blocked(dir, dist) says whether
+// the unit-direction ray from P meets something within dist. No shadow ray at
+// all when the material has no diffuse or specular term. One home for TRAY's
+// rule, so the benchmark's Embree renderer shades exactly as TRAY does.
+template <class Blocked>
+void lights_reaching(const Scene& scene, const Material& m, Vec3 P, Vec3 Nf, Scene& lighting,
+                     Blocked&& blocked) {
+    lighting.ambient = scene.ambient;
+    lighting.lights.clear();
+    if (m.diffuse == 0 && m.specular == 0) return;
+    for (const Light& light : scene.lights) {
+        if (!light.on()) continue;
+        const Vec3 L = light.position - P;
+        if (!(dot(Nf, L) > 0)) continue;
+        const double dist = norm(L);
+        if (!blocked(L / dist, dist)) lighting.lights.push_back(light);
+    }
+}
+
 // SHADE for one ray (section 7): intensity per channel in [0, 1] at surface
 // point P with unit normal N of material `material` on Bezier patch `patch`,
 // seen from unit direction `view` (from P towards the viewer), at recursion
