@@ -49,6 +49,32 @@ bool regular(const IMat<2>& A) {
     return true;
 }
 
+// Camera depth Z = X_2 / W over the small box of a certified hit, by the mean
+// value theorem about its centre c: X_k(x) - X_k(c) = grad X_k(xi) . (x - c)
+// with xi in [0,1]^2, where |d X_k / ds| <= sum_ij |coefficient of s^i t^j of
+// the power form of d X_k / ds| (|s^i t^j| <= 1), likewise along t. X_k(c) by
+// enclose_homogeneous; for a box of width ~1e-9 this is as narrow as a range
+// enclosure over it and far cheaper.
+Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit) {
+    const double cs = hit.s.mid(), ct = hit.t.mid();
+    const int dims = pp.forms.rational ? 4 : 3;
+    Interval X[4];
+    enclose_homogeneous(pp.patch, cs, ct, dims, X);
+    const Interval ds = hit.s - Interval(cs), dt = hit.t - Interval(ct);
+    auto bound = [](const PowerForm& f, int c) {
+        Interval m(0.0);
+        for (int i = 0; i <= f.p; ++i)
+            for (int j = 0; j <= f.q; ++j) m = m + Interval(f.at(c, i, j).mag());
+        return Interval(-m.hi(), m.hi());
+    };
+    auto over = [&](int c) {
+        return X[c] + bound(pp.forms.Xs, c) * ds + bound(pp.forms.Xt, c) * dt;
+    };
+    const Interval Z = over(2);
+    if (!pp.forms.rational) return Z;
+    return Z / intersect(over(3), pp.forms.w_hull);
+}
+
 } // namespace
 
 IVec<2> RaySystem::at(double s, double t) const {
@@ -76,7 +102,7 @@ MarkJacobian mark_jacobian(const IMat<2>& A) {
 
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
                                RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
-                               const MarkJacobian* given, ParamBox* rest) {
+                               const MarkJacobian* given, ParamBox* rest, const double* start) {
     const MarkJacobian J = given ? *given : mark_jacobian(sys.forms(), box);
     const IMat<2>& A = J.A;
     // At most one zero in box when A is regular: Newton in doubles from the
@@ -84,6 +110,10 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
     // (the ray passes beside the patch) stops early.
     if (J.regular) {
         double s = box.s.mid(), t = box.t.mid(), step = 1;
+        if (start) {
+            s = std::clamp(start[0], box.s.lo(), box.s.hi());
+            t = std::clamp(start[1], box.t.lo(), box.t.hi());
+        }
         int outside = 0;
         for (int it = 0; it < 16 && step > 1e-13 && outside < 3; ++it) {
             if (!newton_step(pp.patch, a, b, s, t, step)) break;
@@ -111,11 +141,7 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
             }
             if (hs.unique) {
                 hit = {hs.box[0], hs.box[1]};
-                // Depth: camera z = X_2 / W over the hit's box.
-                Interval Z = horner(pp.forms.X, 2, hit);
-                if (pp.forms.rational)
-                    Z = Z / intersect(horner(pp.forms.X, 3, hit), pp.forms.w_hull);
-                q = Z;
+                q = depth_over(pp, hit); // camera z = X_2 / W over the hit's box
                 return NewtonOutcome::hit;
             }
         }
@@ -132,21 +158,65 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
     return NewtonOutcome::undecided;
 }
 
+void SharedMarks::reset(const ProjectedScene& ps, const SubpatchArena& coefs, const Mark* marks,
+                        size_t n, Interval a, Interval b) {
+    ps_ = &ps;
+    coefs_ = &coefs;
+    marks_ = marks;
+    n_ = n;
+    a_ = a;
+    b_ = b;
+    jacobians_.resize(n);
+    start_.resize(n);
+    known_.assign(n, 0);
+    started_.assign(n, 0);
+}
+
+bool SharedMarks::clip(size_t k, double a, double b, ParamBox& box) const {
+    const Mark& m = marks_[k];
+    return clip_box(*coefs_, ps_->patches[m.patch].shape, Interval(a), Interval(b), m, box);
+}
+
+const MarkJacobian& SharedMarks::jacobian(size_t k) {
+    if (!known_[k]) {
+        // From the mark's subpatch: a hull of coefficient differences instead
+        // of four power-form ranges.
+        const Mark& m = marks_[k];
+        jacobians_[k] = mark_jacobian(
+            subpatch_jacobian(&(*coefs_)[m.coef], ps_->patches[m.patch].shape, m.box, a_, b_));
+        known_[k] = 1;
+    }
+    return jacobians_[k];
+}
+
 PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                     PixelScratch& scratch, RenderStats& st, const MarkJacobian* jacobians) {
+                     PixelScratch& scratch, RenderStats& st, SharedMarks* shared) {
     PixelHit best;
     double best_q = std::numeric_limits<double>::infinity(); // upper bound of the nearest depth
     const Ray ray = ProjectedScene::primary_ray(a, b);
-    ++st.primary_rays;
     // Nearest first; once a hit is found, marks that lie entirely beyond it are
     // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
     auto& order = scratch.order;
     order.clear();
-    for (size_t k = 0; k < n; ++k) order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
+    if (shared) {
+        marks = shared->marks();
+        n = shared->size();
+        for (size_t k = 0; k < n; ++k)
+            if (may_meet(marks[k], Interval(a), Interval(b)))
+                order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
+    } else {
+        for (size_t k = 0; k < n; ++k)
+            order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
+    }
+    if (order.empty()) return best;
     std::sort(order.begin(), order.end());
     for (const auto& [zlo, k] : order) {
         if (zlo > best_q) break;
         const ProjectedPatch& pp = ps.patches[marks[k].patch];
+        // The ray's own clip: a certain miss, or a smaller box to solve in.
+        ParamBox start_box = marks[k].box;
+        if (shared && !shared->clip(k, a, b, start_box)) continue;
+        ++best.candidates;
         ++st.pixel_patch_solves;
         // Certified Newton on the mark's box; where undecided, on its halves
         // (a covering method with the cheap test), and the full covering
@@ -155,24 +225,27 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
         RaySystem sys(pp, a, b, scratch.sys);
         auto& todo = scratch.boxes;
         todo.clear();
-        todo.push_back({marks[k].box, 0});
+        todo.push_back({start_box, 0});
         while (!todo.empty()) {
             const auto [box, depth] = todo.back();
             todo.pop_back();
             ParamBox hb;
             Interval q;
-            const MarkJacobian* J = depth == 0 && jacobians ? &jacobians[k] : nullptr;
+            const bool first = depth == 0 && shared;
+            const MarkJacobian* J = first ? &shared->jacobian(k) : nullptr;
             ParamBox rest = box;
-            const NewtonOutcome nc = newton_certified(pp, a, b, box, sys, hb, q, st, J, &rest);
+            const NewtonOutcome nc = newton_certified(pp, a, b, box, sys, hb, q, st, J, &rest,
+                                                      first ? shared->start(k) : nullptr);
             if (nc == NewtonOutcome::miss) {
                 ++st.pixel_newton_certified;
                 continue;
             }
             if (nc == NewtonOutcome::hit) {
                 ++st.pixel_newton_certified;
+                if (shared) shared->hit(k, hb.s.mid(), hb.t.mid());
                 if (!(q.hi() > 0)) continue;
                 if (best.patch < 0 || q.mid() < best.q)
-                    best = {marks[k].patch, hb.s.mid(), hb.t.mid(), q.mid()};
+                    best = {marks[k].patch, hb.s.mid(), hb.t.mid(), q.mid(), best.candidates};
                 best_q = std::min(best_q, q.hi());
                 continue;
             }
@@ -205,10 +278,12 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
             auto h = nearest_hit(scratch.hits, 0.0);
             if (!h || !(h->q.hi() > 0)) continue;
             if (best.patch < 0 || h->q.mid() < best.q)
-                best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid()};
+                best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid(),
+                        best.candidates};
             best_q = std::min(best_q, h->q.hi());
         }
     }
+    if (!shared || best.candidates > 0) ++st.primary_rays;
     return best;
 }
 
