@@ -100,52 +100,55 @@ MarkJacobian mark_jacobian(const IMat<2>& A) {
     return j;
 }
 
+bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
+                const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
+                const double* start) {
+    // At most one zero in box when A is regular: Newton in doubles from
+    // `start` or the box's centre, kept inside the box; a run that keeps
+    // leaving the box (the ray passes beside the patch) stops early.
+    if (!J.regular) return false;
+    const IMat<2>& A = J.A;
+    double s = box.s.mid(), t = box.t.mid(), step = 1;
+    if (start) {
+        s = std::clamp(start[0], box.s.lo(), box.s.hi());
+        t = std::clamp(start[1], box.t.lo(), box.t.hi());
+    }
+    int outside = 0;
+    for (int it = 0; it < 16 && step > 1e-13 && outside < 3; ++it) {
+        if (!newton_step(pp.patch, a, b, s, t, step)) break;
+        const double cs = std::clamp(s, box.s.lo(), box.s.hi());
+        const double ct = std::clamp(t, box.t.lo(), box.t.hi());
+        outside = (cs != s || ct != t) ? outside + 1 : 0;
+        s = cs;
+        t = ct;
+    }
+    if (!(step <= 1e-9)) return false;
+    // Epsilon inflation, then Theorem 6 iii on the small box Y: one zero
+    // in Y, so the only zero in box.
+    const double e = 1e-9;
+    const IVec<2> Y{{intersect(Interval(next_down(s - e), next_up(s + e)), box.s),
+                     intersect(Interval(next_down(t - e), next_up(t + e)), box.t)}};
+    const IVec<2> F = sys.at(s, t);
+    // A over the box bounds G' over Y too; only where it is too wide to
+    // certify is the Jacobian enclosed over Y itself.
+    HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
+    ++st.hs_steps;
+    if (!hs.unique) {
+        hs = hansen_sengupta<2>(jacobian(sys.forms(), ParamBox{Y[0], Y[1]}), F, Y, RVec<2>{s, t});
+        ++st.hs_steps;
+    }
+    if (!hs.unique) return false;
+    hit = {hs.box[0], hs.box[1]};
+    q = depth_over(pp, hit); // camera z = X_2 / W over the hit's box
+    return true;
+}
+
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
                                RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
                                const MarkJacobian* given, ParamBox* rest, const double* start) {
     const MarkJacobian J = given ? *given : mark_jacobian(sys.forms(), box);
     const IMat<2>& A = J.A;
-    // At most one zero in box when A is regular: Newton in doubles from the
-    // box's centre, kept inside the box; a run that keeps leaving the box
-    // (the ray passes beside the patch) stops early.
-    if (J.regular) {
-        double s = box.s.mid(), t = box.t.mid(), step = 1;
-        if (start) {
-            s = std::clamp(start[0], box.s.lo(), box.s.hi());
-            t = std::clamp(start[1], box.t.lo(), box.t.hi());
-        }
-        int outside = 0;
-        for (int it = 0; it < 16 && step > 1e-13 && outside < 3; ++it) {
-            if (!newton_step(pp.patch, a, b, s, t, step)) break;
-            const double cs = std::clamp(s, box.s.lo(), box.s.hi());
-            const double ct = std::clamp(t, box.t.lo(), box.t.hi());
-            outside = (cs != s || ct != t) ? outside + 1 : 0;
-            s = cs;
-            t = ct;
-        }
-        if (step <= 1e-9) {
-            // Epsilon inflation, then Theorem 6 iii on the small box Y: one zero
-            // in Y, so the only zero in box.
-            const double e = 1e-9;
-            const IVec<2> Y{{intersect(Interval(next_down(s - e), next_up(s + e)), box.s),
-                             intersect(Interval(next_down(t - e), next_up(t + e)), box.t)}};
-            const IVec<2> F = sys.at(s, t);
-            // A over the box bounds G' over Y too; only where it is too wide to
-            // certify is the Jacobian enclosed over Y itself.
-            HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
-            ++st.hs_steps;
-            if (!hs.unique) {
-                hs = hansen_sengupta<2>(jacobian(sys.forms(), ParamBox{Y[0], Y[1]}), F, Y,
-                                        RVec<2>{s, t});
-                ++st.hs_steps;
-            }
-            if (hs.unique) {
-                hit = {hs.box[0], hs.box[1]};
-                q = depth_over(pp, hit); // camera z = X_2 / W over the hit's box
-                return NewtonOutcome::hit;
-            }
-        }
-    }
+    if (newton_hit(pp, a, b, box, sys, J, hit, q, st, start)) return NewtonOutcome::hit;
     // No certified hit: one Hansen-Sengupta step over the whole box; empty
     // means no zero there (Theorem 6 ii).
     const IVec<2> X{{box.s, box.t}};
@@ -213,6 +216,29 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
     for (const auto& [zlo, k] : order) {
         if (zlo > best_q) break;
         const ProjectedPatch& pp = ps.patches[marks[k].patch];
+        RaySystem sys(pp, a, b, scratch.sys);
+        auto take = [&](int patch, const ParamBox& hb, Interval q) {
+            if (!(q.hi() > 0)) return;
+            if (best.patch < 0 || q.mid() < best.q)
+                best = {patch, hb.s.mid(), hb.t.mid(), q.mid(), best.candidates};
+            best_q = std::min(best_q, q.hi());
+        };
+        if (shared) {
+            // Newton on the mark's whole box first, from the previous pixel's
+            // hit: where the sub-screen's Jacobian is regular a certified hit
+            // is the only zero in the box, and the ray needs no clip.
+            ParamBox hb;
+            Interval q;
+            if (newton_hit(pp, a, b, marks[k].box, sys, shared->jacobian(k), hb, q, st,
+                           shared->start(k))) {
+                ++best.candidates;
+                ++st.pixel_patch_solves;
+                ++st.pixel_newton_certified;
+                shared->hit(k, hb.s.mid(), hb.t.mid());
+                take(marks[k].patch, hb, q);
+                continue;
+            }
+        }
         // The ray's own clip: a certain miss, or a smaller box to solve in.
         ParamBox start_box = marks[k].box;
         if (shared && !shared->clip(k, a, b, start_box)) continue;
@@ -222,7 +248,6 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
         // (a covering method with the cheap test), and the full covering
         // method of ray_patch.h only on boxes still undecided at depth kDepth.
         constexpr int kDepth = 6;
-        RaySystem sys(pp, a, b, scratch.sys);
         auto& todo = scratch.boxes;
         todo.clear();
         todo.push_back({start_box, 0});
@@ -243,10 +268,7 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
             if (nc == NewtonOutcome::hit) {
                 ++st.pixel_newton_certified;
                 if (shared) shared->hit(k, hb.s.mid(), hb.t.mid());
-                if (!(q.hi() > 0)) continue;
-                if (best.patch < 0 || q.mid() < best.q)
-                    best = {marks[k].patch, hb.s.mid(), hb.t.mid(), q.mid(), best.candidates};
-                best_q = std::min(best_q, q.hi());
+                take(marks[k].patch, hb, q);
                 continue;
             }
             if (depth < kDepth) {
@@ -276,11 +298,7 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
             st.hs_iterations += rs.iterations;
             st.hs_steps += rs.iterations;
             auto h = nearest_hit(scratch.hits, 0.0);
-            if (!h || !(h->q.hi() > 0)) continue;
-            if (best.patch < 0 || h->q.mid() < best.q)
-                best = {marks[k].patch, h->box.s.mid(), h->box.t.mid(), h->q.mid(),
-                        best.candidates};
-            best_q = std::min(best_q, h->q.hi());
+            if (h) take(marks[k].patch, h->box, h->q);
         }
     }
     if (!shared || best.candidates > 0) ++st.primary_rays;

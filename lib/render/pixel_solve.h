@@ -87,6 +87,11 @@ MarkJacobian mark_jacobian(const IMat<2>& A);
 // rest: when undecided, the part of box that may hold hits (Theorem 6 i). start: where
 // Newton starts (clamped into box; null: box's centre).
 enum class NewtonOutcome { hit, miss, undecided };
+// The hit part alone: true (with hit and q as above) when J is regular and
+// Newton's result is certified; false leaves the ray undecided in box.
+bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
+                const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
+                const double* start = nullptr);
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
                                RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
                                const MarkJacobian* J = nullptr, ParamBox* rest = nullptr,
