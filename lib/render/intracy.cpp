@@ -110,12 +110,8 @@ class PartRenderer {
         coefs_.clear();
         for (size_t k = 0; k < ps_.patches.size(); ++k) {
             const ProjectedPatch& pp = ps_.patches[k];
-            Mark m{static_cast<int>(k), ParamBox{}, pp.hull, coefs_.size()};
-            coefs_.resize(coefs_.size() + pp.shape.size());
-            control_coefficients(pp.patch, pp.shape, &coefs_[m.coef]);
-            update_enclosures(coefs_, pp.shape, m);
-            for (int c = 0; c < 3; ++c) m.hull[c] = intersect(m.hull[c], pp.hull[c]);
-            arena_.push_back(m);
+            arena_.push_back(
+                whole_patch_mark(static_cast<int>(k), pp.patch, pp.shape, pp.hull, coefs_));
         }
         stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size(), true});
         const long long enclosures0 = range_enclosure_count();

@@ -185,12 +185,7 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     std::vector<Mark> all;
     for (size_t k = 0; k < ps.patches.size(); ++k) {
         const ProjectedPatch& pp = ps.patches[k];
-        Mark m{static_cast<int>(k), ParamBox{}, pp.hull, coefs.size()};
-        coefs.resize(coefs.size() + pp.shape.size());
-        control_coefficients(pp.patch, pp.shape, &coefs[m.coef]);
-        update_enclosures(coefs, pp.shape, m);
-        for (int c = 0; c < 3; ++c) m.hull[c] = intersect(m.hull[c], pp.hull[c]);
-        all.push_back(m);
+        all.push_back(whole_patch_mark(static_cast<int>(k), pp.patch, pp.shape, pp.hull, coefs));
     }
     std::mt19937 rng(17);
     std::uniform_int_distribution<int> X(0, W - 4), Y(0, H - 4);
