@@ -50,16 +50,14 @@ bool regular(const IMat<2>& A) {
 }
 
 // Camera depth Z = X_2 / W over the small box of a certified hit, by the mean
-// value theorem about its centre c: X_k(x) - X_k(c) = grad X_k(xi) . (x - c)
-// with xi in [0,1]^2, where |d X_k / ds| <= sum_ij |coefficient of s^i t^j of
-// the power form of d X_k / ds| (|s^i t^j| <= 1), likewise along t. X_k(c) by
-// enclose_homogeneous; for a box of width ~1e-9 this is as narrow as a range
-// enclosure over it and far cheaper.
-Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit) {
-    const double cs = hit.s.mid(), ct = hit.t.mid();
-    const int dims = pp.forms.rational ? 4 : 3;
-    Interval X[4];
-    enclose_homogeneous(pp.patch, cs, ct, dims, X);
+// value theorem about a point c of [0,1]^2: X_k(x) - X_k(c) = grad X_k(xi) .
+// (x - c) with xi in [0,1]^2, where |d X_k / ds| <= sum_ij |coefficient of
+// s^i t^j of the power form of d X_k / ds| (|s^i t^j| <= 1), likewise along t.
+// Xc: X_k(c) enclosed (enclose_homogeneous; X_3 = W when rational). For a box
+// of width ~1e-9 this is narrow enough to order hits and far cheaper than a
+// range enclosure over it.
+Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit, double cs, double ct,
+                    const Interval* Xc) {
     const Interval ds = hit.s - Interval(cs), dt = hit.t - Interval(ct);
     auto bound = [](const PowerForm& f, int c) {
         Interval m(0.0);
@@ -68,7 +66,7 @@ Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit) {
         return Interval(-m.hi(), m.hi());
     };
     auto over = [&](int c) {
-        return X[c] + bound(pp.forms.Xs, c) * ds + bound(pp.forms.Xt, c) * dt;
+        return Xc[c] + bound(pp.forms.Xs, c) * ds + bound(pp.forms.Xt, c) * dt;
     };
     const Interval Z = over(2);
     if (!pp.forms.rational) return Z;
@@ -128,7 +126,10 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     const double e = 1e-9;
     const IVec<2> Y{{intersect(Interval(next_down(s - e), next_up(s + e)), box.s),
                      intersect(Interval(next_down(t - e), next_up(t + e)), box.t)}};
-    const IVec<2> F = sys.at(s, t);
+    // X at Newton's point: G there for the step, and the centre of the depth's mean value form.
+    Interval X[4];
+    enclose_homogeneous(pp.patch, s, t, pp.forms.rational ? 4 : 3, X);
+    const IVec<2> F{{X[0] - Interval(a) * X[2], X[1] - Interval(b) * X[2]}};
     // A over the box bounds G' over Y too; only where it is too wide to
     // certify is the Jacobian enclosed over Y itself.
     HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
@@ -139,7 +140,7 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     }
     if (!hs.unique) return false;
     hit = {hs.box[0], hs.box[1]};
-    q = depth_over(pp, hit); // camera z = X_2 / W over the hit's box
+    q = depth_over(pp, hit, s, t, X); // camera z = X_2 / W over the hit's box
     return true;
 }
 
