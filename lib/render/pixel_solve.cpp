@@ -240,9 +240,64 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
                 continue;
             }
         }
-        // The ray's own clip: a certain miss, or a smaller box to solve in.
+        if (shared) {
+            // Bezier clipping on the mark's subpatch for this one ray (the
+            // clip and restriction of narrow_mark): a certain miss, or a
+            // smaller subpatch whose own Jacobian (subpatch_jacobian) certifies
+            // Newton; halves where it does not.
+            const SubpatchShape sh = pp.shape;
+            auto& arena = scratch.coefs;
+            arena.clear();
+            Mark m0 = marks[k];
+            m0.coef = 0;
+            arena.assign(shared->coefs().begin() + static_cast<std::ptrdiff_t>(marks[k].coef),
+                         shared->coefs().begin() +
+                             static_cast<std::ptrdiff_t>(marks[k].coef + sh.size()));
+            auto& todo = scratch.marks;
+            todo.clear();
+            todo.push_back({m0, 0});
+            bool counted = false;
+            while (!todo.empty()) {
+                auto [m, depth] = todo.back();
+                todo.pop_back();
+                if (!narrow_mark(arena, sh, Interval(a), Interval(b), m, nullptr)) continue;
+                if (!counted) {
+                    counted = true;
+                    ++best.candidates;
+                    ++st.pixel_patch_solves;
+                }
+                const MarkJacobian J = mark_jacobian(
+                    subpatch_jacobian(&arena[m.coef], sh, m.box, Interval(a), Interval(b)));
+                ParamBox hb;
+                Interval q;
+                const NewtonOutcome nc = newton_certified(pp, a, b, m.box, sys, hb, q, st, &J);
+                if (nc == NewtonOutcome::miss) {
+                    ++st.pixel_newton_certified;
+                    continue;
+                }
+                if (nc == NewtonOutcome::hit) {
+                    ++st.pixel_newton_certified;
+                    shared->hit(k, hb.s.mid(), hb.t.mid());
+                    take(marks[k].patch, hb, q);
+                    continue;
+                }
+                if (depth < 8 && std::max(m.box.s.width(), m.box.t.width()) > 1e-9) {
+                    Mark half[2];
+                    bisect_mark(arena, sh, m, m.box.s.width() >= m.box.t.width() ? 0 : 1, half);
+                    todo.push_back({half[1], depth + 1});
+                    todo.push_back({half[0], depth + 1});
+                    continue;
+                }
+                scratch.hits.clear();
+                RayPatchStats rs;
+                intersect(pp.forms, ray, m.box, scratch.hits, RayPatchOptions{}, &rs);
+                st.hs_iterations += rs.iterations;
+                st.hs_steps += rs.iterations;
+                if (auto h = nearest_hit(scratch.hits, 0.0)) take(marks[k].patch, h->box, h->q);
+            }
+            continue;
+        }
         ParamBox start_box = marks[k].box;
-        if (shared && !shared->clip(k, a, b, start_box)) continue;
         ++best.candidates;
         ++st.pixel_patch_solves;
         // Certified Newton on the mark's box; where undecided, on its halves

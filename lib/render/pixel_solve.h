@@ -45,6 +45,8 @@ struct PixelScratch {
     std::vector<RayPatchHit> hits;
     std::vector<std::pair<double, int>> order;
     std::vector<std::pair<ParamBox, int>> boxes; // boxes still to solve, with their depth
+    SubpatchArena coefs;                         // subpatches of the marks below
+    std::vector<std::pair<Mark, int>> marks;     // parts of a mark still to solve, with their depth
 };
 
 // The system G = (X - aZ, Y - bZ) of one ray: point values from the patch's
@@ -108,6 +110,7 @@ class SharedMarks {
     void reset(const ProjectedScene& ps, const SubpatchArena& coefs, const Mark* marks, size_t n,
                Interval a, Interval b);
     const Mark* marks() const { return marks_; }
+    const SubpatchArena& coefs() const { return *coefs_; }
     size_t size() const { return n_; }
     // One Bezier clip of mark k's subpatch for the ray through (a, b) (clip_box
     // of mark.h): false when the ray certainly misses it, else `box` holds its hits.
