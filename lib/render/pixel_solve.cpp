@@ -176,11 +176,6 @@ void SharedMarks::reset(const ProjectedScene& ps, const SubpatchArena& coefs, co
     started_.assign(n, 0);
 }
 
-bool SharedMarks::clip(size_t k, double a, double b, ParamBox& box) const {
-    const Mark& m = marks_[k];
-    return clip_box(*coefs_, ps_->patches[m.patch].shape, Interval(a), Interval(b), m, box);
-}
-
 const MarkJacobian& SharedMarks::jacobian(size_t k) {
     if (!known_[k]) {
         // From the mark's subpatch: a hull of coefficient differences instead
@@ -193,11 +188,151 @@ const MarkJacobian& SharedMarks::jacobian(size_t k) {
     return jacobians_[k];
 }
 
+namespace {
+
+// The nearest hit of one ray so far (remark 1): hits with q > 0 taken,
+// best_q the upper bound of the nearest depth (marks beyond it are dropped).
+struct Nearest {
+    PixelHit best;
+    double best_q = std::numeric_limits<double>::infinity();
+    void take(int patch, const ParamBox& hb, Interval q) {
+        if (!(q.hi() > 0)) return;
+        if (best.patch < 0 || q.mid() < best.q)
+            best = {patch, hb.s.mid(), hb.t.mid(), q.mid(), best.candidates};
+        best_q = std::min(best_q, q.hi());
+    }
+};
+
+// The covering method of ray_patch.h on a box still undecided.
+void cover(const ProjectedPatch& pp, double a, double b, const ParamBox& box, int patch,
+           PixelScratch& scratch, RenderStats& st, Nearest& near) {
+    scratch.hits.clear();
+    RayPatchStats rs;
+    intersect(pp.forms, ProjectedScene::primary_ray(a, b), box, scratch.hits, RayPatchOptions{},
+              &rs);
+    st.hs_iterations += rs.iterations;
+    st.hs_steps += rs.iterations;
+    if (auto h = nearest_hit(scratch.hits, 0.0)) near.take(patch, h->box, h->q);
+}
+
+// Mark k of a small sub-screen: Newton on the mark's whole box first, from
+// the previous pixel's hit (where the sub-screen's Jacobian is regular a
+// certified hit is the only zero in the box and the ray needs no clip); else
+// Bezier clipping for this one ray on a scratch copy of the mark's subpatch
+// (the clip and restriction of narrow_mark): a certain miss, or a smaller
+// subpatch whose own Jacobian (subpatch_jacobian) certifies Newton; halves
+// where it does not, the covering method below depth 8.
+void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks& shared, size_t k,
+                       PixelScratch& scratch, RenderStats& st, Nearest& near) {
+    const Mark& mark = shared.marks()[k];
+    const ProjectedPatch& pp = ps.patches[mark.patch];
+    RaySystem sys(pp, a, b, scratch.sys);
+    ParamBox hb;
+    Interval q;
+    if (newton_hit(pp, a, b, mark.box, sys, shared.jacobian(k), hb, q, st, shared.start(k))) {
+        ++near.best.candidates;
+        ++st.pixel_patch_solves;
+        ++st.pixel_newton_certified;
+        shared.hit(k, hb.s.mid(), hb.t.mid());
+        near.take(mark.patch, hb, q);
+        return;
+    }
+    const SubpatchShape sh = pp.shape;
+    auto& arena = scratch.coefs;
+    const auto from = shared.coefs().begin() + static_cast<std::ptrdiff_t>(mark.coef);
+    arena.assign(from, from + sh.size());
+    Mark m0 = mark;
+    m0.coef = 0;
+    auto& todo = scratch.marks;
+    todo.clear();
+    todo.push_back({m0, 0});
+    bool counted = false;
+    while (!todo.empty()) {
+        auto [m, depth] = todo.back();
+        todo.pop_back();
+        if (!narrow_mark(arena, sh, Interval(a), Interval(b), m, nullptr)) continue;
+        if (!counted) {
+            counted = true;
+            ++near.best.candidates;
+            ++st.pixel_patch_solves;
+        }
+        const MarkJacobian J =
+            mark_jacobian(subpatch_jacobian(&arena[m.coef], sh, m.box, Interval(a), Interval(b)));
+        const NewtonOutcome nc = newton_certified(pp, a, b, m.box, sys, hb, q, st, &J);
+        if (nc != NewtonOutcome::undecided) {
+            ++st.pixel_newton_certified;
+            if (nc == NewtonOutcome::hit) {
+                shared.hit(k, hb.s.mid(), hb.t.mid());
+                near.take(mark.patch, hb, q);
+            }
+            continue;
+        }
+        if (depth < 8 && std::max(m.box.s.width(), m.box.t.width()) > 1e-9) {
+            Mark half[2];
+            bisect_mark(arena, sh, m, m.box.s.width() >= m.box.t.width() ? 0 : 1, half);
+            todo.push_back({half[1], depth + 1});
+            todo.push_back({half[0], depth + 1});
+            continue;
+        }
+        cover(pp, a, b, m.box, mark.patch, scratch, st, near);
+    }
+}
+
+// A mark without a subpatch at hand: certified Newton on its box; where
+// undecided, on the part the Hansen-Sengupta step leaves or its halves (a
+// covering method with the cheap test, Jacobians from the ray's power
+// forms), and the full covering method only on boxes still undecided at depth 6.
+void solve_mark(const ProjectedScene& ps, double a, double b, const Mark& mark,
+                PixelScratch& scratch, RenderStats& st, Nearest& near) {
+    const ProjectedPatch& pp = ps.patches[mark.patch];
+    RaySystem sys(pp, a, b, scratch.sys);
+    ++near.best.candidates;
+    ++st.pixel_patch_solves;
+    constexpr int kDepth = 6;
+    auto& todo = scratch.boxes;
+    todo.clear();
+    todo.push_back({mark.box, 0});
+    while (!todo.empty()) {
+        const auto [box, depth] = todo.back();
+        todo.pop_back();
+        ParamBox hb;
+        Interval q;
+        ParamBox rest = box;
+        const NewtonOutcome nc = newton_certified(pp, a, b, box, sys, hb, q, st, nullptr, &rest);
+        if (nc != NewtonOutcome::undecided) {
+            ++st.pixel_newton_certified;
+            if (nc == NewtonOutcome::hit) near.take(mark.patch, hb, q);
+            continue;
+        }
+        if (depth < kDepth) {
+            // The zeros lie in the Hansen-Sengupta step's box: a box it
+            // shrank well is tried again whole, another one is halved.
+            if (rest.s.width() * rest.t.width() < 0.25 * box.s.width() * box.t.width()) {
+                todo.push_back({rest, depth + 1});
+                continue;
+            }
+            ParamBox lo = rest, hi = rest;
+            if (rest.s.width() >= rest.t.width()) {
+                const double m = rest.s.mid();
+                lo.s = {rest.s.lo(), m};
+                hi.s = {m, rest.s.hi()};
+            } else {
+                const double m = rest.t.mid();
+                lo.t = {rest.t.lo(), m};
+                hi.t = {m, rest.t.hi()};
+            }
+            todo.push_back({hi, depth + 1});
+            todo.push_back({lo, depth + 1});
+            continue;
+        }
+        cover(pp, a, b, box, mark.patch, scratch, st, near);
+    }
+}
+
+} // namespace
+
 PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
                      PixelScratch& scratch, RenderStats& st, SharedMarks* shared) {
-    PixelHit best;
-    double best_q = std::numeric_limits<double>::infinity(); // upper bound of the nearest depth
-    const Ray ray = ProjectedScene::primary_ray(a, b);
     // Nearest first; once a hit is found, marks that lie entirely beyond it are
     // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
     auto& order = scratch.order;
@@ -205,160 +340,22 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
     if (shared) {
         marks = shared->marks();
         n = shared->size();
-        for (size_t k = 0; k < n; ++k)
-            if (may_meet(marks[k], Interval(a), Interval(b)))
-                order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
-    } else {
-        for (size_t k = 0; k < n; ++k)
-            order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
     }
-    if (order.empty()) return best;
+    for (size_t k = 0; k < n; ++k)
+        if (!shared || may_meet(marks[k], Interval(a), Interval(b)))
+            order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
+    Nearest near;
+    if (order.empty()) return near.best;
     std::sort(order.begin(), order.end());
     for (const auto& [zlo, k] : order) {
-        if (zlo > best_q) break;
-        const ProjectedPatch& pp = ps.patches[marks[k].patch];
-        RaySystem sys(pp, a, b, scratch.sys);
-        auto take = [&](int patch, const ParamBox& hb, Interval q) {
-            if (!(q.hi() > 0)) return;
-            if (best.patch < 0 || q.mid() < best.q)
-                best = {patch, hb.s.mid(), hb.t.mid(), q.mid(), best.candidates};
-            best_q = std::min(best_q, q.hi());
-        };
-        if (shared) {
-            // Newton on the mark's whole box first, from the previous pixel's
-            // hit: where the sub-screen's Jacobian is regular a certified hit
-            // is the only zero in the box, and the ray needs no clip.
-            ParamBox hb;
-            Interval q;
-            if (newton_hit(pp, a, b, marks[k].box, sys, shared->jacobian(k), hb, q, st,
-                           shared->start(k))) {
-                ++best.candidates;
-                ++st.pixel_patch_solves;
-                ++st.pixel_newton_certified;
-                shared->hit(k, hb.s.mid(), hb.t.mid());
-                take(marks[k].patch, hb, q);
-                continue;
-            }
-        }
-        if (shared) {
-            // Bezier clipping on the mark's subpatch for this one ray (the
-            // clip and restriction of narrow_mark): a certain miss, or a
-            // smaller subpatch whose own Jacobian (subpatch_jacobian) certifies
-            // Newton; halves where it does not.
-            const SubpatchShape sh = pp.shape;
-            auto& arena = scratch.coefs;
-            arena.clear();
-            Mark m0 = marks[k];
-            m0.coef = 0;
-            arena.assign(shared->coefs().begin() + static_cast<std::ptrdiff_t>(marks[k].coef),
-                         shared->coefs().begin() +
-                             static_cast<std::ptrdiff_t>(marks[k].coef + sh.size()));
-            auto& todo = scratch.marks;
-            todo.clear();
-            todo.push_back({m0, 0});
-            bool counted = false;
-            while (!todo.empty()) {
-                auto [m, depth] = todo.back();
-                todo.pop_back();
-                if (!narrow_mark(arena, sh, Interval(a), Interval(b), m, nullptr)) continue;
-                if (!counted) {
-                    counted = true;
-                    ++best.candidates;
-                    ++st.pixel_patch_solves;
-                }
-                const MarkJacobian J = mark_jacobian(
-                    subpatch_jacobian(&arena[m.coef], sh, m.box, Interval(a), Interval(b)));
-                ParamBox hb;
-                Interval q;
-                const NewtonOutcome nc = newton_certified(pp, a, b, m.box, sys, hb, q, st, &J);
-                if (nc == NewtonOutcome::miss) {
-                    ++st.pixel_newton_certified;
-                    continue;
-                }
-                if (nc == NewtonOutcome::hit) {
-                    ++st.pixel_newton_certified;
-                    shared->hit(k, hb.s.mid(), hb.t.mid());
-                    take(marks[k].patch, hb, q);
-                    continue;
-                }
-                if (depth < 8 && std::max(m.box.s.width(), m.box.t.width()) > 1e-9) {
-                    Mark half[2];
-                    bisect_mark(arena, sh, m, m.box.s.width() >= m.box.t.width() ? 0 : 1, half);
-                    todo.push_back({half[1], depth + 1});
-                    todo.push_back({half[0], depth + 1});
-                    continue;
-                }
-                scratch.hits.clear();
-                RayPatchStats rs;
-                intersect(pp.forms, ray, m.box, scratch.hits, RayPatchOptions{}, &rs);
-                st.hs_iterations += rs.iterations;
-                st.hs_steps += rs.iterations;
-                if (auto h = nearest_hit(scratch.hits, 0.0)) take(marks[k].patch, h->box, h->q);
-            }
-            continue;
-        }
-        ParamBox start_box = marks[k].box;
-        ++best.candidates;
-        ++st.pixel_patch_solves;
-        // Certified Newton on the mark's box; where undecided, on its halves
-        // (a covering method with the cheap test), and the full covering
-        // method of ray_patch.h only on boxes still undecided at depth kDepth.
-        constexpr int kDepth = 6;
-        auto& todo = scratch.boxes;
-        todo.clear();
-        todo.push_back({start_box, 0});
-        while (!todo.empty()) {
-            const auto [box, depth] = todo.back();
-            todo.pop_back();
-            ParamBox hb;
-            Interval q;
-            const bool first = depth == 0 && shared;
-            const MarkJacobian* J = first ? &shared->jacobian(k) : nullptr;
-            ParamBox rest = box;
-            const NewtonOutcome nc = newton_certified(pp, a, b, box, sys, hb, q, st, J, &rest,
-                                                      first ? shared->start(k) : nullptr);
-            if (nc == NewtonOutcome::miss) {
-                ++st.pixel_newton_certified;
-                continue;
-            }
-            if (nc == NewtonOutcome::hit) {
-                ++st.pixel_newton_certified;
-                if (shared) shared->hit(k, hb.s.mid(), hb.t.mid());
-                take(marks[k].patch, hb, q);
-                continue;
-            }
-            if (depth < kDepth) {
-                // The zeros lie in the Hansen-Sengupta step's box: a box it
-                // shrank well is tried again whole, another one is halved.
-                if (rest.s.width() * rest.t.width() < 0.25 * box.s.width() * box.t.width()) {
-                    todo.push_back({rest, depth + 1});
-                    continue;
-                }
-                ParamBox lo = rest, hi = rest;
-                if (rest.s.width() >= rest.t.width()) {
-                    const double m = rest.s.mid();
-                    lo.s = {rest.s.lo(), m};
-                    hi.s = {m, rest.s.hi()};
-                } else {
-                    const double m = rest.t.mid();
-                    lo.t = {rest.t.lo(), m};
-                    hi.t = {m, rest.t.hi()};
-                }
-                todo.push_back({hi, depth + 1});
-                todo.push_back({lo, depth + 1});
-                continue;
-            }
-            scratch.hits.clear();
-            RayPatchStats rs;
-            intersect(pp.forms, ray, box, scratch.hits, RayPatchOptions{}, &rs);
-            st.hs_iterations += rs.iterations;
-            st.hs_steps += rs.iterations;
-            auto h = nearest_hit(scratch.hits, 0.0);
-            if (h) take(marks[k].patch, h->box, h->q);
-        }
+        if (zlo > near.best_q) break;
+        if (shared)
+            solve_shared_mark(ps, a, b, *shared, k, scratch, st, near);
+        else
+            solve_mark(ps, a, b, marks[k], scratch, st, near);
     }
-    if (!shared || best.candidates > 0) ++st.primary_rays;
-    return best;
+    if (!shared || near.best.candidates > 0) ++st.primary_rays;
+    return near.best;
 }
 
 bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,

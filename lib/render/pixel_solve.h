@@ -15,11 +15,12 @@
 // to where the hits may be (Theorem 6 i); that part is tried again, halved
 // when it did not shrink much, and only boxes still undecided after a few
 // rounds take the full covering method of ray_patch.h. The pixels of a small
-// sub-screen share A per mark (enclosed for all of their rays), computed when
-// the first of them needs it; each ray clips a mark's subpatch only when the
-// mark is reached in depth order (a mark beyond an earlier hit is dropped
-// unclipped), and Newton starts from the (s, t) where the previous pixel of
-// the sub-screen hit the same mark.
+// sub-screen (SharedMarks) share A per mark (enclosed for all of their rays),
+// computed when the first of them needs it; Newton runs on the mark's whole
+// box from the (s, t) where the previous pixel hit the same mark, and only
+// where that certifies no hit does the ray clip the mark's subpatch (Bezier
+// clipping as in narrow_mark of mark.h, halves where it stalls) instead of the
+// power-form steps above.
 #pragma once
 
 #include <seamless/render/mark.h>
@@ -36,7 +37,7 @@ namespace seamless {
 struct PixelHit {
     int patch = -1; // -1: the ray certainly misses every marked patch
     double s = 0, t = 0, q = 0;
-    int candidates = 0; // marks left to solve after the hull and clip tests
+    int candidates = 0; // marks the ray was not excluded from by hull or clip
 };
 
 // Scratch space reused from ray to ray (nothing allocated per ray once grown).
@@ -112,9 +113,6 @@ class SharedMarks {
     const Mark* marks() const { return marks_; }
     const SubpatchArena& coefs() const { return *coefs_; }
     size_t size() const { return n_; }
-    // One Bezier clip of mark k's subpatch for the ray through (a, b) (clip_box
-    // of mark.h): false when the ray certainly misses it, else `box` holds its hits.
-    bool clip(size_t k, double a, double b, ParamBox& box) const;
     const MarkJacobian& jacobian(size_t k);
     // Where Newton starts on mark k: the last hit on it, or null.
     const double* start(size_t k) const { return started_[k] ? start_[k].data() : nullptr; }
@@ -138,8 +136,7 @@ class SharedMarks {
 // with the marked patches, nearest marks first; marks beyond a found hit are
 // dropped (section 5, remark 2 after Theorem 10). shared: when given, the
 // marks are a small sub-screen's (marks and n are ignored): each is compared
-// with the ray by hull and clipped before it is solved, with the sub-screen's
-// Jacobian and Newton's start from the previous pixel.
+// with the ray by hull, then solved as the comment at the top says.
 PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
                      PixelScratch& scratch, RenderStats& st, SharedMarks* shared = nullptr);
 
