@@ -18,9 +18,8 @@
 // sub-screen (SharedMarks) share A per mark (enclosed for all of their rays),
 // computed when the first of them needs it; Newton runs on the mark's whole
 // box from the (s, t) where the previous pixel hit the same mark, and only
-// where that certifies no hit does the ray clip the mark's subpatch (Bezier
-// clipping as in narrow_mark of mark.h, halves where it stalls) instead of the
-// power-form steps above.
+// where that certifies no hit does the ray clip the mark's subpatch (a
+// certain miss, or a smaller box for the steps above).
 #pragma once
 
 #include <seamless/render/mark.h>
@@ -46,8 +45,6 @@ struct PixelScratch {
     std::vector<RayPatchHit> hits;
     std::vector<std::pair<double, int>> order;
     std::vector<std::pair<ParamBox, int>> boxes; // boxes still to solve, with their depth
-    SubpatchArena coefs;                         // subpatches of the marks below
-    std::vector<std::pair<Mark, int>> marks;     // parts of a mark still to solve, with their depth
 };
 
 // The system G = (X - aZ, Y - bZ) of one ray: point values from the patch's
