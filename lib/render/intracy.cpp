@@ -110,12 +110,8 @@ class PartRenderer {
         coefs_.clear();
         for (size_t k = 0; k < ps_.patches.size(); ++k) {
             const ProjectedPatch& pp = ps_.patches[k];
-            Mark m{static_cast<int>(k), ParamBox{}, pp.hull, coefs_.size()};
-            coefs_.resize(coefs_.size() + pp.shape.size());
-            control_coefficients(pp.patch, pp.shape, &coefs_[m.coef]);
-            update_enclosures(coefs_, pp.shape, m);
-            for (int c = 0; c < 3; ++c) m.hull[c] = intersect(m.hull[c], pp.hull[c]);
-            arena_.push_back(m);
+            arena_.push_back(
+                whole_patch_mark(static_cast<int>(k), pp.patch, pp.shape, pp.hull, coefs_));
         }
         stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size(), true});
         const long long enclosures0 = range_enclosure_count();
@@ -267,58 +263,36 @@ class PartRenderer {
     // A small B is solved pixel by pixel from its marks (those of its parent),
     // without a cluster attempt: a few certified Newton solves cost less than
     // narrowing, certificate and SHADE for a cluster of a handful of pixels.
+    // The pixels share the marks' Jacobians and Newton's starting points
+    // (SharedMarks of pixel_solve.h).
     void paint_pixels(const SubScreen& B, RenderStats& st) {
         const StepClock clock(st.single_pixel_seconds);
-        // The Jacobian of each mark over its box for the rays of all of B,
-        // computed on the first pixel that needs it and shared by the others.
-        const Interval aB = screen_a(B.x0, B.x1), bB = screen_b(B.y0, B.y1);
-        jacobians_.resize(B.count);
-        known_.assign(B.count, 0);
+        shared_.reset(ps_, coefs_, &arena_[B.offset], B.count, screen_a(B.x0, B.x1),
+                      screen_b(B.y0, B.y1));
         for (int y = B.y0; y <= B.y1; ++y)
             for (int x = B.x0; x <= B.x1; ++x) {
-                const double a = ps_.frame.screen_a(x + 0.5), b = ps_.frame.screen_b(y + 0.5);
-                const size_t first = arena_.size();
-                pixel_jacobians_.clear();
-                for (size_t k = B.offset; k < B.offset + B.count; ++k) {
-                    const Mark m = arena_[k]; // a copy: push_back may move the arena
-                    if (!may_meet(m, Interval(a), Interval(b))) continue;
-                    // The pixel's own clip: a certain miss, or a smaller box to
-                    // solve in (the copy's subpatch is not used beyond here).
-                    Mark pm = m;
-                    if (!clip_box(coefs_, ps_.patches[m.patch].shape, Interval(a), Interval(b), m,
-                                  pm.box))
-                        continue;
-                    arena_.push_back(pm);
-                    const size_t j = k - B.offset;
-                    if (!known_[j]) {
-                        // From the mark's subpatch: a hull of coefficient
-                        // differences instead of four power-form ranges.
-                        const SubpatchShape sh = ps_.patches[m.patch].shape;
-                        jacobians_[j] =
-                            mark_jacobian(subpatch_jacobian(&coefs_[m.coef], sh, m.box, aB, bB));
-                        known_[j] = 1;
-                    }
-                    pixel_jacobians_.push_back(jacobians_[j]);
-                }
                 const SubScreen pixel{x, y, x, y, 0, 0, 0, true};
-                if (arena_.size() == first) {
+                const PixelHit h =
+                    solve_pixel(ps_, ps_.frame.screen_a(x + 0.5), ps_.frame.screen_b(y + 0.5),
+                                nullptr, 0, pixel_, st, &shared_);
+                if (h.candidates == 0) { // every mark certainly missed before any solve
                     paint_background(x, y, x, y, st);
                     count(pixel, st);
                 } else {
-                    paint_single_pixel(pixel, first, arena_.size() - first, st,
-                                       pixel_jacobians_.data());
+                    paint_hit(pixel, h, st);
                 }
-                arena_.resize(first);
             }
     }
 
     // Step 6: a one-pixel B, solved by Hansen-Sengupta on its marked patches.
-    void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st,
-                            const MarkJacobian* jacobians = nullptr) {
+    void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
+        paint_hit(B,
+                  solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
+                              &arena_[first], n, pixel_, st),
+                  st);
+    }
+    void paint_hit(const SubScreen& B, const PixelHit& h, RenderStats& st) {
         ++st.single_pixels;
-        const PixelHit h =
-            solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
-                        &arena_[first], n, pixel_, st, jacobians);
         if (h.patch < 0) {
             paint_background(B.x0, B.y0, B.x0, B.y0, st);
         } else {
@@ -491,9 +465,7 @@ class PartRenderer {
     SubpatchArena coefs_; // the marks' subpatches
     std::vector<SubScreen> stack_;
     PixelScratch pixel_;
-    std::vector<MarkJacobian> jacobians_,
-        pixel_jacobians_;     // paint_pixels: per mark of B, per pixel
-    std::vector<char> known_; // jacobians_[j] computed
+    SharedMarks shared_; // paint_pixels: the marks of a small B
     ClusterShader shader_;
     ClusterSystem sys_;
 };

@@ -69,6 +69,16 @@ void update_enclosures(const SubpatchArena& arena, SubpatchShape sh, Mark& m) {
     if (!subpatch_projection(c, sh, m.pa, m.pb)) m.pa = m.pb = Interval::entire();
 }
 
+Mark whole_patch_mark(int patch, const BezierPatch& b, SubpatchShape sh, const IVec3& hull,
+                      SubpatchArena& arena) {
+    Mark m{patch, ParamBox{}, hull, arena.size()};
+    arena.resize(arena.size() + sh.size());
+    control_coefficients(b, sh, &arena[m.coef]);
+    update_enclosures(arena, sh, m);
+    for (int c = 0; c < 3; ++c) m.hull[c] = intersect(m.hull[c], hull[c]);
+    return m;
+}
+
 bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, Mark& m,
                  IMat<2>* D) {
     for (int pass = 0; pass < 3; ++pass) {

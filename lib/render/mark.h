@@ -44,6 +44,12 @@ inline bool may_meet(const Mark& m, Interval a, Interval b) {
 // Sets m.hull, m.pa, m.pb from its subpatch (convex hull property).
 void update_enclosures(const SubpatchArena& arena, SubpatchShape sh, Mark& m);
 
+// The mark of a whole patch (box [0,1]^2; hull: an enclosure of the whole
+// patch), its control points appended to the arena as its subpatch, its
+// enclosures from them within `hull`.
+Mark whole_patch_mark(int patch, const BezierPatch& b, SubpatchShape sh, const IVec3& hull,
+                      SubpatchArena& arena);
+
 // Narrows m for the cluster of primary rays through [a] x [b] (Theorem 10 by
 // Bezier clipping on the subpatch, clip_cluster of primary_cluster.h): up to
 // three passes, each clipping and restricting the subpatch (appended to the

@@ -15,7 +15,11 @@
 // to where the hits may be (Theorem 6 i); that part is tried again, halved
 // when it did not shrink much, and only boxes still undecided after a few
 // rounds take the full covering method of ray_patch.h. The pixels of a small
-// sub-screen share A per mark (enclosed for all of their rays).
+// sub-screen (SharedMarks) share A per mark (enclosed for all of their rays),
+// computed when the first of them needs it; Newton runs on the mark's whole
+// box from the (s, t) where the previous pixel hit the same mark, and only
+// where that certifies no hit does the ray clip the mark's subpatch (a
+// certain miss, or a smaller box for the steps above).
 #pragma once
 
 #include <seamless/render/mark.h>
@@ -23,6 +27,7 @@
 #include <seamless/render/projection.h>
 #include <seamless/render/render.h>
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -31,6 +36,7 @@ namespace seamless {
 struct PixelHit {
     int patch = -1; // -1: the ray certainly misses every marked patch
     double s = 0, t = 0, q = 0;
+    int candidates = 0; // marks the ray was not excluded from by hull or clip
 };
 
 // Scratch space reused from ray to ray (nothing allocated per ray once grown).
@@ -78,19 +84,58 @@ MarkJacobian mark_jacobian(const IMat<2>& A);
 // in box, in `hit` (local (s, t)), at depth `q` (camera z, enclosed); miss: certainly none in box
 // (a Hansen-Sengupta step over the box is empty, Theorem 6 ii); undecided: take the covering
 // method. J: the Jacobian over box for a sub-screen holding the ray (computed here when null).
-// rest: when undecided, the part of box that may hold hits (Theorem 6 i).
+// rest: when undecided, the part of box that may hold hits (Theorem 6 i). start: where
+// Newton starts (clamped into box; null: box's centre).
 enum class NewtonOutcome { hit, miss, undecided };
+// The hit part alone: true (with hit and q as above) when J is regular and
+// Newton's result is certified; false leaves the ray undecided in box.
+bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
+                const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
+                const double* start = nullptr);
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
                                RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
-                               const MarkJacobian* J = nullptr, ParamBox* rest = nullptr);
+                               const MarkJacobian* J = nullptr, ParamBox* rest = nullptr,
+                               const double* start = nullptr);
+
+// The marks of a small sub-screen [a] x [b] as its pixels share them (INTRACY
+// step 6 for every pixel of a B of at most RenderOptions::pixel_subscreen
+// pixels): per mark, the Jacobian of G over its box for every ray of B
+// (subpatch_jacobian of primary_cluster.h, computed on first need) and the
+// (s, t) of the last hit on it, where the next pixel's Newton starts.
+class SharedMarks {
+  public:
+    // B's marks (n of them, subpatches in `coefs`), for the rays through [a] x [b].
+    void reset(const ProjectedScene& ps, const SubpatchArena& coefs, const Mark* marks, size_t n,
+               Interval a, Interval b);
+    const Mark* marks() const { return marks_; }
+    const SubpatchArena& coefs() const { return *coefs_; }
+    size_t size() const { return n_; }
+    const MarkJacobian& jacobian(size_t k);
+    // Where Newton starts on mark k: the last hit on it, or null.
+    const double* start(size_t k) const { return started_[k] ? start_[k].data() : nullptr; }
+    void hit(size_t k, double s, double t) {
+        start_[k] = {s, t};
+        started_[k] = 1;
+    }
+
+  private:
+    const ProjectedScene* ps_ = nullptr;
+    const SubpatchArena* coefs_ = nullptr;
+    const Mark* marks_ = nullptr;
+    size_t n_ = 0;
+    Interval a_, b_;
+    std::vector<MarkJacobian> jacobians_;
+    std::vector<std::array<double, 2>> start_;
+    std::vector<char> known_, started_;
+};
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)
 // with the marked patches, nearest marks first; marks beyond a found hit are
-// dropped (section 5, remark 2 after Theorem 10). jacobians: when given, one
-// per mark, over its box, for a sub-screen holding the ray.
+// dropped (section 5, remark 2 after Theorem 10). shared: when given, the
+// marks are a small sub-screen's (marks and n are ignored): each is compared
+// with the ray by hull, then solved as the comment at the top says.
 PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                     PixelScratch& scratch, RenderStats& st,
-                     const MarkJacobian* jacobians = nullptr);
+                     PixelScratch& scratch, RenderStats& st, SharedMarks* shared = nullptr);
 
 // A corner ray of a certified cluster hits the patch exactly once in `box`;
 // its intensity only steers the bilinear form of step 9, whose levels are

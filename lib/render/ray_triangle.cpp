@@ -19,28 +19,6 @@ TriangleRay::TriangleRay(Vec3 o, Vec3 d) : origin(o), dir(d) {
     sz = 1.0 / d[kz];
 }
 
-bool ray_hits_box(const TriangleRay& ray, const Box3& box, double t_max) {
-    // pbrt-v4: t1 *= 1 + 2 gamma(3) makes the slab test conservative.
-    constexpr double eps = std::numeric_limits<double>::epsilon() * 0.5;
-    constexpr double widen = 1 + 2 * (3 * eps) / (1 - 3 * eps);
-    double t0 = 0, t1 = t_max;
-    for (int i = 0; i < 3; ++i) {
-        const double o = ray.origin[i], lo = box.lo[i], hi = box.hi[i];
-        if (ray.dir[i] == 0) {
-            // Parallel to the slab: (lo - o) * inf would be NaN when o lies on it.
-            if (o < lo || o > hi) return false;
-            continue;
-        }
-        double tn = (lo - o) * ray.inv_dir[i], tf = (hi - o) * ray.inv_dir[i];
-        if (tn > tf) std::swap(tn, tf);
-        tf *= widen;
-        t0 = tn > t0 ? tn : t0;
-        t1 = tf < t1 ? tf : t1;
-        if (t0 > t1) return false;
-    }
-    return true;
-}
-
 bool intersect_triangle(const TriangleRay& ray, Vec3 p0, Vec3 p1, Vec3 p2, double t_max,
                         RayTriangleHit& hit) {
     const Vec3 A = p0 - ray.origin, B = p1 - ray.origin, C = p2 - ray.origin;

@@ -10,6 +10,9 @@
 
 #include <seamless/base/vec.h>
 
+#include <limits>
+#include <utility>
+
 namespace seamless {
 
 // A ray o + t d (t > 0), prepared for many box and triangle tests.
@@ -27,8 +30,30 @@ struct TriangleRay {
 // Parameter interval [t0, t1] of the ray inside `box` intersected with
 // [0, t_max]; false when empty. Robust for axis-parallel rays (a zero direction
 // component tests the origin against the slab) and widened by a few ulps
-// (pbrt's 1 + 2 gamma(3)), so rounding never loses a grazing hit.
-bool ray_hits_box(const TriangleRay& ray, const Box3& box, double t_max);
+// (pbrt's 1 + 2 gamma(3)), so rounding never loses a grazing hit. Inline: a
+// shadow ray tests about 80 boxes on scene 3 (callgrind, 640x480: shadow rays
+// 2.51 G -> 2.04 G instructions when the test was no longer a call).
+inline bool ray_hits_box(const TriangleRay& ray, const Box3& box, double t_max) {
+    // pbrt-v4: t1 *= 1 + 2 gamma(3) makes the slab test conservative.
+    constexpr double eps = std::numeric_limits<double>::epsilon() * 0.5;
+    constexpr double widen = 1 + 2 * (3 * eps) / (1 - 3 * eps);
+    double t0 = 0, t1 = t_max;
+    for (int i = 0; i < 3; ++i) {
+        const double o = ray.origin[i], lo = box.lo[i], hi = box.hi[i];
+        if (ray.dir[i] == 0) {
+            // Parallel to the slab: (lo - o) * inf would be NaN when o lies on it.
+            if (o < lo || o > hi) return false;
+            continue;
+        }
+        double tn = (lo - o) * ray.inv_dir[i], tf = (hi - o) * ray.inv_dir[i];
+        if (tn > tf) std::swap(tn, tf);
+        tf *= widen;
+        t0 = tn > t0 ? tn : t0;
+        t1 = tf < t1 ? tf : t1;
+        if (t0 > t1) return false;
+    }
+    return true;
+}
 
 struct RayTriangleHit {
     double t = 0;

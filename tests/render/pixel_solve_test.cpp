@@ -3,11 +3,13 @@
 // covering method: a box it declares missed holds no hit, a hit it certifies
 // is the only hit in the box and lies in its small box.
 #include <seamless/render/pixel_solve.h>
+#include <seamless/render/scene.h>
 #include <seamless/spline/ray_patch.h>
 
 #include <catch2/catch.hpp>
 
 #include "dome_patch.h"
+#include "test_util.h"
 
 #include <random>
 
@@ -125,4 +127,99 @@ TEST_CASE("Certified Newton with a sub-screen's Jacobian: no hit lost, none inve
     }
     CHECK(counts[0] > 50);
     CHECK(counts[1] > 50);
+}
+
+TEST_CASE("Certified Newton's depth encloses the patch's depth, polynomial and rational",
+          "[pixel_solve]") {
+    // The depth of a certified hit comes from the mean value theorem about
+    // the hit box's centre (not a range enclosure): it must hold the camera z
+    // of the surface at every point of the hit box, also where W varies.
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> S(0.0, 1.0), Wt(0.5, 2.0);
+    int hits = 0;
+    for (int n = 0; n < 200; ++n) {
+        ProjectedPatch pp = dome(rng, n % 2 ? 0.8 : 3.0);
+        if (n % 2) { // rational: the same points with weights in [0.5, 2]
+            for (int i = 0; i <= pp.patch.p; ++i)
+                for (int j = 0; j <= pp.patch.q; ++j)
+                    pp.patch.at(i, j) = HPoint::from(pp.patch.at(i, j).point(), Wt(rng));
+            pp.patch.rational = true;
+            pp.forms = patch_forms(pp.patch);
+        }
+        const double s0 = S(rng), t0 = S(rng);
+        const Vec3 P = evaluate(pp.patch, s0, t0).point;
+        const double a = P.x / P.z, b = P.y / P.z;
+        const ParamBox box{intersect(Interval(s0 - 0.05, s0 + 0.05), Interval(0.0, 1.0)),
+                           intersect(Interval(t0 - 0.05, t0 + 0.05), Interval(0.0, 1.0))};
+        ClusterSystem storage;
+        RaySystem sys(pp, a, b, storage);
+        RenderStats st;
+        ParamBox hb;
+        Interval q;
+        if (newton_certified(pp, a, b, box, sys, hb, q, st, nullptr) != NewtonOutcome::hit)
+            continue;
+        ++hits;
+        for (double s : {hb.s.lo(), hb.s.mid(), hb.s.hi()})
+            for (double t : {hb.t.lo(), hb.t.mid(), hb.t.hi()}) {
+                Interval X[4];
+                enclose_homogeneous(pp.patch, s, t, 4, X);
+                CHECK(q.overlaps(X[2] / X[3])); // X[3] = W > 0 for these weights
+            }
+        // Narrow enough to order hits and drop marks beyond them (a coarse
+        // derivative bound times the hit box's width of about 1e-9).
+        CHECK(q.width() < 1e-5 * q.mag());
+    }
+    CHECK(hits > 50);
+}
+
+TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each pixel alone",
+          "[pixel_solve]") {
+    // paint_pixels' path (SharedMarks: Newton on the mark's whole box from the
+    // previous pixel's hit, the ray's clip only where that fails, one Jacobian
+    // per mark for the sub-screen) against every mark solved for the pixel on
+    // its own (no clip, no shared Jacobian): the same surface, or background.
+    const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
+    const int W = 160, H = 120;
+    const ProjectedScene ps = project_scene(scene, W, H);
+    SubpatchArena coefs;
+    std::vector<Mark> all;
+    for (size_t k = 0; k < ps.patches.size(); ++k) {
+        const ProjectedPatch& pp = ps.patches[k];
+        all.push_back(whole_patch_mark(static_cast<int>(k), pp.patch, pp.shape, pp.hull, coefs));
+    }
+    std::mt19937 rng(17);
+    std::uniform_int_distribution<int> X(0, W - 4), Y(0, H - 4);
+    PixelScratch scratch;
+    SharedMarks shared;
+    RenderStats st;
+    int surface = 0, background = 0;
+    for (int n = 0; n < 120; ++n) {
+        const int x0 = X(rng), y0 = Y(rng), x1 = x0 + 2, y1 = y0 + 2;
+        const Interval aB(ps.frame.screen_a(x0 + 0.5), ps.frame.screen_a(x1 + 0.5));
+        const Interval bB(ps.frame.screen_b(y0 + 0.5), ps.frame.screen_b(y1 + 0.5));
+        std::vector<Mark> marks;
+        for (const Mark& m : all)
+            if (may_meet(m, aB, bB)) marks.push_back(m);
+        if (marks.empty()) continue;
+        shared.reset(ps, coefs, marks.data(), marks.size(), aB, bB);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const double a = ps.frame.screen_a(x + 0.5), b = ps.frame.screen_b(y + 0.5);
+                const PixelHit h = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &shared);
+                const PixelHit ref = solve_pixel(ps, a, b, marks.data(), marks.size(), scratch, st);
+                REQUIRE((h.patch < 0) == (ref.patch < 0));
+                if (ref.patch < 0) {
+                    ++background;
+                    continue;
+                }
+                ++surface;
+                // At a seam two patches may share the nearest point: compare points.
+                Vec3 P, N, Pr, Nr;
+                surface_frame(ps.patches[h.patch].patch, h.s, h.t, P, N);
+                surface_frame(ps.patches[ref.patch].patch, ref.s, ref.t, Pr, Nr);
+                CHECK(norm(P - Pr) < 1e-6 * norm(Pr));
+            }
+    }
+    CHECK(surface > 200);
+    CHECK(background > 50);
 }
