@@ -5,6 +5,7 @@
 #include <seamless/render/ray_cluster.h>
 #include <seamless/render/step_clock.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace seamless {
@@ -20,8 +21,8 @@ IVec<3> ivec(const V3<Interval>& a) {
 } // namespace
 
 ClusterShader::ClusterShader(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
-                             int levels, bool dither)
-    : ps_(ps), scene_(scene), ts_(ts), levels_(levels), dither_(dither),
+                             const std::vector<int>* neighbours, int levels, bool dither)
+    : ps_(ps), scene_(scene), ts_(ts), neighbours_(neighbours), levels_(levels), dither_(dither),
       scene_diagonal_(next_up(norm(control_box(scene.model).extent()))),
       lighting_depth_(static_cast<size_t>(scene.max_depth) + 1) {}
 
@@ -180,9 +181,11 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
         const ClusterHull ch(rc);
         // A certain blocker is rare (one triangle must cover every ray), so
         // only the first kBlockerTries triangles that may meet the cluster are
-        // tried; after that the light is undecided (split B) at once.
+        // tried, as blockers and then as seeds of a blocking surface
+        // (ray_cluster.h); after that the light is undecided (split B).
         bool maybe = false, blocked = false;
         int tries = 0;
+        int seeds[kBlockerTries];
         visit_candidate_triangles(
             ts_->tess.trees,
             [&](const Box3& b) { return !blocked && tries < kBlockerTries && ch.may_meet(b); },
@@ -195,12 +198,17 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
                     !may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]]))
                     return;
                 maybe = true;
-                ++tries;
+                seeds[tries++] = t;
                 Interval q;
                 if (covers_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q) && q.lo() > 0 &&
                     q.hi() < q_max)
                     blocked = true;
             });
+        for (int k = 0; k < tries && !blocked && neighbours_; ++k)
+            blocked = pyramid_blocked_by_surface(light.position, Pw, q_max, seeds[k],
+                                                 ts_->tess.mesh.positions, ts_->tess.mesh.triangles,
+                                                 *neighbours_, ts_->triangle_patch, patch,
+                                                 kMaxBlockerSurface, surface_);
         if (blocked) {
             ++r.blocked;
             continue;

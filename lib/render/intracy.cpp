@@ -42,6 +42,7 @@
 #include <seamless/render/pixel_solve.h>
 #include <seamless/render/primary_cluster.h>
 #include <seamless/render/projection.h>
+#include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
 #include <seamless/render/step_clock.h>
@@ -63,6 +64,7 @@ struct SubScreen {
     size_t offset, count; // its marks in the arena
     size_t coef_end;      // end of its marks' subpatches in the coefficient arena
     bool attempt;         // try step 7 (false: its parent's intensity was far too wide)
+    int cause;            // why its nearest attempting ancestor split (RenderStats::SplitCause)
 };
 
 // SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
@@ -97,9 +99,10 @@ double dither(int x, int y, int c) {
 class PartRenderer {
   public:
     PartRenderer(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
-                 const RenderOptions& opt, Image& image, int levels)
+                 const std::vector<int>* neighbours, const RenderOptions& opt, Image& image,
+                 int levels)
         : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels),
-          shader_(ps, scene, ts, levels, opt.dither) {
+          shader_(ps, scene, ts, neighbours, levels, opt.dither) {
         const Vec3 bg = ps.lighting.background;
         for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
     }
@@ -117,7 +120,8 @@ class PartRenderer {
             for (int c = 0; c < 3; ++c) m.hull[c] = intersect(m.hull[c], pp.hull[c]);
             arena_.push_back(m);
         }
-        stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size(), true});
+        stack_.push_back(
+            {x0, y0, x1, y1, 0, arena_.size(), coefs_.size(), true, RenderStats::none});
         const long long enclosures0 = range_enclosure_count();
         const PartCpuScale cpu;
         while (!stack_.empty()) {
@@ -230,7 +234,12 @@ class PartRenderer {
         if (improve(B, first, nmarks, st)) return;
         // Step 7: a nearest q-separated patch that certainly covers B.
         levels_over_ = 0;
-        if (B.attempt && try_paint(B, first, nmarks, st)) return;
+        int cause = B.cause;
+        if (B.attempt) {
+            cause = try_paint(B, first, nmarks, st);
+            if (cause < 0) return;
+            ++st.attempts_failed[cause];
+        }
         // Step 9 failed by far: the children's enclosures (about half as wide)
         // would fail too; they split at once and their children try again.
         const bool kids_attempt = levels_over_ <= 2 * ((opt_.dither ? 1 : 0) + 1);
@@ -240,16 +249,16 @@ class PartRenderer {
         SubScreen kids[4];
         int nk = 0;
         if (w > 1 && h > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0, 0, true};
-            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0, 0, true};
-            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0, 0, true};
-            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0, 0, true};
+            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0, 0, true, cause};
+            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0, 0, true, cause};
+            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0, 0, true, cause};
+            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0, 0, true, cause};
         } else if (w > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0, 0, true};
-            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0, 0, true};
+            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0, 0, true, cause};
+            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0, 0, true, cause};
         } else {
-            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0, 0, true};
-            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0, 0, true};
+            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0, 0, true, cause};
+            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0, 0, true, cause};
         }
         // Each child gets the marks of B (already at the top of the arena for
         // the first; copies for the others). Pushed in reverse so the first is next.
@@ -258,6 +267,7 @@ class PartRenderer {
             kids[i].count = nmarks;
             kids[i].coef_end = coefs_.size();
             kids[i].attempt = kids_attempt;
+            kids[i].cause = cause;
         }
         // All children share one mark list: a child's processing truncates the
         // arena to offset+count before appending, so the list survives for the next.
@@ -300,7 +310,7 @@ class PartRenderer {
                     }
                     pixel_jacobians_.push_back(jacobians_[j]);
                 }
-                const SubScreen pixel{x, y, x, y, 0, 0, 0, true};
+                const SubScreen pixel{x, y, x, y, 0, 0, 0, true, B.cause};
                 if (arena_.size() == first) {
                     paint_background(x, y, x, y, st);
                     count(pixel, st);
@@ -316,6 +326,7 @@ class PartRenderer {
     void paint_single_pixel(const SubScreen& B, size_t first, size_t n, RenderStats& st,
                             const MarkJacobian* jacobians = nullptr) {
         ++st.single_pixels;
+        ++st.single_pixels_by_cause[B.cause];
         const PixelHit h =
             solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
                         &arena_[first], n, pixel_, st, jacobians);
@@ -373,8 +384,22 @@ class PartRenderer {
         return false;
     }
 
-    // Steps 7 to 9. Returns true if B was painted.
-    bool try_paint(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
+    // Why the certificate failed on marks first..first+n (RenderStats::SplitCause).
+    int certificate_cause(size_t first, size_t n) const {
+        const int p0 = arena_[first].patch;
+        bool one_surface = true, one_patch = true;
+        for (size_t k = first; k < first + n; ++k) {
+            const int p = arena_[k].patch;
+            one_patch &= p == p0;
+            one_surface &= ps_.patches[p].patch.surface == ps_.patches[p0].patch.surface;
+        }
+        return one_patch     ? RenderStats::one_patch
+               : one_surface ? RenderStats::seam
+                             : RenderStats::surfaces;
+    }
+
+    // Steps 7 to 9. Returns -1 if B was painted, else why not (RenderStats::SplitCause).
+    int try_paint(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
         // Depth (q) intervals. The marks of one patch (halves of bisections,
         // separated pieces) are taken together: their hull box holds every hit
         // of that patch in B. The nearest patch must be q-separated from all
@@ -388,7 +413,7 @@ class PartRenderer {
                 best_patch = arena_[k].patch;
             }
         }
-        if (best_patch < 0) return false;
+        if (best_patch < 0) return RenderStats::none;
         ParamBox box{Interval::empty(), Interval::empty()};
         for (size_t k = first; k < first + n; ++k)
             if (arena_[k].patch == best_patch) {
@@ -400,32 +425,33 @@ class PartRenderer {
             const StepClock clock(st.certify_seconds);
             const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
             cluster_system(pp.forms, a, b, sys_);
-            if (!certify_cluster(sys_, box, &st.hs_steps)) return false;
+            if (!certify_cluster(sys_, box, &st.hs_steps)) return certificate_cause(first, n);
             const Interval qbest = enclose_point(pp.forms, box)[2];
-            if (!(qbest.lo() > 0)) return false;
+            if (!(qbest.lo() > 0)) return certificate_cause(first, n);
             for (size_t k = first; k < first + n; ++k) {
                 if (arena_[k].patch == best_patch) continue;
                 const Interval q = arena_[k].hull[2];
-                if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
+                if (q.lo() <= qbest.hi())
+                    return RenderStats::not_nearest; // not nearest q-connected
             }
         }
         const StepClock shading(st.shade_seconds);
         const Mark m{best_patch, box, {}};
         // Step 8: SHADE (cluster_shade.h).
         const ClusterShading cs = shader_.enclose_intensity(best_patch, box, st);
-        if (!cs.decided) return false;
+        if (!cs.decided) return RenderStats::light;
         const auto& I = cs.I;
         const bool secondary = cs.secondary, shadowed = cs.shadowed;
         int lo[3], hi[3];
         bool two = false;
         for (int c = 0; c < 3; ++c) {
-            if (!I[c].is_finite()) return false;
+            if (!I[c].is_finite()) return RenderStats::span;
             lo[c] = quantise(I[c].lo(), levels_);
             hi[c] = quantise(I[c].hi(), levels_);
             levels_over_ = std::max(levels_over_, hi[c] - lo[c]);
         }
         for (int c = 0; c < 3; ++c) {
-            if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
+            if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return RenderStats::span;
             two |= hi[c] > lo[c];
         }
         st.secondary_clusters += secondary;
@@ -438,7 +464,7 @@ class PartRenderer {
                     image_.surface_at(x, y) = 1;
                 }
             count(B, st);
-            return true;
+            return -1;
         }
         // Step 9 with remark 2: corner rays, bilinear form, dither.
         std::array<double, 3> corner[4];
@@ -475,7 +501,7 @@ class PartRenderer {
             }
         }
         count(B, st);
-        return true;
+        return -1;
     }
 
     const ProjectedScene& ps_;
@@ -510,9 +536,11 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     // scene without lit diffuse or specular surfaces and without mirrors or
     // glass needs none, and gets none.
     std::unique_ptr<TriangleScene> ts;
+    std::vector<int> neighbours; // for shadows by a surface of triangles (ray_cluster.h)
     if (needs_secondary_rays(scene)) {
         ts = std::make_unique<TriangleScene>(build_triangle_scene(scene));
         st.triangles = ts->tess.mesh.triangle_count();
+        neighbours = triangle_neighbours(ts->tess.mesh.triangles);
     }
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -528,7 +556,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
         const int i = p % px, j = p / px;
         const int x0 = i * W / px, x1 = (i + 1) * W / px - 1;
         const int y0 = j * H / py, y1 = (j + 1) * H / py - 1;
-        PartRenderer r(ps, scene, ts.get(), opt, image, L);
+        PartRenderer r(ps, scene, ts.get(), ts ? &neighbours : nullptr, opt, image, L);
         r.run(x0, y0, x1, y1, part_stats[p]);
         const int d = ++done;
         if (opt.progress) opt.progress(static_cast<double>(d) / parts);
