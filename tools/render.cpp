@@ -58,6 +58,8 @@ nlohmann::json stats_json(const RenderStats& st) {
             {"pixel_patch_solves", st.pixel_patch_solves},
             {"pixel_newton_certified", st.pixel_newton_certified},
             {"split_causes", split_causes_json(st)},
+            {"nearest_by_plane", st.nearest_by_plane},
+            {"lights_blocked_by_surface", st.lights_blocked_by_surface},
             {"step_seconds",
              {{"narrowing", st.narrow_seconds},
               {"certificate", st.certify_seconds},

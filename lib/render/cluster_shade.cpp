@@ -204,11 +204,13 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
                     q.hi() < q_max)
                     blocked = true;
             });
-        for (int k = 0; k < tries && !blocked && neighbours_; ++k)
+        for (int k = 0; k < tries && !blocked && neighbours_; ++k) {
             blocked = pyramid_blocked_by_surface(light.position, Pw, q_max, seeds[k],
                                                  ts_->tess.mesh.positions, ts_->tess.mesh.triangles,
                                                  *neighbours_, ts_->triangle_patch, patch,
                                                  kMaxBlockerSurface, surface_);
+            r.by_surface += blocked;
+        }
         if (blocked) {
             ++r.blocked;
             continue;
@@ -229,10 +231,21 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
     const PatchEnclosure e = enclose(pp.forms, box);
     const V3<Interval> P = v3(e.point), N = v3(e.normal);
     const Material& mat = ps_.lighting.materials[pp.material];
+    // The points in world coordinates: the rotated camera box, cut down to
+    // the box from the world-space forms (both enclose every point).
+    IVec<3> Pw = to_world(e.point, true);
+    if (ts_) {
+        const IVec3 W = enclose_point(pp.world, box);
+        for (int i = 0; i < 3; ++i) {
+            const Interval x = intersect(Pw[i], W[i]);
+            if (!x.is_empty()) Pw[i] = x;
+        }
+    }
     // With secondary rays, only the lights that reach B count (step 2), and
     // mirrors and glass add their reflected and refracted clusters (steps 3, 4).
     if (ts_) {
-        const ClusterLights cl = lights(to_world(e.point, true), patch, mat, lighting_.lights);
+        const ClusterLights cl = lights(Pw, patch, mat, lighting_.lights);
+        st.lights_blocked_by_surface += cl.by_surface;
         if (!cl.decided) return r;
         r.shadowed = cl.blocked > 0;
         for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
@@ -247,7 +260,7 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
             if (quantise(r.I[c].hi(), levels_) - quantise(r.I[c].lo(), levels_) > (dither_ ? 1 : 0))
                 return r;
         const StepClock clock(st.secondary_seconds);
-        const IVec<3> Pw = to_world(e.point, true), Nw = to_world(e.normal, false);
+        const IVec<3> Nw = to_world(e.normal, false);
         IVec<3> D;
         for (int i = 0; i < 3; ++i) D[i] = Pw[i] - Interval(ps_.frame.eye[i]);
         if (!add_secondary(Pw, D, Nw, mat, patch, 1, r.I)) return r;

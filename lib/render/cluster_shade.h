@@ -32,7 +32,8 @@ struct ClusterShading {
 // light may reach some points and not others.
 struct ClusterLights {
     bool decided = true;
-    int blocked = 0; // lights certainly blocked for every point
+    int blocked = 0;    // lights certainly blocked for every point
+    int by_surface = 0; // of those, blocked by a surface of triangles (ray_cluster.h)
 };
 
 class ClusterShader {

@@ -384,6 +384,22 @@ class PartRenderer {
         return false;
     }
 
+    // The normal of the best patch at the middle of its box, turned so that
+    // every ray of B crosses planes with that normal forward: a point X = Z d of
+    // a ray d = (a, b, 1) then has n . X = Z (n . d), growing with the depth Z.
+    // So where all points of one patch satisfy n . X < c and all of another
+    // n . X > c, the first is nearer on every ray of B that meets both (a plane
+    // separating them, with the eye on the first one's side along the rays).
+    // false when n . d may vanish on B.
+    static bool separating_normal(const ProjectedPatch& pp, const ParamBox& box, Interval a,
+                                  Interval b, Vec3& n) {
+        Vec3 P;
+        surface_frame(pp.patch, box.s.mid(), box.t.mid(), P, n);
+        const Interval nd = Interval(n.x) * a + Interval(n.y) * b + Interval(n.z);
+        if (nd.hi() < 0) n = -1.0 * n;
+        return nd.lo() > 0 || nd.hi() < 0;
+    }
+
     // Why the certificate failed on marks first..first+n (RenderStats::SplitCause).
     int certificate_cause(size_t first, size_t n) const {
         const int p0 = arena_[first].patch;
@@ -428,12 +444,25 @@ class PartRenderer {
             if (!certify_cluster(sys_, box, &st.hs_steps)) return certificate_cause(first, n);
             const Interval qbest = enclose_point(pp.forms, box)[2];
             if (!(qbest.lo() > 0)) return certificate_cause(first, n);
+            // Nearest: every other mark q-separated from it, or, where depths
+            // overlap, beyond a plane that the best patch's marks lie before.
+            Interval best_range = Interval::empty();
+            Vec3 normal{};
             for (size_t k = first; k < first + n; ++k) {
                 if (arena_[k].patch == best_patch) continue;
-                const Interval q = arena_[k].hull[2];
-                if (q.lo() <= qbest.hi())
-                    return RenderStats::not_nearest; // not nearest q-connected
+                if (arena_[k].hull[2].lo() > qbest.hi()) continue;
+                if (best_range.is_empty()) {
+                    if (!separating_normal(pp, box, a, b, normal)) return RenderStats::not_nearest;
+                    for (size_t j = first; j < first + n; ++j)
+                        if (arena_[j].patch == best_patch)
+                            best_range =
+                                hull(best_range, plane_range(coefs_, pp.shape, arena_[j], normal));
+                }
+                const Interval r =
+                    plane_range(coefs_, ps_.patches[arena_[k].patch].shape, arena_[k], normal);
+                if (!(r.lo() > best_range.hi())) return RenderStats::not_nearest;
             }
+            st.nearest_by_plane += !best_range.is_empty();
         }
         const StepClock shading(st.shade_seconds);
         const Mark m{best_patch, box, {}};

@@ -265,12 +265,21 @@ bool pyramid_blocked_by_surface(Vec3 apex, const IVec<3>& ends, double q_max, in
     };
     const int sigma = facing(seed);
     if (sigma == 0 || !between(seed)) return false;
+    // An edge U V misses the pyramid when the box lies strictly on one side of
+    // the plane through the apex, U and V: that plane meets the pyramid only at
+    // the apex, which is then not on the line U V.
+    auto edge_misses = [&](int t, int e) {
+        const IV3 U = iv(vertex(t, e)), V = iv(vertex(t, (e + 1) % 3));
+        const IV3 m = icross(isub(U, L), isub(V, L));
+        const Interval side = idot(m, isub(E, L));
+        return side.lo() > 0 || side.hi() < 0;
+    };
     auto& stamp = scratch.stamp;
-    if (stamp.size() != triangles.size() || scratch.epoch >= (~0u >> 1) - 1) {
+    if (stamp.size() != triangles.size() || scratch.epoch == ~0u) {
         stamp.assign(triangles.size(), 0);
         scratch.epoch = 0;
     }
-    const unsigned in_s = 2 * ++scratch.epoch, missing = in_s + 1;
+    const unsigned in_s = ++scratch.epoch;
     auto& stack = scratch.stack;
     stack.assign(1, seed);
     stamp[seed] = in_s;
@@ -279,14 +288,10 @@ bool pyramid_blocked_by_surface(Vec3 apex, const IVec<3>& ends, double q_max, in
         const int t = stack.back();
         stack.pop_back();
         for (int e = 0; e < 3; ++e) {
+            if (edge_misses(t, e)) continue; // a border of S that the pyramid misses
             const int nb = neighbours[3 * static_cast<size_t>(t) + e];
             if (nb < 0) return false;
-            if (stamp[nb] == in_s || stamp[nb] == missing) continue;
-            if (!pyramid_may_meet_triangle(apex, ends, vertex(nb, 0), vertex(nb, 1),
-                                           vertex(nb, 2))) {
-                stamp[nb] = missing;
-                continue;
-            }
+            if (stamp[nb] == in_s) continue;
             if (group[nb] == skip || ++size > max_size || facing(nb) != sigma || !between(nb))
                 return false;
             stamp[nb] = in_s;

@@ -71,15 +71,15 @@ std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& tria
 // A light certainly blocked by a surface of triangles rather than by one (SHADE
 // step 2; Proposition 11 and Theorem 6 iii prove coverage by one triangle,
 // which fails wherever the light's pyramid crosses a triangle's edge). The
-// surface S grows from `seed` across the edges of the mesh (neighbours:
-// triangle_neighbours) to every triangle for which pyramid_may_meet_triangle
-// holds; true when
+// surface S grows from `seed` across every edge of the mesh (neighbours:
+// triangle_neighbours) that may meet the pyramid from `apex` over the box
+// `ends`; true when
 //  a) every triangle of S faces the apex with the seed's strict orientation
 //     and lies strictly between the apex and a plane across the pyramid,
-//     beyond which the box lies, at ray parameters q < q_max;
-//  b) across each edge of S lies (consistently oriented) another triangle of
-//     S or one that certainly misses the pyramid; no triangle t of S has
-//     group[t] == skip (a surface that may not block, e.g. the lit patch);
+//     beyond which the box lies, at ray parameters q < q_max; no triangle t
+//     of S has group[t] == skip (a surface that may not block: the lit patch);
+//  b) so every edge on the border of S (no consistently oriented neighbour in
+//     S across it) certainly misses the pyramid;
 //  c) the ray to the box's midpoint certainly meets the seed (Theorem 6 iii).
 // Then every ray meets S before q_max: seen from the apex, S maps to the
 // sphere of directions preserving orientation triangle by triangle, and by
@@ -88,7 +88,7 @@ std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& tria
 // connected set of the pyramid's directions misses those by b) and meets the
 // image by c), so it lies inside the image. max_size bounds S (false beyond).
 struct SurfaceScratch {
-    std::vector<unsigned> stamp; // per triangle: 2 epoch in S, 2 epoch + 1 missing
+    std::vector<unsigned> stamp; // per triangle: == epoch when in S
     unsigned epoch = 0;
     std::vector<int> stack;
 };

@@ -76,6 +76,10 @@ struct RenderStats {
         split_causes
     };
     std::array<long long, split_causes> attempts_failed{}, single_pixels_by_cause{};
+    // Step 7 certificates of "nearest" that needed a separating plane (depths of
+    // another marked patch overlapping), and SHADE step 2 lights found blocked
+    // by a surface of triangles rather than one.
+    long long nearest_by_plane = 0, lights_blocked_by_surface = 0;
 
     double single_pixel_fraction() const {
         return width > 0 && height > 0
