@@ -53,6 +53,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -409,9 +410,28 @@ class PartRenderer {
             one_patch &= p == p0;
             one_surface &= ps_.patches[p].patch.surface == ps_.patches[p0].patch.surface;
         }
-        return one_patch     ? RenderStats::one_patch
-               : one_surface ? RenderStats::seam
-                             : RenderStats::surfaces;
+        if (one_patch) return RenderStats::one_patch;
+        if (one_surface) return RenderStats::seam;
+        // A seam between surfaces: every marked patch meets another at a corner.
+        for (size_t k = first; k < first + n; ++k) {
+            bool meets = false;
+            for (size_t j = first; j < first + n && !meets; ++j)
+                meets = arena_[j].patch != arena_[k].patch &&
+                        share_corner(ps_.patches[arena_[k].patch].patch,
+                                     ps_.patches[arena_[j].patch].patch);
+            if (!meets) return RenderStats::surfaces;
+        }
+        return RenderStats::surface_seam;
+    }
+    static bool share_corner(const BezierPatch& p, const BezierPatch& q) {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const Vec3 d = p.corner(i) - q.corner(j);
+                const double scale = 1e-9 * (1 + norm(p.corner(i)));
+                if (std::abs(d.x) <= scale && std::abs(d.y) <= scale && std::abs(d.z) <= scale)
+                    return true;
+            }
+        return false;
     }
 
     // Steps 7 to 9. Returns -1 if B was painted, else why not (RenderStats::SplitCause).

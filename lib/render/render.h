@@ -66,13 +66,16 @@ struct RenderStats {
     // a B of at most pixel_subscreen pixels) under the cause that made its nearest
     // attempting ancestor split (SplitCause::none: no ancestor attempted).
     enum SplitCause {
-        none,        // no step 7 attempt above it (e.g. a mark crossing the eye plane)
-        seam,        // certificate failed, the marks hold several patches of one surface
-        surfaces,    // certificate failed, patches of several surfaces marked
-        one_patch,   // certificate failed on the only marked patch (silhouette, fold)
-        not_nearest, // certified, but another patch is not q-separated (behind it)
-        light,       // SHADE step 2: a light undecided for the cluster
-        span,        // step 9: the intensity enclosure spans too many levels
+        none,         // no step 7 attempt above it (e.g. a mark crossing the eye plane)
+        seam,         // certificate failed, the marks hold several patches of one surface
+        surfaces,     // certificate failed, patches of several surfaces marked (not all
+                      // meeting at corners: silhouettes over another surface, overlaps)
+        one_patch,    // certificate failed on the only marked patch (silhouette, fold)
+        not_nearest,  // certified, but another patch is not q-separated (behind it)
+        light,        // SHADE step 2: a light undecided for the cluster
+        span,         // step 9: the intensity enclosure spans too many levels
+        surface_seam, // certificate failed, patches of several surfaces marked, each
+                      // sharing a corner with another (a seam between surfaces)
         split_causes
     };
     std::array<long long, split_causes> attempts_failed{}, single_pixels_by_cause{};
