@@ -17,6 +17,17 @@
 
 namespace seamless::cli {
 
+// INTRACY's failed step 7-9 attempts and single pixels by cause (RenderStats::SplitCause).
+nlohmann::json split_causes_json(const RenderStats& st) {
+    static const char* const names[RenderStats::split_causes] = {
+        "none", "seam", "surfaces", "one_patch", "not_nearest", "light", "span", "surface_seam"};
+    nlohmann::json j = nlohmann::json::object();
+    for (int i = 0; i < RenderStats::split_causes; ++i)
+        j[names[i]] = {{"attempts_failed", st.attempts_failed[i]},
+                       {"single_pixels", st.single_pixels_by_cause[i]}};
+    return j;
+}
+
 nlohmann::json stats_json(const RenderStats& st) {
     nlohmann::json sizes = nlohmann::json::object();
     for (const auto& [size, n] : st.subscreens_by_size) sizes[std::to_string(size)] = n;
@@ -46,6 +57,9 @@ nlohmann::json stats_json(const RenderStats& st) {
             {"mark_bisections", st.mark_bisections},
             {"pixel_patch_solves", st.pixel_patch_solves},
             {"pixel_newton_certified", st.pixel_newton_certified},
+            {"split_causes", split_causes_json(st)},
+            {"nearest_by_plane", st.nearest_by_plane},
+            {"lights_blocked_by_surface", st.lights_blocked_by_surface},
             {"step_seconds",
              {{"narrowing", st.narrow_seconds},
               {"certificate", st.certify_seconds},

@@ -5,6 +5,7 @@
 #include <seamless/render/ray_cluster.h>
 #include <seamless/render/step_clock.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace seamless {
@@ -20,8 +21,8 @@ IVec<3> ivec(const V3<Interval>& a) {
 } // namespace
 
 ClusterShader::ClusterShader(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
-                             int levels, bool dither)
-    : ps_(ps), scene_(scene), ts_(ts), levels_(levels), dither_(dither),
+                             const std::vector<int>* neighbours, int levels, bool dither)
+    : ps_(ps), scene_(scene), ts_(ts), neighbours_(neighbours), levels_(levels), dither_(dither),
       scene_diagonal_(next_up(norm(control_box(scene.model).extent()))),
       lighting_depth_(static_cast<size_t>(scene.max_depth) + 1) {}
 
@@ -180,9 +181,11 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
         const ClusterHull ch(rc);
         // A certain blocker is rare (one triangle must cover every ray), so
         // only the first kBlockerTries triangles that may meet the cluster are
-        // tried; after that the light is undecided (split B) at once.
+        // tried, as blockers and then as seeds of a blocking surface
+        // (ray_cluster.h); after that the light is undecided (split B).
         bool maybe = false, blocked = false;
         int tries = 0;
+        int seeds[kBlockerTries];
         visit_candidate_triangles(
             ts_->tess.trees,
             [&](const Box3& b) { return !blocked && tries < kBlockerTries && ch.may_meet(b); },
@@ -195,12 +198,19 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
                     !may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]]))
                     return;
                 maybe = true;
-                ++tries;
+                seeds[tries++] = t;
                 Interval q;
                 if (covers_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q) && q.lo() > 0 &&
                     q.hi() < q_max)
                     blocked = true;
             });
+        for (int k = 0; k < tries && !blocked && neighbours_; ++k) {
+            blocked = pyramid_blocked_by_surface(light.position, Pw, q_max, seeds[k],
+                                                 ts_->tess.mesh.positions, ts_->tess.mesh.triangles,
+                                                 *neighbours_, ts_->triangle_patch, patch,
+                                                 kMaxBlockerSurface, surface_);
+            r.by_surface += blocked;
+        }
         if (blocked) {
             ++r.blocked;
             continue;
@@ -221,10 +231,21 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
     const PatchEnclosure e = enclose(pp.forms, box);
     const V3<Interval> P = v3(e.point), N = v3(e.normal);
     const Material& mat = ps_.lighting.materials[pp.material];
+    // The points in world coordinates: the rotated camera box, cut down to
+    // the box from the world-space forms (both enclose every point).
+    IVec<3> Pw = to_world(e.point, true);
+    if (ts_) {
+        const IVec3 W = enclose_point(pp.world, box);
+        for (int i = 0; i < 3; ++i) {
+            const Interval x = intersect(Pw[i], W[i]);
+            if (!x.is_empty()) Pw[i] = x;
+        }
+    }
     // With secondary rays, only the lights that reach B count (step 2), and
     // mirrors and glass add their reflected and refracted clusters (steps 3, 4).
     if (ts_) {
-        const ClusterLights cl = lights(to_world(e.point, true), patch, mat, lighting_.lights);
+        const ClusterLights cl = lights(Pw, patch, mat, lighting_.lights);
+        st.lights_blocked_by_surface += cl.by_surface;
         if (!cl.decided) return r;
         r.shadowed = cl.blocked > 0;
         for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
@@ -239,7 +260,7 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
             if (quantise(r.I[c].hi(), levels_) - quantise(r.I[c].lo(), levels_) > (dither_ ? 1 : 0))
                 return r;
         const StepClock clock(st.secondary_seconds);
-        const IVec<3> Pw = to_world(e.point, true), Nw = to_world(e.normal, false);
+        const IVec<3> Nw = to_world(e.normal, false);
         IVec<3> D;
         for (int i = 0; i < 3; ++i) D[i] = Pw[i] - Interval(ps_.frame.eye[i]);
         if (!add_secondary(Pw, D, Nw, mat, patch, 1, r.I)) return r;

@@ -4,12 +4,13 @@
 // patch, INTRACY step 8): the local illumination over the hulls; with
 // secondary rays in play (a triangle scene), step 2's lights that reach every
 // point of B (Proposition 11 with remarks 1-2, Theorem 6 iii for a certain
-// blocker), and steps 3-4's reflected and refracted clusters, recursively up
-// to the scene's maximum depth. Every answer encloses the intensity of every
-// ray of B; where a case is undecided for the cluster the answer is "split B".
+// blocker, one triangle or a surface of them: ray_cluster.h), and steps 3-4's reflected and
+// refracted clusters, recursively up to the scene's maximum depth. Every answer encloses the
+// intensity of every ray of B; where a case is undecided for the cluster the answer is "split B".
 #pragma once
 
 #include <seamless/render/projection.h>
+#include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
 #include <seamless/render/trace.h>
@@ -31,7 +32,8 @@ struct ClusterShading {
 // light may reach some points and not others.
 struct ClusterLights {
     bool decided = true;
-    int blocked = 0; // lights certainly blocked for every point
+    int blocked = 0;    // lights certainly blocked for every point
+    int by_surface = 0; // of those, blocked by a surface of triangles (ray_cluster.h)
 };
 
 class ClusterShader {
@@ -39,8 +41,10 @@ class ClusterShader {
     // ts: null when no secondary rays are in play. levels, dither: the
     // painting rule of step 9, to stop before tracing secondary clusters
     // when the local terms alone already span too many levels.
-    ClusterShader(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts, int levels,
-                  bool dither);
+    // neighbours: triangle_neighbours(ts->tess.mesh.triangles) (ray_cluster.h),
+    // for lights blocked by a surface of triangles; null with ts null.
+    ClusterShader(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
+                  const std::vector<int>* neighbours, int levels, bool dither);
 
     // SHADE for every ray of B hitting patch `patch` within `box` (camera
     // coordinates). Secondary clusters' CPU seconds go to st.secondary_seconds.
@@ -58,17 +62,21 @@ class ClusterShader {
     bool secondary_cluster(const IVec<3>& origin, const IVec<3>& dir, int skip_patch, int depth,
                            std::array<Interval, 3>& out);
 
-    static constexpr int kBlockerTries = 4; // per light and cluster (lights())
+    static constexpr int kBlockerTries = 4;         // per light and cluster (lights())
+    static constexpr int kMaxBlockerSurface = 4096; // triangles of a blocking surface
 
     const ProjectedScene& ps_;
     const Scene& scene_;
     const TriangleScene* ts_;
+    const std::vector<int>* neighbours_;
     int levels_;
     bool dither_;
     double scene_diagonal_; // bounds every segment inside the scene (convex hull property)
     Scene lighting_; // scratch: ambient and the lights that reach a cluster, camera coordinates
     // the same for secondary clusters' hits, one per depth, world coordinates
     std::vector<Scene> lighting_depth_;
+    // scratch of lights(): the triangles that may meet a light's pyramid
+    mutable SurfaceScratch surface_;
 };
 
 } // namespace seamless

@@ -42,6 +42,7 @@
 #include <seamless/render/pixel_solve.h>
 #include <seamless/render/primary_cluster.h>
 #include <seamless/render/projection.h>
+#include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
 #include <seamless/render/step_clock.h>
@@ -52,6 +53,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -63,6 +65,7 @@ struct SubScreen {
     size_t offset, count; // its marks in the arena
     size_t coef_end;      // end of its marks' subpatches in the coefficient arena
     bool attempt;         // try step 7 (false: its parent's intensity was far too wide)
+    int cause;            // why its nearest attempting ancestor split (RenderStats::SplitCause)
 };
 
 // SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
@@ -97,9 +100,10 @@ double dither(int x, int y, int c) {
 class PartRenderer {
   public:
     PartRenderer(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
-                 const RenderOptions& opt, Image& image, int levels)
+                 const std::vector<int>* neighbours, const RenderOptions& opt, Image& image,
+                 int levels)
         : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels),
-          shader_(ps, scene, ts, levels, opt.dither) {
+          shader_(ps, scene, ts, neighbours, levels, opt.dither) {
         const Vec3 bg = ps.lighting.background;
         for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
     }
@@ -113,7 +117,8 @@ class PartRenderer {
             arena_.push_back(
                 whole_patch_mark(static_cast<int>(k), pp.patch, pp.shape, pp.hull, coefs_));
         }
-        stack_.push_back({x0, y0, x1, y1, 0, arena_.size(), coefs_.size(), true});
+        stack_.push_back(
+            {x0, y0, x1, y1, 0, arena_.size(), coefs_.size(), true, RenderStats::none});
         const long long enclosures0 = range_enclosure_count();
         const PartCpuScale cpu;
         while (!stack_.empty()) {
@@ -226,7 +231,12 @@ class PartRenderer {
         if (improve(B, first, nmarks, st)) return;
         // Step 7: a nearest q-separated patch that certainly covers B.
         levels_over_ = 0;
-        if (B.attempt && try_paint(B, first, nmarks, st)) return;
+        int cause = B.cause;
+        if (B.attempt) {
+            cause = try_paint(B, first, nmarks, st);
+            if (cause < 0) return;
+            ++st.attempts_failed[cause];
+        }
         // Step 9 failed by far: the children's enclosures (about half as wide)
         // would fail too; they split at once and their children try again.
         const bool kids_attempt = levels_over_ <= 2 * ((opt_.dither ? 1 : 0) + 1);
@@ -236,16 +246,16 @@ class PartRenderer {
         SubScreen kids[4];
         int nk = 0;
         if (w > 1 && h > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0, 0, true};
-            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0, 0, true};
-            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0, 0, true};
-            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0, 0, true};
+            kids[nk++] = {B.x0, B.y0, xm, ym, 0, 0, 0, true, cause};
+            kids[nk++] = {xm + 1, B.y0, B.x1, ym, 0, 0, 0, true, cause};
+            kids[nk++] = {B.x0, ym + 1, xm, B.y1, 0, 0, 0, true, cause};
+            kids[nk++] = {xm + 1, ym + 1, B.x1, B.y1, 0, 0, 0, true, cause};
         } else if (w > 1) {
-            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0, 0, true};
-            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0, 0, true};
+            kids[nk++] = {B.x0, B.y0, xm, B.y1, 0, 0, 0, true, cause};
+            kids[nk++] = {xm + 1, B.y0, B.x1, B.y1, 0, 0, 0, true, cause};
         } else {
-            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0, 0, true};
-            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0, 0, true};
+            kids[nk++] = {B.x0, B.y0, B.x1, ym, 0, 0, 0, true, cause};
+            kids[nk++] = {B.x0, ym + 1, B.x1, B.y1, 0, 0, 0, true, cause};
         }
         // Each child gets the marks of B (already at the top of the arena for
         // the first; copies for the others). Pushed in reverse so the first is next.
@@ -254,6 +264,7 @@ class PartRenderer {
             kids[i].count = nmarks;
             kids[i].coef_end = coefs_.size();
             kids[i].attempt = kids_attempt;
+            kids[i].cause = cause;
         }
         // All children share one mark list: a child's processing truncates the
         // arena to offset+count before appending, so the list survives for the next.
@@ -271,7 +282,7 @@ class PartRenderer {
                       screen_b(B.y0, B.y1));
         for (int y = B.y0; y <= B.y1; ++y)
             for (int x = B.x0; x <= B.x1; ++x) {
-                const SubScreen pixel{x, y, x, y, 0, 0, 0, true};
+                const SubScreen pixel{x, y, x, y, 0, 0, 0, true, B.cause};
                 const PixelHit h =
                     solve_pixel(ps_, ps_.frame.screen_a(x + 0.5), ps_.frame.screen_b(y + 0.5),
                                 nullptr, 0, pixel_, st, &shared_);
@@ -293,6 +304,7 @@ class PartRenderer {
     }
     void paint_hit(const SubScreen& B, const PixelHit& h, RenderStats& st) {
         ++st.single_pixels;
+        ++st.single_pixels_by_cause[B.cause];
         if (h.patch < 0) {
             paint_background(B.x0, B.y0, B.x0, B.y0, st);
         } else {
@@ -347,8 +359,57 @@ class PartRenderer {
         return false;
     }
 
-    // Steps 7 to 9. Returns true if B was painted.
-    bool try_paint(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
+    // The normal of the best patch at the middle of its box, turned so that
+    // every ray of B crosses planes with that normal forward: a point X = Z d of
+    // a ray d = (a, b, 1) then has n . X = Z (n . d), growing with the depth Z.
+    // So where all points of one patch satisfy n . X < c and all of another
+    // n . X > c, the first is nearer on every ray of B that meets both (a plane
+    // separating them, with the eye on the first one's side along the rays).
+    // false when n . d may vanish on B.
+    static bool separating_normal(const ProjectedPatch& pp, const ParamBox& box, Interval a,
+                                  Interval b, Vec3& n) {
+        Vec3 P;
+        surface_frame(pp.patch, box.s.mid(), box.t.mid(), P, n);
+        const Interval nd = Interval(n.x) * a + Interval(n.y) * b + Interval(n.z);
+        if (nd.hi() < 0) n = -1.0 * n;
+        return nd.lo() > 0 || nd.hi() < 0;
+    }
+
+    // Why the certificate failed on marks first..first+n (RenderStats::SplitCause).
+    int certificate_cause(size_t first, size_t n) const {
+        const int p0 = arena_[first].patch;
+        bool one_surface = true, one_patch = true;
+        for (size_t k = first; k < first + n; ++k) {
+            const int p = arena_[k].patch;
+            one_patch &= p == p0;
+            one_surface &= ps_.patches[p].patch.surface == ps_.patches[p0].patch.surface;
+        }
+        if (one_patch) return RenderStats::one_patch;
+        if (one_surface) return RenderStats::seam;
+        // A seam between surfaces: every marked patch meets another at a corner.
+        for (size_t k = first; k < first + n; ++k) {
+            bool meets = false;
+            for (size_t j = first; j < first + n && !meets; ++j)
+                meets = arena_[j].patch != arena_[k].patch &&
+                        share_corner(ps_.patches[arena_[k].patch].patch,
+                                     ps_.patches[arena_[j].patch].patch);
+            if (!meets) return RenderStats::surfaces;
+        }
+        return RenderStats::surface_seam;
+    }
+    static bool share_corner(const BezierPatch& p, const BezierPatch& q) {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const Vec3 d = p.corner(i) - q.corner(j);
+                const double scale = 1e-9 * (1 + norm(p.corner(i)));
+                if (std::abs(d.x) <= scale && std::abs(d.y) <= scale && std::abs(d.z) <= scale)
+                    return true;
+            }
+        return false;
+    }
+
+    // Steps 7 to 9. Returns -1 if B was painted, else why not (RenderStats::SplitCause).
+    int try_paint(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
         // Depth (q) intervals. The marks of one patch (halves of bisections,
         // separated pieces) are taken together: their hull box holds every hit
         // of that patch in B. The nearest patch must be q-separated from all
@@ -362,7 +423,7 @@ class PartRenderer {
                 best_patch = arena_[k].patch;
             }
         }
-        if (best_patch < 0) return false;
+        if (best_patch < 0) return RenderStats::none;
         ParamBox box{Interval::empty(), Interval::empty()};
         for (size_t k = first; k < first + n; ++k)
             if (arena_[k].patch == best_patch) {
@@ -374,32 +435,46 @@ class PartRenderer {
             const StepClock clock(st.certify_seconds);
             const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
             cluster_system(pp.forms, a, b, sys_);
-            if (!certify_cluster(sys_, box, &st.hs_steps)) return false;
+            if (!certify_cluster(sys_, box, &st.hs_steps)) return certificate_cause(first, n);
             const Interval qbest = enclose_point(pp.forms, box)[2];
-            if (!(qbest.lo() > 0)) return false;
+            if (!(qbest.lo() > 0)) return certificate_cause(first, n);
+            // Nearest: every other mark q-separated from it, or, where depths
+            // overlap, beyond a plane that the best patch's marks lie before.
+            Interval best_range = Interval::empty();
+            Vec3 normal{};
             for (size_t k = first; k < first + n; ++k) {
                 if (arena_[k].patch == best_patch) continue;
-                const Interval q = arena_[k].hull[2];
-                if (q.lo() <= qbest.hi()) return false; // not a nearest q-connected set of one
+                if (arena_[k].hull[2].lo() > qbest.hi()) continue;
+                if (best_range.is_empty()) {
+                    if (!separating_normal(pp, box, a, b, normal)) return RenderStats::not_nearest;
+                    for (size_t j = first; j < first + n; ++j)
+                        if (arena_[j].patch == best_patch)
+                            best_range =
+                                hull(best_range, plane_range(coefs_, pp.shape, arena_[j], normal));
+                }
+                const Interval r =
+                    plane_range(coefs_, ps_.patches[arena_[k].patch].shape, arena_[k], normal);
+                if (!(r.lo() > best_range.hi())) return RenderStats::not_nearest;
             }
+            st.nearest_by_plane += !best_range.is_empty();
         }
         const StepClock shading(st.shade_seconds);
         const Mark m{best_patch, box, {}};
         // Step 8: SHADE (cluster_shade.h).
         const ClusterShading cs = shader_.enclose_intensity(best_patch, box, st);
-        if (!cs.decided) return false;
+        if (!cs.decided) return RenderStats::light;
         const auto& I = cs.I;
         const bool secondary = cs.secondary, shadowed = cs.shadowed;
         int lo[3], hi[3];
         bool two = false;
         for (int c = 0; c < 3; ++c) {
-            if (!I[c].is_finite()) return false;
+            if (!I[c].is_finite()) return RenderStats::span;
             lo[c] = quantise(I[c].lo(), levels_);
             hi[c] = quantise(I[c].hi(), levels_);
             levels_over_ = std::max(levels_over_, hi[c] - lo[c]);
         }
         for (int c = 0; c < 3; ++c) {
-            if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return false;
+            if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return RenderStats::span;
             two |= hi[c] > lo[c];
         }
         st.secondary_clusters += secondary;
@@ -412,7 +487,7 @@ class PartRenderer {
                     image_.surface_at(x, y) = 1;
                 }
             count(B, st);
-            return true;
+            return -1;
         }
         // Step 9 with remark 2: corner rays, bilinear form, dither.
         std::array<double, 3> corner[4];
@@ -449,7 +524,7 @@ class PartRenderer {
             }
         }
         count(B, st);
-        return true;
+        return -1;
     }
 
     const ProjectedScene& ps_;
@@ -482,9 +557,11 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     // scene without lit diffuse or specular surfaces and without mirrors or
     // glass needs none, and gets none.
     std::unique_ptr<TriangleScene> ts;
+    std::vector<int> neighbours; // for shadows by a surface of triangles (ray_cluster.h)
     if (needs_secondary_rays(scene)) {
         ts = std::make_unique<TriangleScene>(build_triangle_scene(scene));
         st.triangles = ts->tess.mesh.triangle_count();
+        neighbours = triangle_neighbours(ts->tess.mesh.triangles);
     }
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -500,7 +577,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
         const int i = p % px, j = p / px;
         const int x0 = i * W / px, x1 = (i + 1) * W / px - 1;
         const int y0 = j * H / py, y1 = (j + 1) * H / py - 1;
-        PartRenderer r(ps, scene, ts.get(), opt, image, L);
+        PartRenderer r(ps, scene, ts.get(), ts ? &neighbours : nullptr, opt, image, L);
         r.run(x0, y0, x1, y1, part_stats[p]);
         const int d = ++done;
         if (opt.progress) opt.progress(static_cast<double>(d) / parts);

@@ -143,4 +143,22 @@ int separate_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b
     return 1;
 }
 
+Interval plane_range(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, const Vec3& n) {
+    const Interval* c = &arena[m.coef];
+    Interval r = Interval::empty();
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            Interval v = Interval(n.x) * c[sh.index(0, i, j)] +
+                         Interval(n.y) * c[sh.index(1, i, j)] +
+                         Interval(n.z) * c[sh.index(2, i, j)];
+            if (sh.dim == 4) {
+                const Interval w = c[sh.index(3, i, j)];
+                if (!(w.lo() > 0)) return Interval::entire();
+                v = v / w;
+            }
+            r = hull(r, v);
+        }
+    return r;
+}
+
 } // namespace seamless

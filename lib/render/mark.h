@@ -78,4 +78,9 @@ void bisect_mark(SubpatchArena& arena, SubpatchShape sh, const Mark& m, int dir,
 int separate_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, const Mark& m,
                   Mark out[2]);
 
+// The range of n . X over the points X of m's subpatch: the hull of n . P over
+// its control points P (convex hull property; the weights must be positive,
+// else entire).
+Interval plane_range(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, const Vec3& n);
+
 } // namespace seamless

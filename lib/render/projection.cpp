@@ -18,9 +18,10 @@ ProjectedScene project_scene(const Scene& scene, int width, int height) {
         if (l.on()) ps.lighting.lights.push_back({ps.frame.to_camera(l.position), l.color});
     for (size_t k = 0; k < scene.model.surfaces.size(); ++k) {
         for (BezierPatch b : bezier_patches(scene.model.surfaces[k], static_cast<int>(k))) {
+            ProjectedPatch pp;
+            pp.world = patch_forms(b);
             for (int i = 0; i <= b.p; ++i)
                 for (int j = 0; j <= b.q; ++j) b.at(i, j) = ps.frame.to_camera(b.at(i, j));
-            ProjectedPatch pp;
             pp.patch = b;
             pp.forms = patch_forms(b);
             pp.hull = enclose_point(pp.forms, ParamBox{});

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/ray_cluster.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
+#include <unordered_map>
 
 #include <seamless/interval/gauss_seidel.h>
 #include <seamless/interval/hansen_sengupta.h>
@@ -192,6 +195,108 @@ bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2,
         const IV3 m = icross(isub(P, L), isub(Q, L));
         const Interval inner = idot(m, isub(R, L)), box = idot(m, isub(E, L));
         if ((inner.lo() > 0 && box.hi() < 0) || (inner.hi() < 0 && box.lo() > 0)) return false;
+    }
+    return true;
+}
+
+std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& triangles) {
+    // Directed edge (u, v) -> 3 t + e of the triangle traversing it; -1: several.
+    std::unordered_map<std::uint64_t, int> directed;
+    directed.reserve(triangles.size() * 3);
+    auto key = [](int u, int v) {
+        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) |
+               static_cast<std::uint32_t>(v);
+    };
+    for (size_t t = 0; t < triangles.size(); ++t)
+        for (int e = 0; e < 3; ++e) {
+            const auto [it, fresh] = directed.emplace(
+                key(triangles[t][e], triangles[t][(e + 1) % 3]), static_cast<int>(3 * t + e));
+            if (!fresh) it->second = -1;
+        }
+    std::vector<int> out(triangles.size() * 3, -1);
+    for (size_t t = 0; t < triangles.size(); ++t)
+        for (int e = 0; e < 3; ++e) {
+            const int u = triangles[t][e], v = triangles[t][(e + 1) % 3];
+            const auto other = directed.find(key(v, u));
+            if (directed.at(key(u, v)) >= 0 && other != directed.end() && other->second >= 0)
+                out[3 * t + e] = other->second / 3;
+        }
+    return out;
+}
+
+bool pyramid_blocked_by_surface(Vec3 apex, const IVec<3>& ends, double q_max, int seed,
+                                const std::vector<Vec3>& positions,
+                                const std::vector<std::array<int, 3>>& triangles,
+                                const std::vector<int>& neighbours, const std::vector<int>& group,
+                                int skip, int max_size, SurfaceScratch& scratch) {
+    if (group[seed] == skip) return false;
+    const IV3 L = iv(apex), E{ends[0], ends[1], ends[2]};
+    const Vec3 mid{ends[0].mid(), ends[1].mid(), ends[2].mid()};
+    // The plane across the pyramid: normal n towards the midpoint; a point X
+    // on the ray to P in the box lies at q = n.(X - L) / n.(P - L).
+    const IV3 n = isub(iv(mid), L);
+    const Interval reach = idot(n, isub(E, L));
+    if (!(reach.lo() > 0)) return false;
+    const double depth_max = (Interval(q_max) * Interval(reach.lo())).lo();
+    auto vertex = [&](int t, int k) { return positions[triangles[t][k]]; };
+    // c) first: the ray to the midpoint meets the seed.
+    RayCluster ray;
+    for (int i = 0; i < 3; ++i) {
+        ray.origin[i] = L[i];
+        ray.direction[i] = n[i];
+    }
+    Interval q;
+    if (!covers_triangle(ray, vertex(seed, 0), vertex(seed, 1), vertex(seed, 2), q)) return false;
+    // The seed's orientation seen from the apex.
+    auto facing = [&](int t) {
+        const IV3 A = iv(vertex(t, 0)), B = iv(vertex(t, 1)), C = iv(vertex(t, 2));
+        const Interval f = idot(icross(isub(B, A), isub(C, A)), isub(A, L));
+        return f.lo() > 0 ? 1 : f.hi() < 0 ? -1 : 0;
+    };
+    // a)'s depth: n.(X - L) over the triangle's bounding box (each coordinate
+    // enters once, so the range is exact up to rounding).
+    auto between = [&](int t) {
+        const Vec3 A = vertex(t, 0), B = vertex(t, 1), C = vertex(t, 2);
+        const IV3 X{Interval(std::min({A.x, B.x, C.x}), std::max({A.x, B.x, C.x})),
+                    Interval(std::min({A.y, B.y, C.y}), std::max({A.y, B.y, C.y})),
+                    Interval(std::min({A.z, B.z, C.z}), std::max({A.z, B.z, C.z}))};
+        const Interval d = idot(n, isub(X, L));
+        return d.lo() > 0 && d.hi() < depth_max;
+    };
+    const int sigma = facing(seed);
+    if (sigma == 0 || !between(seed)) return false;
+    // An edge U V misses the pyramid when the box lies strictly on one side of
+    // the plane through the apex, U and V: that plane meets the pyramid only at
+    // the apex, which is then not on the line U V.
+    auto edge_misses = [&](int t, int e) {
+        const IV3 U = iv(vertex(t, e)), V = iv(vertex(t, (e + 1) % 3));
+        const IV3 m = icross(isub(U, L), isub(V, L));
+        const Interval side = idot(m, isub(E, L));
+        return side.lo() > 0 || side.hi() < 0;
+    };
+    auto& stamp = scratch.stamp;
+    if (stamp.size() != triangles.size() || scratch.epoch == ~0u) {
+        stamp.assign(triangles.size(), 0);
+        scratch.epoch = 0;
+    }
+    const unsigned in_s = ++scratch.epoch;
+    auto& stack = scratch.stack;
+    stack.assign(1, seed);
+    stamp[seed] = in_s;
+    int size = 1;
+    while (!stack.empty()) {
+        const int t = stack.back();
+        stack.pop_back();
+        for (int e = 0; e < 3; ++e) {
+            if (edge_misses(t, e)) continue; // a border of S that the pyramid misses
+            const int nb = neighbours[3 * static_cast<size_t>(t) + e];
+            if (nb < 0) return false;
+            if (stamp[nb] == in_s) continue;
+            if (group[nb] == skip || ++size > max_size || facing(nb) != sigma || !between(nb))
+                return false;
+            stamp[nb] = in_s;
+            stack.push_back(nb);
+        }
     }
     return true;
 }

@@ -32,6 +32,12 @@ void RenderStats::merge(const RenderStats& o) {
     shade_seconds += o.shade_seconds;
     secondary_seconds += o.secondary_seconds;
     single_pixel_seconds += o.single_pixel_seconds;
+    nearest_by_plane += o.nearest_by_plane;
+    lights_blocked_by_surface += o.lights_blocked_by_surface;
+    for (int i = 0; i < split_causes; ++i) {
+        attempts_failed[i] += o.attempts_failed[i];
+        single_pixels_by_cause[i] += o.single_pixels_by_cause[i];
+    }
 }
 
 Image render(const Scene& scene, const RenderOptions& opt, RenderStats* stats) {

@@ -8,6 +8,7 @@
 #include <seamless/render/image.h>
 #include <seamless/render/scene.h>
 
+#include <array>
 #include <functional>
 #include <map>
 #include <string>
@@ -60,6 +61,28 @@ struct RenderStats {
               mark_bisections = 0; // step 3: Theorem 10 calls, covering bisections
     double narrow_seconds = 0, certify_seconds = 0, shade_seconds = 0, secondary_seconds = 0,
            single_pixel_seconds = 0;
+    // INTRACY: why sub-screens split down to single pixels. Each failed step 7-9
+    // attempt counts under its cause, and each pixel solved on its own (step 6, or
+    // a B of at most pixel_subscreen pixels) under the cause that made its nearest
+    // attempting ancestor split (SplitCause::none: no ancestor attempted).
+    enum SplitCause {
+        none,         // no step 7 attempt above it (e.g. a mark crossing the eye plane)
+        seam,         // certificate failed, the marks hold several patches of one surface
+        surfaces,     // certificate failed, patches of several surfaces marked (not all
+                      // meeting at corners: silhouettes over another surface, overlaps)
+        one_patch,    // certificate failed on the only marked patch (silhouette, fold)
+        not_nearest,  // certified, but another patch is not q-separated (behind it)
+        light,        // SHADE step 2: a light undecided for the cluster
+        span,         // step 9: the intensity enclosure spans too many levels
+        surface_seam, // certificate failed, patches of several surfaces marked, each
+                      // sharing a corner with another (a seam between surfaces)
+        split_causes
+    };
+    std::array<long long, split_causes> attempts_failed{}, single_pixels_by_cause{};
+    // Step 7 certificates of "nearest" that needed a separating plane (depths of
+    // another marked patch overlapping), and SHADE step 2 lights found blocked
+    // by a surface of triangles rather than one.
+    long long nearest_by_plane = 0, lights_blocked_by_surface = 0;
 
     double single_pixel_fraction() const {
         return width > 0 && height > 0

@@ -90,3 +90,40 @@ TEST_CASE("INTRACY gives the same image sequentially and in parallel", "[intracy
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
     test::check_threads_agree(scene, RenderMethod::intracy, 80, 60);
 }
+
+namespace {
+
+// A flat bicubic plate over [x0, x1] x [y0, y1] at height z.
+nlohmann::json plate(const std::string& name, double x0, double x1, double y0, double y1,
+                     double z) {
+    nlohmann::json pts = nlohmann::json::array();
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            pts.push_back({x0 + (x1 - x0) * i / 3, y0 + (y1 - y0) * j / 3, z});
+    return {{"name", name},
+            {"degree", {3, 3}},
+            {"size", {4, 4}},
+            {"knots_u", {0, 0, 0, 0, 1, 1, 1, 1}},
+            {"knots_v", {0, 0, 0, 0, 1, 1, 1, 1}},
+            {"control_points", pts}};
+}
+
+} // namespace
+
+TEST_CASE("INTRACY with a thin plate lying just above another and casting its shadow",
+          "[intracy]") {
+    // Depths of the floor and the mat overlap over a sub-screen (step 7 needs
+    // the separating plane), and the floating roof's shadow on the floor is
+    // blocked by a surface of its triangles, not by one.
+    auto dir = test::scratch_dir("intracy-plates");
+    const nlohmann::json model = {
+        {"version", 1},
+        {"surfaces",
+         {plate("floor", -1, 1, -1, 1, 0), plate("mat", -0.45, 0.35, -0.4, 0.3, 0.01),
+          plate("roof", 0.2, 0.9, -0.95, -0.35, 0.5)}}};
+    const Renders r =
+        render_all(test::one_model_scene(dir, model.dump(), {0.5, -2.5, 2.0}, {0, 0, 0}), 96, 72);
+    check_against_reference(r);
+    CHECK(r.stats.nearest_by_plane > 0);
+    CHECK(r.stats.lights_blocked_by_surface > 0);
+}

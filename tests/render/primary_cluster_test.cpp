@@ -4,6 +4,7 @@
 // and a certified box holds exactly one hit of every ray.
 #include <seamless/render/mark.h>
 #include <seamless/render/primary_cluster.h>
+#include <seamless/render/projection.h>
 #include <seamless/spline/ray_patch.h>
 
 #include <catch2/catch.hpp>
@@ -126,4 +127,39 @@ TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[prima
     }
     CHECK(narrowed > 50);
     INFO("separated " << separated);
+}
+
+TEST_CASE("A mark's plane range holds n . X of every point over its box", "[primary_cluster]") {
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<double> U(-1, 1), Wt(0.5, 2.0), F(0.0, 1.0);
+    int narrower = 0;
+    for (int n = 0; n < 100; ++n) {
+        BezierPatch b = dome(rng);
+        if (n % 2) { // rational: every control point with its own weight
+            b.rational = true;
+            for (int i = 0; i <= 3; ++i)
+                for (int j = 0; j <= 3; ++j) b.at(i, j) = HPoint::from(b.point(i, j), Wt(rng));
+        }
+        const SubpatchShape sh = subpatch_shape(b);
+        SubpatchArena arena(sh.size());
+        control_coefficients(b, sh, arena.data());
+        const Vec3 normal{U(rng), U(rng), U(rng)};
+        Mark m{0, ParamBox{}, IVec3{}, 0};
+        const Interval whole = plane_range(arena, sh, m, normal);
+        for (int k = 0; k < 1 + n % 4; ++k) { // a sub-box, as a deeper sub-screen's mark
+            Mark half[2];
+            bisect_mark(arena, sh, m, k % 2, half);
+            m = half[(n >> k) & 1];
+        }
+        const Interval r = plane_range(arena, sh, m, normal);
+        narrower += r.width() < 0.75 * whole.width();
+        for (int k = 0; k < 50; ++k) {
+            const double s = m.box.s.lo() + F(rng) * m.box.s.width();
+            const double t = m.box.t.lo() + F(rng) * m.box.t.width();
+            Vec3 P, N;
+            surface_frame(b, s, t, P, N);
+            CHECK(r.contains(dot(normal, P)));
+        }
+    }
+    CHECK(narrower > 50);
 }

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 using namespace seamless;
@@ -190,4 +191,129 @@ TEST_CASE("A light's pyramid declared to miss a triangle has no segment that hit
     CHECK(misses > 300);
     CHECK(hits_seen > 300);
     CHECK(tighter > 0); // it decides clusters that Proposition 11's test leaves open
+}
+
+namespace {
+
+// A wavy height field over [-1, 1]^2 at z about 1, n x n squares, two
+// triangles each, counter-clockwise seen from above; `hole`: one triangle left
+// out near the middle.
+struct Sheet {
+    std::vector<Vec3> positions;
+    std::vector<std::array<int, 3>> triangles;
+};
+Sheet wavy_sheet(int n, bool hole) {
+    Sheet s;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            const double x = -1 + 2.0 * i / n, y = -1 + 2.0 * j / n;
+            s.positions.push_back({x, y, 1 + 0.15 * std::sin(3 * x) * std::cos(2 * y)});
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            s.triangles.push_back({a, b, d});
+            if (!(hole && i == n / 2 && j == n / 2)) s.triangles.push_back({a, d, c});
+        }
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("Mesh neighbours: across inner edges, none on the border or a flipped triangle",
+          "[ray_cluster]") {
+    Sheet s = wavy_sheet(3, false);
+    std::vector<int> nb = triangle_neighbours(s.triangles);
+    int inner = 0;
+    for (size_t t = 0; t < s.triangles.size(); ++t)
+        for (int e = 0; e < 3; ++e) {
+            const int o = nb[3 * t + e];
+            if (o < 0) continue;
+            ++inner;
+            // o traverses the edge the other way round
+            const int u = s.triangles[t][e], v = s.triangles[t][(e + 1) % 3];
+            bool found = false;
+            for (int f = 0; f < 3; ++f)
+                found |= s.triangles[o][f] == v && s.triangles[o][(f + 1) % 3] == u;
+            CHECK(found);
+        }
+    CHECK(inner == 2 * (3 * 3 * 3 - 2 * 3));         // 3n^2 - 2n inner edges, seen from both sides
+    std::swap(s.triangles[4][0], s.triangles[4][1]); // misoriented against its neighbours
+    nb = triangle_neighbours(s.triangles);
+    for (int e = 0; e < 3; ++e) CHECK(nb[3 * 4 + e] == -1);
+}
+
+TEST_CASE("A light blocked by a surface of triangles has every segment crossing it",
+          "[ray_cluster]") {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.25);
+    int blocked = 0, beyond_one = 0, open = 0;
+    for (const bool hole : {false, true}) {
+        const Sheet s = wavy_sheet(8, hole);
+        const std::vector<int> nb = triangle_neighbours(s.triangles);
+        const std::vector<int> group(s.triangles.size(), 0);
+        SurfaceScratch scratch;
+        auto hits = [&](Vec3 L, Vec3 e, double q_max) {
+            for (const auto& t : s.triangles)
+                if (segment_hits(L, e - L, 0.0, q_max, s.positions[t[0]], s.positions[t[1]],
+                                 s.positions[t[2]]))
+                    return true;
+            return false;
+        };
+        for (int n = 0; n < 400; ++n) {
+            const Vec3 L{0.5 * U(rng), 0.5 * U(rng), 3 + 0.5 * U(rng)};
+            const Vec3 mid{1.2 * U(rng), 1.2 * U(rng), 0.2 * U(rng)};
+            IVec<3> ends;
+            for (int i = 0; i < 3; ++i) {
+                const double w = W(rng) * (i == 2 ? 0.3 : 1);
+                ends[i] = Interval(mid[i] - w, mid[i] + w);
+            }
+            const double q_max = 1 - 1e-9;
+            // Seed: the triangle the ray to the box's midpoint meets, if any.
+            const Vec3 m{ends[0].mid(), ends[1].mid(), ends[2].mid()};
+            int seed = -1;
+            for (size_t t = 0; t < s.triangles.size() && seed < 0; ++t) {
+                const auto& T = s.triangles[t];
+                if (segment_hits(L, m - L, 0.0, 1.0, s.positions[T[0]], s.positions[T[1]],
+                                 s.positions[T[2]]))
+                    seed = static_cast<int>(t);
+            }
+            if (seed < 0) continue;
+            const bool b = pyramid_blocked_by_surface(L, ends, q_max, seed, s.positions,
+                                                      s.triangles, nb, group, -1, 4096, scratch);
+            // The lit surface may not block: the same surface marked `skip` never does.
+            CHECK_FALSE(pyramid_blocked_by_surface(L, ends, q_max, seed, s.positions, s.triangles,
+                                                   nb, group, 0, 4096, scratch));
+            bool all = true;
+            for (int k = 0; k < 200; ++k) {
+                Vec3 e;
+                for (int i = 0; i < 3; ++i) {
+                    std::uniform_real_distribution<double> pe(ends[i].lo(), ends[i].hi());
+                    e[i] = pe(rng);
+                }
+                all &= hits(L, e, q_max);
+            }
+            if (b) {
+                CHECK(all);
+                ++blocked;
+                // one triangle alone covering the pyramid?
+                RayCluster cl;
+                for (int i = 0; i < 3; ++i) {
+                    cl.origin[i] = Interval(L[i]);
+                    cl.direction[i] = ends[i] - Interval(L[i]);
+                }
+                bool one = false;
+                for (const auto& t : s.triangles) {
+                    Interval q;
+                    one |= covers_triangle(cl, s.positions[t[0]], s.positions[t[1]],
+                                           s.positions[t[2]], q);
+                }
+                beyond_one += !one;
+            }
+            open += !all;
+        }
+    }
+    CHECK(blocked > 100);
+    CHECK(beyond_one > 50); // pyramids no single triangle covers
+    CHECK(open > 20);       // and pyramids reaching past the border or through the hole
 }
