@@ -78,17 +78,50 @@ TEST_CASE("Theorem 10 narrowing keeps every hit of the cluster", "[primary_clust
     CHECK(certified > 100);
 }
 
-TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[primary_cluster]") {
-    std::mt19937 rng(33);
+namespace {
+
+// A fold: X(s) rises and falls back (its control x -0.2, 0.9, 0.9, -0.2), so
+// the rays through a in about (0, 0.1) meet it twice, once on either side of
+// the midline s = 1/2, where separation (remark 3) can split a mark.
+BezierPatch fold(std::mt19937& rng) {
+    std::uniform_real_distribution<double> J(-0.03, 0.03);
+    const double x[4] = {-0.2, 0.9, 0.9, -0.2};
+    BezierPatch b;
+    b.p = b.q = 3;
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 3; ++j)
+            b.at(i, j) =
+                HPoint::from({x[i] + J(rng), -1 + 2.0 * j / 3 + J(rng), 5 + 0.3 * i + J(rng)}, 1.0);
+    return b;
+}
+
+// Clusters in the fold's double-hit band.
+void fold_cluster(std::mt19937& rng, Interval& a, Interval& b) {
+    std::uniform_real_distribution<double> U(0.0, 0.08), V(-0.15, 0.15), W(0.0, 0.01);
+    const double a0 = U(rng), b0 = V(rng);
+    a = Interval(a0, a0 + W(rng));
+    b = Interval(b0, b0 + W(rng));
+}
+
+struct NarrowCounts {
     int narrowed = 0, separated = 0;
+};
+
+// Narrowing, bisection and separation of random patches against random
+// clusters: every sampled hit inside the start box stays in the narrowed box,
+// its enclosures, and one of the separated parts.
+template <class MakePatch, class MakeCluster>
+NarrowCounts narrow_and_separate(std::mt19937& rng, MakePatch make_patch,
+                                 MakeCluster make_cluster) {
+    NarrowCounts c;
     for (int n = 0; n < 200; ++n) {
-        const BezierPatch b = dome(rng);
+        const BezierPatch b = make_patch(rng);
         const PatchForms f = patch_forms(b);
         const SubpatchShape sh = subpatch_shape(b);
         SubpatchArena arena(sh.size());
         control_coefficients(b, sh, arena.data());
         Interval a, bb;
-        random_cluster(rng, a, bb);
+        make_cluster(rng, a, bb);
         Mark m{0, ParamBox{}, IVec3{}, 0};
         // A start box of a quarter or the whole patch, as a child sub-screen's mark.
         if (n % 2) {
@@ -99,13 +132,13 @@ TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[prima
         const ParamBox start = m.box;
         IMat<2> D;
         const bool meets = narrow_mark(arena, sh, a, bb, m, &D);
-        narrowed += meets && m.box.s.width() * m.box.t.width() < 0.25 * start.s.width();
+        c.narrowed += meets && m.box.s.width() * m.box.t.width() < 0.25 * start.s.width();
         Mark parts[2];
         int np = 0;
         if (meets) {
             update_enclosures(arena, sh, m);
             np = separate_mark(arena, sh, a, bb, m, parts);
-            separated += np == 2;
+            c.separated += np == 2;
         }
         for_sampled_rays(rng, f, a, bb, [&](double ra, double rb, const auto& hits) {
             for (const RayPatchHit& h : hits) {
@@ -125,8 +158,19 @@ TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[prima
             }
         });
     }
-    CHECK(narrowed > 50);
-    INFO("separated " << separated);
+    return c;
+}
+
+} // namespace
+
+TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[primary_cluster]") {
+    std::mt19937 rng(33);
+    const NarrowCounts domes = narrow_and_separate(rng, dome, random_cluster);
+    CHECK(domes.narrowed > 50);
+    // Folds, whose rays meet them twice: separation splits marks, and both
+    // parts keep their hits (domes are never separated).
+    const NarrowCounts folds = narrow_and_separate(rng, fold, fold_cluster);
+    CHECK(folds.separated > 20);
 }
 
 TEST_CASE("A mark's plane range holds n . X of every point over its box", "[primary_cluster]") {
