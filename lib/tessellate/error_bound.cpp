@@ -505,23 +505,11 @@ bool on_patch_side(const RingPoint& a, const RingPoint& b) {
            (a.t == b.t && (a.t == 0 || a.t == kParamOne));
 }
 
-} // namespace
-
-double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
-                           std::span<const RingPoint> ring, double scale) {
+// The bound of certified_fan_bound with every fan triangle refined m times
+// (m a multiple of kSideRefinement), without the rounding allowance.
+double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3 centre,
+                              std::span<const RingPoint> ring, int m) {
     const size_t n = ring.size();
-    assert(n >= 3);
-    // m: the tangential remainder of an unrefined fan triangle of the subpatch
-    // against its normal remainder (about the geometric deviation).
-    int m = kSideRefinement;
-    {
-        const Net net = make_net(extract_subpatch(patch, r), centre);
-        const DerivativeBounds full = derivative_bounds(net);
-        const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
-        const double R1 = remainder(full, 1, 1);
-        const double Rn1 = remainder(split_bounds(net, nz).normal, 1, 1);
-        while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
-    }
     const int side_step = m / kSideRefinement;
     const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
     const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
@@ -667,7 +655,38 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                     tri(node(k, a + 1, c), node(k, a + 1, c + 1), node(k, a, c + 1));
             }
     }
-    return bound * (1 + 64 * kEps) + rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
+    return bound * (1 + 64 * kEps);
+}
+
+} // namespace
+
+double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
+                           std::span<const RingPoint> ring, double scale, double target) {
+    const size_t n = ring.size();
+    assert(n >= 3);
+    const double allowance = rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
+    // A tolerance needs a bound at or below it, not the tightest one: the
+    // coarsest refinement first (phi on the shared sides is the same for every
+    // m, so the fans stay continuous whatever m each one takes). Both results
+    // are sups over a valid phi, so the smaller one is a bound too.
+    double coarse = std::numeric_limits<double>::infinity();
+    if (target > 0) {
+        coarse = certified_fan_bound_at(patch, r, centre, ring, kSideRefinement) + allowance;
+        if (coarse <= target) return coarse;
+    }
+    // m: the tangential remainder of an unrefined fan triangle of the subpatch
+    // against its normal remainder (about the geometric deviation).
+    int m = kSideRefinement;
+    {
+        const Net net = make_net(extract_subpatch(patch, r), centre);
+        const DerivativeBounds full = derivative_bounds(net);
+        const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
+        const double R1 = remainder(full, 1, 1);
+        const double Rn1 = remainder(split_bounds(net, nz).normal, 1, 1);
+        while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
+    }
+    if (m == kSideRefinement && target > 0) return coarse;
+    return std::min(coarse, certified_fan_bound_at(patch, r, centre, ring, m) + allowance);
 }
 
 } // namespace seamless

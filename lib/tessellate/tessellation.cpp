@@ -299,8 +299,8 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
                 same_ring(it->second.ring, fan)) {
                 sp.error_bound = it->second.bound;
             } else {
-                sp.error_bound =
-                    certified_fan_bound(patches[sp.patch], sp.rect, sp.depth, centre, fan, scale);
+                sp.error_bound = certified_fan_bound(patches[sp.patch], sp.rect, sp.depth, centre,
+                                                     fan, scale, st.tolerance);
                 fresh[i] = 1;
             }
         }
