@@ -28,78 +28,98 @@ struct DerivativeBounds {
     double A = 0, B = 0, C = 0; // |S_ss|, |S_st|, |S_tt|
 };
 
+// The differenced control net of S' = S - c, computed once and measured along
+// as many directions as a bound needs (split_bounds: one per fan triangle).
+// Index groups of `diff`: the points P - c, then the first, second and mixed
+// differences of X' in s and t (their Bernstein coefficients up to the factors
+// p, p (p - 1), ...). The weights' differences are direction-free: kept as
+// their largest magnitudes, times those factors.
 struct Net {
+    static constexpr int kN = BezierPatch::kMaxOrder * BezierPatch::kMaxOrder;
+    enum Group { kP0, kXs, kXt, kXss, kXst, kXtt, kGroups };
     int p = 0, q = 0;
-    std::array<Vec3, BezierPatch::kMaxOrder * BezierPatch::kMaxOrder> x{}; // w (P - c)
-    std::array<double, BezierPatch::kMaxOrder * BezierPatch::kMaxOrder> w{};
-    std::array<Vec3, BezierPatch::kMaxOrder * BezierPatch::kMaxOrder> d{}; // P - c
+    // Raw doubles: only the first count[g] of each group are written and read
+    // (a Vec3 array would be zeroed on every construction, 14 KB).
+    std::array<std::array<double, 3>, kGroups * kN> diff;
+    std::array<int, kGroups> count{};
+    double Ws = 0, Wt = 0, Wss = 0, Wst = 0, Wtt = 0;
     double wlo = 1;
-    const Vec3& X(int i, int j) const { return x[i * BezierPatch::kMaxOrder + j]; }
-    double W(int i, int j) const { return w[i * BezierPatch::kMaxOrder + j]; }
-    const Vec3& D(int i, int j) const { return d[i * BezierPatch::kMaxOrder + j]; }
+    void add(Group g, Vec3 v) { diff[g * kN + count[g]++] = {v.x, v.y, v.z}; }
+    Vec3 at(int g, int i) const {
+        const std::array<double, 3>& d = diff[g * kN + i];
+        return {d[0], d[1], d[2]};
+    }
 };
 
 Net make_net(const BezierPatch& b, Vec3 c) {
     Net n;
-    n.p = b.p;
-    n.q = b.q;
+    const int p = n.p = b.p, q = n.q = b.q;
     n.wlo = std::numeric_limits<double>::infinity();
-    for (int i = 0; i <= b.p; ++i)
-        for (int j = 0; j <= b.q; ++j) {
+    constexpr int O = BezierPatch::kMaxOrder;
+    std::array<Vec3, Net::kN> x{}; // w (P - c)
+    std::array<double, Net::kN> w{};
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
             const HPoint& h = b.at(i, j);
-            const int k = i * BezierPatch::kMaxOrder + j;
-            n.x[k] = h.xyz() - h.w * c;
-            n.w[k] = h.w;
-            n.d[k] = h.point() - c;
+            x[i * O + j] = h.xyz() - h.w * c;
+            w[i * O + j] = h.w;
+            n.add(Net::kP0, h.point() - c);
             n.wlo = std::min(n.wlo, h.w);
         }
     assert(n.wlo > 0);
+    auto X = [&](int i, int j) -> const Vec3& { return x[i * O + j]; };
+    auto W = [&](int i, int j) { return w[i * O + j]; };
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
+            if (i < p) {
+                n.add(Net::kXs, X(i + 1, j) - X(i, j));
+                n.Ws = std::max(n.Ws, std::abs(W(i + 1, j) - W(i, j)));
+            }
+            if (j < q) {
+                n.add(Net::kXt, X(i, j + 1) - X(i, j));
+                n.Wt = std::max(n.Wt, std::abs(W(i, j + 1) - W(i, j)));
+            }
+            if (i + 1 < p) {
+                n.add(Net::kXss, X(i + 2, j) - 2 * X(i + 1, j) + X(i, j));
+                n.Wss = std::max(n.Wss, std::abs(W(i + 2, j) - 2 * W(i + 1, j) + W(i, j)));
+            }
+            if (j + 1 < q) {
+                n.add(Net::kXtt, X(i, j + 2) - 2 * X(i, j + 1) + X(i, j));
+                n.Wtt = std::max(n.Wtt, std::abs(W(i, j + 2) - 2 * W(i, j + 1) + W(i, j)));
+            }
+            if (i < p && j < q) {
+                n.add(Net::kXst, X(i + 1, j + 1) - X(i + 1, j) - X(i, j + 1) + X(i, j));
+                n.Wst = std::max(n.Wst,
+                                 std::abs(W(i + 1, j + 1) - W(i + 1, j) - W(i, j + 1) + W(i, j)));
+            }
+        }
+    n.Ws *= p, n.Wt *= q, n.Wss *= p * (p - 1), n.Wtt *= q * (q - 1), n.Wst *= p * q;
     return n;
 }
 
-// M magnitudes of each difference at once (mag returns M values): one pass
-// over the net for the normal and the tangential bounds together.
+// M magnitudes of each difference at once (mag returns M values): the normal
+// and the tangential bounds in one pass over the differences.
 template <size_t M, class Mag>
 std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
     using Mags = std::array<double, M>;
-    auto raise = [](Mags& to, const Mags& v) {
-        for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], v[k]);
-    };
-    const int p = n.p, q = n.q;
-    Mags P0{}, Xs{}, Xt{}, Xss{}, Xst{}, Xtt{};
-    double Ws = 0, Wt = 0, Wss = 0, Wst = 0, Wtt = 0;
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) {
-            raise(P0, mag(n.D(i, j)));
-            if (i < p) {
-                raise(Xs, mag(n.X(i + 1, j) - n.X(i, j)));
-                Ws = std::max(Ws, std::abs(n.W(i + 1, j) - n.W(i, j)));
-            }
-            if (j < q) {
-                raise(Xt, mag(n.X(i, j + 1) - n.X(i, j)));
-                Wt = std::max(Wt, std::abs(n.W(i, j + 1) - n.W(i, j)));
-            }
-            if (i + 1 < p) {
-                raise(Xss, mag(n.X(i + 2, j) - 2 * n.X(i + 1, j) + n.X(i, j)));
-                Wss = std::max(Wss, std::abs(n.W(i + 2, j) - 2 * n.W(i + 1, j) + n.W(i, j)));
-            }
-            if (j + 1 < q) {
-                raise(Xtt, mag(n.X(i, j + 2) - 2 * n.X(i, j + 1) + n.X(i, j)));
-                Wtt = std::max(Wtt, std::abs(n.W(i, j + 2) - 2 * n.W(i, j + 1) + n.W(i, j)));
-            }
-            if (i < p && j < q) {
-                raise(Xst, mag(n.X(i + 1, j + 1) - n.X(i + 1, j) - n.X(i, j + 1) + n.X(i, j)));
-                Wst = std::max(
-                    Wst, std::abs(n.W(i + 1, j + 1) - n.W(i + 1, j) - n.W(i, j + 1) + n.W(i, j)));
-            }
+    std::array<Mags, Net::kGroups> top{};
+    for (int g = 0; g < Net::kGroups; ++g) {
+        Mags& to = top[g];
+        for (int i = 0; i < n.count[g]; ++i) {
+            const Mags m = mag(n.at(g, i));
+            for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], m[k]);
         }
-    Ws *= p, Wt *= q, Wss *= p * (p - 1), Wtt *= q * (q - 1), Wst *= p * q;
+    }
+    const int p = n.p, q = n.q;
+    const double Ws = n.Ws, Wt = n.Wt, Wss = n.Wss, Wst = n.Wst, Wtt = n.Wtt;
     // Rounding of the differences and products: relative, a few ulps each.
     const double inflate = 1 + 64 * kEps;
     std::array<DerivativeBounds, M> out;
     for (size_t k = 0; k < M; ++k) {
-        const double xs = Xs[k] * p, xt = Xt[k] * q, xss = Xss[k] * (p * (p - 1));
-        const double xtt = Xtt[k] * (q * (q - 1)), xst = Xst[k] * (p * q), p0 = P0[k];
+        const double xs = top[Net::kXs][k] * p, xt = top[Net::kXt][k] * q;
+        const double xss = top[Net::kXss][k] * (p * (p - 1));
+        const double xtt = top[Net::kXtt][k] * (q * (q - 1)), xst = top[Net::kXst][k] * (p * q);
+        const double p0 = top[Net::kP0][k];
         const double Ps = (xs + p0 * Ws) / n.wlo, Pt = (xt + p0 * Wt) / n.wlo;
         DerivativeBounds& r = out[k];
         r.A = (xss + 2 * Ps * Ws + p0 * Wss) / n.wlo * inflate;
