@@ -495,6 +495,8 @@ namespace {
 // lid seams) and the passes never ended; with 4 they agree within a few percent.
 constexpr int kSideRefinement = 4;
 constexpr int kMaxCertifyRefinement = 16;
+// Gauss-Newton steps of phi toward the foot at the refined vertices.
+constexpr int kFootSteps = 2;
 
 // phi at a mesh vertex, a function of its grid point and position alone, so
 // every fan sharing the vertex agrees and phi is continuous over the patch.
@@ -526,9 +528,16 @@ bool on_patch_side(const RingPoint& a, const RingPoint& b) {
 }
 
 // The bound of certified_fan_bound with every fan triangle refined m times
-// (m a multiple of kSideRefinement), without the rounding allowance.
+// (m a multiple of kSideRefinement), without the rounding allowance. phi at
+// the refined vertices on the radial edges and inside the fan triangles (no
+// other fan's phi meets them) takes up to `steps` Gauss-Newton steps toward
+// the foot; 0: phi is the parameter map there, the parametric distance
+// (looser where the parametrisation drifts). The shared sides' points always
+// take the same steps, so the fans sharing them agree whatever `steps` each
+// one takes. A refined triangle's bound at or below `enough` (0: none) is
+// not tightened further (a tolerance needs no bound below itself).
 double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3 centre,
-                              std::span<const RingPoint> ring, int m) {
+                              std::span<const RingPoint> ring, int m, int steps, double enough) {
     const size_t n = ring.size();
     const int side_step = m / kSideRefinement;
     const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
@@ -554,7 +563,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
             const Param w{sc + f * (p.s - sc), tc + f * (p.t - tc)};
             const Vec3 x = centre + f * (ring[i].position - centre);
             Vec3 g;
-            const Param u = foot_iterated(patch, x, w, inner_limit, 2, g);
+            const Param u = foot_iterated(patch, x, w, inner_limit, steps, g);
             radial[i][a] = {u, g};
         }
     }
@@ -587,7 +596,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
                     foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
                 cn.u = {nlo.u.s + z * (nhi.u.s - nlo.u.s), nlo.u.t + z * (nhi.u.t - nlo.u.t)};
             } else {
-                cn.u = foot_iterated(patch, x, w, seg_limit, 2, cn.g);
+                cn.u = foot_iterated(patch, x, w, seg_limit, kFootSteps, cn.g);
             }
         }
         // The refined points between: phi linear between the shared points.
@@ -615,7 +624,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
                               tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
                 const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
                 Node& y = node(k, a, c);
-                y.u = foot_iterated(patch, x, w, inner_limit, 2, y.g);
+                y.u = foot_iterated(patch, x, w, inner_limit, steps, y.g);
             }
     }
 
@@ -641,23 +650,30 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
         const double len = norm(nk);
         nk = len > 1e-300 && std::isfinite(len) ? nk / len : normalize(diag);
         const SplitBounds nb = split_bounds(net, nk);
-        auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
-            double gn = 0, gt = 0;
-            for (const Node* q : {&p0, &p1, &p2}) {
-                const double dn = dot(q->g, nk);
-                gn = std::max(gn, std::abs(dn));
-                gt = std::max(gt, norm(q->g - dn * nk));
+        // |n.g| and the tangential |g - (n.g) n| once per refined vertex (each
+        // is a vertex of up to six refined triangles).
+        double gn[K][K], gt[K][K];
+        for (int a = 0; a <= m; ++a)
+            for (int c = 0; a + c <= m; ++c) {
+                const Vec3& g = node(k, a, c).g;
+                const double dn = dot(g, nk);
+                gn[a][c] = std::abs(dn);
+                gt[a][c] = norm(g - dn * nk);
             }
-            const double s0 = std::min({p0.u.s, p1.u.s, p2.u.s});
-            const double s1 = std::max({p0.u.s, p1.u.s, p2.u.s});
-            const double t0 = std::min({p0.u.t, p1.u.t, p2.u.t});
-            const double t1 = std::max({p0.u.t, p1.u.t, p2.u.t});
+        auto tri = [&](int a0, int c0, int a1, int c1, int a2, int c2) {
+            const Param &u0 = node(k, a0, c0).u, &u1 = node(k, a1, c1).u, &u2 = node(k, a2, c2).u;
+            const double gnt = std::max({gn[a0][c0], gn[a1][c1], gn[a2][c2]});
+            const double gtt = std::max({gt[a0][c0], gt[a1][c1], gt[a2][c2]});
+            const double s0 = std::min({u0.s, u1.s, u2.s}), s1 = std::max({u0.s, u1.s, u2.s});
+            const double t0 = std::min({u0.t, u1.t, u2.t}), t1 = std::max({u0.t, u1.t, u2.t});
             const double ds = (s1 - s0) / (bs1 - bs0), dt = (t1 - t0) / (bt1 - bt0);
             double Rn = remainder(nb.normal, ds, dt);
             double R = remainder(nb.tangential, ds, dt);
-            // Only where it can raise the running maximum (lossless).
-            if (R > gn + Rn && s1 > s0 && t1 > t0 &&
-                (gn + Rn) * (gn + Rn) + (gt + R) * (gt + R) > bound * bound) {
+            // Only where it can raise the running maximum above `enough`
+            // (lossless when enough = 0).
+            const double top = std::max(bound, enough);
+            if (R > gnt + Rn && s1 > s0 && t1 > t0 &&
+                (gnt + Rn) * (gnt + Rn) + (gtt + R) * (gtt + R) > top * top) {
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
                 const Net local = make_net(extract_box(patch, s0, s1, t0, t1), centre);
@@ -665,14 +681,13 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
                 Rn = std::min(Rn, remainder(ln.normal, 1, 1));
                 R = std::min(R, remainder(ln.tangential, 1, 1));
             }
-            const double en = gn + Rn, et = gt + R;
+            const double en = gnt + Rn, et = gtt + R;
             bound = std::max(bound, std::sqrt(en * en + et * et));
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
-                tri(node(k, a, c), node(k, a + 1, c), node(k, a, c + 1));
-                if (a + c + 2 <= m)
-                    tri(node(k, a + 1, c), node(k, a + 1, c + 1), node(k, a, c + 1));
+                tri(a, c, a + 1, c, a, c + 1);
+                if (a + c + 2 <= m) tri(a + 1, c, a + 1, c + 1, a, c + 1);
             }
     }
     return bound * (1 + 64 * kEps);
@@ -690,9 +705,17 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     // m, so the fans stay continuous whatever m each one takes). Both results
     // are sups over a valid phi, so the smaller one is a bound too.
     double coarse = std::numeric_limits<double>::infinity();
+    // What each refined triangle's bound may reach with the result <= target.
+    const double enough = target > 0 ? std::max(target - allowance, 0.0) * (1 - 128 * kEps) : 0;
     if (target > 0) {
-        coarse = certified_fan_bound_at(patch, r, centre, ring, kSideRefinement) + allowance;
-        if (coarse <= target) return coarse;
+        // Without feet inside the fan first: on the teapot at D = 0.001 about
+        // 93 % of the fans certify so, with one evaluation per refined vertex.
+        for (int steps : {0, kFootSteps}) {
+            coarse = std::min(coarse, certified_fan_bound_at(patch, r, centre, ring,
+                                                             kSideRefinement, steps, enough) +
+                                          allowance);
+            if (coarse <= target) return coarse;
+        }
     }
     // m: the tangential remainder of an unrefined fan triangle of the subpatch
     // against its normal remainder (about the geometric deviation).
@@ -706,7 +729,8 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     if (m == kSideRefinement && target > 0) return coarse;
-    return std::min(coarse, certified_fan_bound_at(patch, r, centre, ring, m) + allowance);
+    return std::min(coarse, certified_fan_bound_at(patch, r, centre, ring, m, kFootSteps, enough) +
+                                allowance);
 }
 
 } // namespace seamless
