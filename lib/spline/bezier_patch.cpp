@@ -92,6 +92,36 @@ void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Int
     }
 }
 
+Vec3 evaluate_point(const BezierPatch& b, double s, double t) {
+    // Bernstein values alone, by the triangle B_i^d = (1 - x) B_i^{d-1} + x B_{i-1}^{d-1}.
+    auto basis = [](int n, double x, double* B) {
+        B[0] = 1.0;
+        const double r = 1.0 - x;
+        for (int d = 1; d <= n; ++d) {
+            double prev = 0.0;
+            for (int i = 0; i < d; ++i) {
+                const double v = B[i];
+                B[i] = prev + r * v;
+                prev = x * v;
+            }
+            B[d] = prev;
+        }
+    };
+    double Bu[BezierPatch::kMaxOrder], Bv[BezierPatch::kMaxOrder];
+    basis(b.p, s, Bu);
+    basis(b.q, t, Bv);
+    double x = 0, y = 0, z = 0, w = 0;
+    for (int i = 0; i <= b.p; ++i) {
+        double rx = 0, ry = 0, rz = 0, rw = 0;
+        for (int j = 0; j <= b.q; ++j) {
+            const HPoint& h = b.at(i, j);
+            rx += Bv[j] * h.x, ry += Bv[j] * h.y, rz += Bv[j] * h.z, rw += Bv[j] * h.w;
+        }
+        x += Bu[i] * rx, y += Bu[i] * ry, z += Bu[i] * rz, w += Bu[i] * rw;
+    }
+    return b.rational ? Vec3{x / w, y / w, z / w} : Vec3{x, y, z};
+}
+
 SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
     HPoint X, Xu, Xv;
     homogeneous_derivatives(b, s, t, X, Xu, Xv);

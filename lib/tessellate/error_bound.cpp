@@ -549,10 +549,13 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
     // (1) phi at the refined vertices of every fan triangle: grid k, a, c is
     // centre + a/m (P - centre) + c/m (Q - centre), P Q the ring's k-th side.
     constexpr int K = kMaxCertifyRefinement + 1;
-    thread_local std::vector<std::array<Node, K>> radial;
-    thread_local std::vector<Node> grids;
-    radial.resize(n);
-    grids.resize(n * K * K);
+    thread_local std::vector<std::array<Node, K>> radial_store;
+    thread_local std::vector<Node> grid_store;
+    radial_store.resize(n);
+    grid_store.resize(n * K * K);
+    // Plain pointers: each thread_local access in a shared library is a call.
+    std::array<Node, K>* const radial = radial_store.data();
+    Node* const grids = grid_store.data();
     auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
     for (size_t i = 0; i < n; ++i) {
         radial[i][0] = centre_node;
