@@ -93,23 +93,9 @@ void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Int
 }
 
 Vec3 evaluate_point(const BezierPatch& b, double s, double t) {
-    // Bernstein values alone, by the triangle B_i^d = (1 - x) B_i^{d-1} + x B_{i-1}^{d-1}.
-    auto basis = [](int n, double x, double* B) {
-        B[0] = 1.0;
-        const double r = 1.0 - x;
-        for (int d = 1; d <= n; ++d) {
-            double prev = 0.0;
-            for (int i = 0; i < d; ++i) {
-                const double v = B[i];
-                B[i] = prev + r * v;
-                prev = x * v;
-            }
-            B[d] = prev;
-        }
-    };
-    double Bu[BezierPatch::kMaxOrder], Bv[BezierPatch::kMaxOrder];
-    basis(b.p, s, Bu);
-    basis(b.q, t, Bv);
+    double Bu[BezierPatch::kMaxOrder], Bv[BezierPatch::kMaxOrder], unused[BezierPatch::kMaxOrder];
+    bernstein(b.p, s, Bu, unused);
+    bernstein(b.q, t, Bv, unused);
     double x = 0, y = 0, z = 0, w = 0;
     for (int i = 0; i <= b.p; ++i) {
         double rx = 0, ry = 0, rz = 0, rw = 0;
