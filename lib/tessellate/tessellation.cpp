@@ -257,29 +257,38 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     vr.positions.reserve(2 * out.subpatches.size() + expected / 4);
     vr.placed.reserve(2 * out.subpatches.size() + expected / 4);
     vr.index.reserve(out.subpatches.size() + expected / 8);
-    // (d1) Rings and their vertices, in subpatch order (vertices are numbered
-    // as they are first met, so this stays sequential).
+    // (d0) Each subpatch's ring and centre point on its own, in parallel.
     const size_t count = out.subpatches.size();
-    std::vector<int> scratch;
-    std::vector<Inside> inside;
-    std::vector<RingVertex> ring;
+    std::vector<std::vector<RingVertex>> ring_of(count);
+    std::vector<Vec3> centre_point(count);
+    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+        std::vector<int> scratch;
+        std::vector<Inside> inside;
+        for (int i = begin; i < end; ++i) {
+            const Subpatch& sp = out.subpatches[i];
+            const ParamRect& r = sp.rect;
+            collect_ring(reg, match, graph, sp.patch, r, options.crack_free, scratch, inside,
+                         ring_of[i]);
+            const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+            const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+            centre_point[i] = evaluate(patches[sp.patch], sc, tc).point;
+        }
+    });
+    // (d1) Their vertices, in subpatch order (vertices are numbered as they
+    // are first met, so this stays sequential).
     std::vector<RingVertex> rings;
     std::vector<int> ring_start(count + 1, 0), centres(count);
     rings.reserve(expected);
     for (size_t i = 0; i < count; ++i) {
         const Subpatch& sp = out.subpatches[i];
-        const ParamRect& r = sp.rect;
-        collect_ring(reg, match, graph, sp.patch, r, options.crack_free, scratch, inside, ring);
-        for (RingVertex& v : ring) {
+        for (RingVertex& v : ring_of[i]) {
             v.vertex = v.foreign >= 0 ? vertex_of(vr, graph.points[v.foreign].key)
                                       : vertex_at(vr, sp.patch, v.s, v.t);
             rings.push_back(v);
         }
         ring_start[i + 1] = static_cast<int>(rings.size());
-        const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
-        const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
         centres[i] = static_cast<int>(vr.positions.size());
-        vr.positions.push_back(evaluate(patches[sp.patch], sc, tc).point);
+        vr.positions.push_back(centre_point[i]);
         vr.placed.push_back(1);
     }
 
