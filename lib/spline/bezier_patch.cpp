@@ -92,6 +92,22 @@ void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Int
     }
 }
 
+Vec3 evaluate_point(const BezierPatch& b, double s, double t) {
+    double Bu[BezierPatch::kMaxOrder], Bv[BezierPatch::kMaxOrder], unused[BezierPatch::kMaxOrder];
+    bernstein(b.p, s, Bu, unused);
+    bernstein(b.q, t, Bv, unused);
+    double x = 0, y = 0, z = 0, w = 0;
+    for (int i = 0; i <= b.p; ++i) {
+        double rx = 0, ry = 0, rz = 0, rw = 0;
+        for (int j = 0; j <= b.q; ++j) {
+            const HPoint& h = b.at(i, j);
+            rx += Bv[j] * h.x, ry += Bv[j] * h.y, rz += Bv[j] * h.z, rw += Bv[j] * h.w;
+        }
+        x += Bu[i] * rx, y += Bu[i] * ry, z += Bu[i] * rz, w += Bu[i] * rw;
+    }
+    return b.rational ? Vec3{x / w, y / w, z / w} : Vec3{x, y, z};
+}
+
 SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
     HPoint X, Xu, Xv;
     homogeneous_derivatives(b, s, t, X, Xu, Xv);

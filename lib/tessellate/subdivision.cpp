@@ -42,7 +42,11 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
             // triangle's parameter centroid far from its plane.
             const double s = (0.5 + kParam[k][0] + kParam[k1][0]) / 3;
             const double t = (0.5 + kParam[k][1] + kParam[k1][1]) / 3;
-            if (std::abs(dot(evaluate(b, s, t).point - centre, n)) > 1.2 * o.tolerance)
+            if (std::abs(dot(evaluate_point(b, s, t) - centre, n)) > 1.2 * o.tolerance)
+                return false;
+            const double ms = 0.5 * (kParam[k][0] + kParam[k1][0]);
+            const double mt = 0.5 * (kParam[k][1] + kParam[k1][1]);
+            if (std::abs(dot(evaluate_point(b, ms, mt) - centre, n)) > 1.2 * o.tolerance)
                 return false;
         }
         if (o.angle > 0) {

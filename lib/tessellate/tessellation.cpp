@@ -121,11 +121,23 @@ bool same_ring(std::span<const RingPoint> a, std::span<const RingPoint> b) {
 // What the passes of a tolerance share, per Bezier patch (so that patches can
 // be worked on in parallel): the subdivision criteria's verdicts and the
 // final fans' bounds.
+// One patch's split tree and leaves.
+struct Part {
+    PatchTrees trees;
+    std::vector<Subpatch> subpatches;
+    int root = -1;
+};
+
 struct PassMemo {
     std::vector<FanMemo> verdicts;
     std::vector<std::unordered_map<std::uint64_t, KnownBound>> bounds;
+    // The last pass's split of each patch, and whether the next pass forces a
+    // split in it (else the same verdicts give the same tree: kept).
+    std::vector<Part> parts;
+    std::vector<char> changed;
     bool keep = false; // fill them (only a tolerance takes more than one pass)
-    PassMemo(size_t patches, bool keep) : verdicts(patches), bounds(patches), keep(keep) {}
+    PassMemo(size_t patches, bool keep)
+        : verdicts(patches), bounds(patches), parts(patches), changed(patches, 1), keep(keep) {}
 };
 
 // (a) Every patch split on its own (in parallel), the trees then laid end to
@@ -133,16 +145,13 @@ struct PassMemo {
 void subdivide_patches(const std::vector<BezierPatch>& patches, const SubdivisionOptions& sub,
                        int threads, PassMemo& memo, PatchTrees& trees,
                        std::vector<Subpatch>& subpatches) {
-    struct Part {
-        PatchTrees trees;
-        std::vector<Subpatch> subpatches;
-        int root = -1;
-    };
-    std::vector<Part> parts(patches.size());
+    std::vector<Part>& parts = memo.parts;
     parallel_chunks(static_cast<int>(patches.size()), threads, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
+            if (!memo.changed[i]) continue;
             SubdivisionOptions o = sub;
             o.memo = memo.keep ? &memo.verdicts[i] : nullptr;
+            parts[i] = Part{};
             parts[i].root = subdivide(patches[i], i, o, parts[i].trees, parts[i].subpatches);
         }
     });
@@ -151,7 +160,7 @@ void subdivide_patches(const std::vector<BezierPatch>& patches, const Subdivisio
     trees.nodes.reserve(nodes);
     subpatches.reserve(leaves);
     trees.roots.reserve(patches.size());
-    for (Part& p : parts) {
+    for (const Part& p : parts) {
         const int node0 = static_cast<int>(trees.nodes.size());
         const int leaf0 = static_cast<int>(subpatches.size());
         for (PatchNode n : p.trees.nodes) {
@@ -167,6 +176,7 @@ void subdivide_patches(const std::vector<BezierPatch>& patches, const Subdivisio
         trees.roots.push_back(p.root + node0);
         trees.depth = std::max(trees.depth, p.trees.depth);
     }
+    if (!memo.keep) std::vector<Part>().swap(parts); // one pass: no copy kept
 }
 
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
@@ -247,29 +257,38 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     vr.positions.reserve(2 * out.subpatches.size() + expected / 4);
     vr.placed.reserve(2 * out.subpatches.size() + expected / 4);
     vr.index.reserve(out.subpatches.size() + expected / 8);
-    // (d1) Rings and their vertices, in subpatch order (vertices are numbered
-    // as they are first met, so this stays sequential).
+    // (d0) Each subpatch's ring and centre point on its own, in parallel.
     const size_t count = out.subpatches.size();
-    std::vector<int> scratch;
-    std::vector<Inside> inside;
-    std::vector<RingVertex> ring;
+    std::vector<std::vector<RingVertex>> ring_of(count);
+    std::vector<Vec3> centre_point(count);
+    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+        std::vector<int> scratch;
+        std::vector<Inside> inside;
+        for (int i = begin; i < end; ++i) {
+            const Subpatch& sp = out.subpatches[i];
+            const ParamRect& r = sp.rect;
+            collect_ring(reg, match, graph, sp.patch, r, options.crack_free, scratch, inside,
+                         ring_of[i]);
+            const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+            const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+            centre_point[i] = evaluate(patches[sp.patch], sc, tc).point;
+        }
+    });
+    // (d1) Their vertices, in subpatch order (vertices are numbered as they
+    // are first met, so this stays sequential).
     std::vector<RingVertex> rings;
     std::vector<int> ring_start(count + 1, 0), centres(count);
     rings.reserve(expected);
     for (size_t i = 0; i < count; ++i) {
         const Subpatch& sp = out.subpatches[i];
-        const ParamRect& r = sp.rect;
-        collect_ring(reg, match, graph, sp.patch, r, options.crack_free, scratch, inside, ring);
-        for (RingVertex& v : ring) {
+        for (RingVertex& v : ring_of[i]) {
             v.vertex = v.foreign >= 0 ? vertex_of(vr, graph.points[v.foreign].key)
                                       : vertex_at(vr, sp.patch, v.s, v.t);
             rings.push_back(v);
         }
         ring_start[i + 1] = static_cast<int>(rings.size());
-        const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
-        const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
         centres[i] = static_cast<int>(vr.positions.size());
-        vr.positions.push_back(evaluate(patches[sp.patch], sc, tc).point);
+        vr.positions.push_back(centre_point[i]);
         vr.placed.push_back(1);
     }
 
@@ -299,8 +318,8 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
                 same_ring(it->second.ring, fan)) {
                 sp.error_bound = it->second.bound;
             } else {
-                sp.error_bound =
-                    certified_fan_bound(patches[sp.patch], sp.rect, sp.depth, centre, fan, scale);
+                sp.error_bound = certified_fan_bound(patches[sp.patch], sp.rect, sp.depth, centre,
+                                                     fan, scale, st.tolerance);
                 fresh[i] = 1;
             }
         }
@@ -399,9 +418,12 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         const bool last = options.tolerance <= 0 || pass == kPasses - 1;
         t = tessellate_pass(model, patches, options, split, memo, last);
         if (last || t.stats.above_tolerance == 0) break;
+        std::fill(memo.changed.begin(), memo.changed.end(), 0);
         for (const Subpatch& sp : t.subpatches)
-            if (sp.error_bound > t.stats.tolerance && sp.depth < options.max_depth)
+            if (sp.error_bound > t.stats.tolerance && sp.depth < options.max_depth) {
                 split.insert(subpatch_key(sp.patch, sp.rect));
+                memo.changed[sp.patch] = 1;
+            }
     }
     t.stats.passes = pass + 1;
     t.stats.seconds =

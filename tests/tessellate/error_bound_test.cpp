@@ -206,29 +206,28 @@ TEST_CASE("the error bound holds by sampling on the teapot, spoon, torus and cyl
     CHECK(r > 0.5);
 }
 
+// A paraboloid-like patch over [0, h]^2 whose parametrisation in x speeds up
+// along s (control abscissae 0, h/6, h/2, h): a tangential drift. The graph
+// of z = (x^2 + y^2) / 2 is not polynomial in (s, t) of this degree; every
+// control point is lifted by the paraboloid at it (a smooth, curved patch).
+namespace {
+BezierPatch drifting_paraboloid(double h) {
+    BezierPatch b;
+    b.p = b.q = 3;
+    const double xs[4] = {0, h / 6, h / 2, h}, ys[4] = {0, h / 3, 2 * h / 3, h};
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 3; ++j)
+            b.at(i, j) = HPoint::from({xs[i], ys[j], 0.5 * (xs[i] * xs[i] + ys[j] * ys[j])}, 1);
+    return b;
+}
+} // namespace
+
 TEST_CASE("fan_bound is tight on a curved patch with a non-uniform parametrisation",
           "[error_bound]") {
-    // A paraboloid-like patch over [0, h]^2 whose parametrisation in x speeds
-    // up along s (control abscissae 0, h/6, h/2, h): a tangential drift.
     // (Smaller h: the tangential remainder grows like 1/h against the normal
     // deviation and the bound loosens, as error_bound.h says.)
     for (double h : {0.4, 0.1}) {
-        BezierPatch b;
-        b.p = b.q = 3;
-        for (int i = 0; i <= 3; ++i)
-            for (int j = 0; j <= 3; ++j) {
-                const double xs[4] = {0, h / 6, h / 2, h}, ys[4] = {0, h / 3, 2 * h / 3, h};
-                const double x = xs[i], y = ys[j];
-                b.at(i, j) = HPoint::from({x, y, 0}, 1);
-            }
-        // The graph of z = (x^2 + y^2) / 2 is not polynomial in (s, t) of this
-        // degree; use z from the control net's own blossom: lift every control
-        // point by the paraboloid at it (a smooth, curved patch).
-        for (int i = 0; i <= 3; ++i)
-            for (int j = 0; j <= 3; ++j) {
-                HPoint& c = b.at(i, j);
-                c.z = 0.5 * (c.x * c.x + c.y * c.y);
-            }
+        const BezierPatch b = drifting_paraboloid(h);
         const Vec3 centre = evaluate(b, 0.5, 0.5).point;
         const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
         const double bound = fan_bound(b, centre, V);
@@ -277,6 +276,33 @@ TEST_CASE("certified_fan_bound counts a side vertex off the straight side", "[er
     ring[5].position = {0, 0.25, 0};
     ring[1].position = {0.5, -0.02, 0}; // off the patch's side, in its plane
     CHECK(certified_fan_bound(b, all, 0, centre, ring, 1) >= 0.02);
+}
+
+TEST_CASE("certified_fan_bound with a target: still a bound, and at or below the target "
+          "wherever the untargeted one is",
+          "[error_bound]") {
+    // The drifting paraboloid patch above (tangential drift: the coarse
+    // refinements and the feet-free first try are looser than the tightest).
+    for (double h : {0.4, 0.1}) {
+        const BezierPatch b = drifting_paraboloid(h);
+        const Vec3 centre = evaluate(b, 0.5, 0.5).point;
+        const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
+        const int one = kParamOne;
+        const std::vector<RingPoint> ring{
+            {0, 0, V[0]}, {one, 0, V[1]}, {one, one, V[2]}, {0, one, V[3]}};
+        const ParamRect all;
+        const double untargeted = certified_fan_bound(b, all, 0, centre, ring, 1);
+        const double sampled = sampled_distance(b, fan_of(centre, V), 24);
+        REQUIRE(sampled <= untargeted);
+        for (double f : {0.5, 0.99, 1.0, 1.5, 4.0, 100.0}) {
+            const double target = f * untargeted;
+            const double bound = certified_fan_bound(b, all, 0, centre, ring, 1, target);
+            INFO("h " << h << " untargeted " << untargeted << " target " << target << " bound "
+                      << bound << " sampled " << sampled);
+            CHECK(sampled <= bound);
+            if (untargeted <= target) CHECK(bound <= target);
+        }
+    }
 }
 
 TEST_CASE("the rational quarter cylinder: every vertex within the bound of the cylinder",
