@@ -234,7 +234,7 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
     // The points in world coordinates: the rotated camera box, cut down to
     // the box from the world-space forms (both enclose every point).
     IVec<3> Pw = to_world(e.point, true);
-    if (ts_) {
+    if (ts_ && pp.has_world) {
         const IVec3 W = enclose_point(pp.world, box);
         for (int i = 0; i < 3; ++i) {
             const Interval x = intersect(Pw[i], W[i]);

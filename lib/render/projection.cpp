@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/projection.h>
 
+#include <seamless/render/trace.h>
 #include <seamless/spline/knot_insertion.h>
 
 namespace seamless {
@@ -16,10 +17,15 @@ ProjectedScene project_scene(const Scene& scene, int width, int height) {
     ps.lighting.levels = scene.levels;
     for (const Light& l : scene.lights)
         if (l.on()) ps.lighting.lights.push_back({ps.frame.to_camera(l.position), l.color});
+    // World-space forms only for SHADE's light and secondary clusters.
+    const bool world = needs_secondary_rays(scene);
     for (size_t k = 0; k < scene.model.surfaces.size(); ++k) {
         for (BezierPatch b : bezier_patches(scene.model.surfaces[k], static_cast<int>(k))) {
             ProjectedPatch pp;
-            pp.world = patch_forms(b);
+            if (world) {
+                pp.world = patch_forms(b);
+                pp.has_world = true;
+            }
             for (int i = 0; i <= b.p; ++i)
                 for (int j = 0; j <= b.q; ++j) b.at(i, j) = ps.frame.to_camera(b.at(i, j));
             pp.patch = b;

@@ -15,11 +15,13 @@
 namespace seamless {
 
 struct ProjectedPatch {
-    BezierPatch patch;   // homogeneous control points in camera coordinates
-    PatchForms forms;    // power forms of `patch` (section 4)
-    PatchForms world;    // power forms of the patch in world coordinates (SHADE's
-                         // light and secondary clusters: a world box of points
-                         // straight from them, not a rotated camera box)
+    BezierPatch patch; // homogeneous control points in camera coordinates
+    PatchForms forms;  // power forms of `patch` (section 4)
+    PatchForms world;  // power forms of the patch in world coordinates (SHADE's
+                       // light and secondary clusters: a world box of points
+                       // straight from them, not a rotated camera box); only
+                       // when the scene needs them (needs_secondary_rays)
+    bool has_world = false;
     IVec3 hull;          // enclosure of the whole patch, camera coordinates
     SubpatchShape shape; // layout of its subpatches' coefficients (mark.h)
     int material = 0;
