@@ -58,12 +58,19 @@ Net make_net(const BezierPatch& b, Vec3 c) {
     constexpr int O = BezierPatch::kMaxOrder;
     std::array<Vec3, Net::kN> x{}; // w (P - c)
     std::array<double, Net::kN> w{};
+    // With one weight throughout (a polynomial patch) the weights' differences
+    // are exactly 0, so the points and first differences, which the quotient
+    // rule multiplies only by them, are not needed: not stored (count 0, their
+    // largest magnitude 0), the bounds unchanged. Saves most of the net.
+    bool one_weight = true;
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) one_weight = one_weight && b.at(i, j).w == b.at(0, 0).w;
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j) {
             const HPoint& h = b.at(i, j);
             x[i * O + j] = h.xyz() - h.w * c;
             w[i * O + j] = h.w;
-            n.add(Net::kP0, h.point() - c);
+            if (!one_weight) n.add(Net::kP0, h.point() - c);
             n.wlo = std::min(n.wlo, h.w);
         }
     assert(n.wlo > 0);
@@ -72,11 +79,11 @@ Net make_net(const BezierPatch& b, Vec3 c) {
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j) {
             if (i < p) {
-                n.add(Net::kXs, X(i + 1, j) - X(i, j));
+                if (!one_weight) n.add(Net::kXs, X(i + 1, j) - X(i, j));
                 n.Ws = std::max(n.Ws, std::abs(W(i + 1, j) - W(i, j)));
             }
             if (j < q) {
-                n.add(Net::kXt, X(i, j + 1) - X(i, j));
+                if (!one_weight) n.add(Net::kXt, X(i, j + 1) - X(i, j));
                 n.Wt = std::max(n.Wt, std::abs(W(i, j + 1) - W(i, j)));
             }
             if (i + 1 < p) {
@@ -323,8 +330,16 @@ struct FanResult {
     double bound = 0, largest_g = 0;
 };
 
+// stop > 0: the caller only asks whether the bound is at most `stop`; once a
+// refined vertex's |g| (stop_g) or a refined triangle's bound (stop_bound)
+// exceeds it, the rest is skipped and the result holds a value above it.
+struct FanStop {
+    double g = 0, bound = 0;
+};
+
 FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
-                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb);
+                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb,
+                       FanStop stop = {});
 
 } // namespace
 
@@ -360,16 +375,20 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     if (target > 0 && m > 2) {
         // Cheap first: m = 2 may already certify the target, or its refined
         // vertices, about as far from the surface as it lies, already exceed it.
-        const FanResult r = fan_bound_at(b, centre, V, 2, n, nb);
-        if (r.bound <= target || r.largest_g > target) return r.bound;
+        const FanResult r = fan_bound_at(b, centre, V, 2, n, nb, {target, 0});
+        if (r.bound <= target || r.largest_g > target) return std::max(r.bound, r.largest_g);
     }
-    return fan_bound_at(b, centre, V, m, n, nb).bound;
+    return fan_bound_at(b, centre, V, m, n, nb, {target, target}).bound;
 }
 
 namespace {
 
 FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
-                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb) {
+                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb,
+                       FanStop stop) {
+    const double stop_g = stop.g > 0 ? stop.g : std::numeric_limits<double>::infinity();
+    const double stop_bound = stop.bound > 0 ? stop.bound : std::numeric_limits<double>::infinity();
+    double bound = 0, largest_g = 0;
 
     // phi on the radial edges (centre to corner k), shared by two fan triangles.
     constexpr int K = kMaxFanRefinement + 1;
@@ -389,9 +408,10 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
                 u = foot(b, x, w, 0.5 / m, g);
             }
             radial[k][a] = {u, g};
+            largest_g = std::max(largest_g, norm(g));
+            if (largest_g > stop_g) return {std::max(bound, largest_g), largest_g};
         }
 
-    double bound = 0, largest_g = 0;
     Node grid[K][K]; // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre)
     for (int k = 0; k < 4; ++k) {
         const int k1 = (k + 1) % 4;
@@ -443,6 +463,8 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
                 tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
                 if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
             }
+        if (bound > stop_bound || largest_g > stop_g)
+            return {std::max(bound, largest_g) * (1 + 64 * kEps), largest_g};
     }
     // Relative rounding of the sums above.
     return {bound * (1 + 64 * kEps), largest_g};
