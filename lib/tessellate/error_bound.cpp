@@ -330,16 +330,8 @@ struct FanResult {
     double bound = 0, largest_g = 0;
 };
 
-// stop > 0: the caller only asks whether the bound is at most `stop`; once a
-// refined vertex's |g| (stop_g) or a refined triangle's bound (stop_bound)
-// exceeds it, the rest is skipped and the result holds a value above it.
-struct FanStop {
-    double g = 0, bound = 0;
-};
-
 FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
-                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb,
-                       FanStop stop = {});
+                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb);
 
 } // namespace
 
@@ -375,20 +367,16 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     if (target > 0 && m > 2) {
         // Cheap first: m = 2 may already certify the target, or its refined
         // vertices, about as far from the surface as it lies, already exceed it.
-        const FanResult r = fan_bound_at(b, centre, V, 2, n, nb, {target, 0});
-        if (r.bound <= target || r.largest_g > target) return std::max(r.bound, r.largest_g);
+        const FanResult r = fan_bound_at(b, centre, V, 2, n, nb);
+        if (r.bound <= target || r.largest_g > target) return r.bound;
     }
-    return fan_bound_at(b, centre, V, m, n, nb, {target, target}).bound;
+    return fan_bound_at(b, centre, V, m, n, nb).bound;
 }
 
 namespace {
 
 FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
-                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb,
-                       FanStop stop) {
-    const double stop_g = stop.g > 0 ? stop.g : std::numeric_limits<double>::infinity();
-    const double stop_bound = stop.bound > 0 ? stop.bound : std::numeric_limits<double>::infinity();
-    double bound = 0, largest_g = 0;
+                       const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb) {
 
     // phi on the radial edges (centre to corner k), shared by two fan triangles.
     constexpr int K = kMaxFanRefinement + 1;
@@ -408,10 +396,9 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
                 u = foot(b, x, w, 0.5 / m, g);
             }
             radial[k][a] = {u, g};
-            largest_g = std::max(largest_g, norm(g));
-            if (largest_g > stop_g) return {std::max(bound, largest_g), largest_g};
         }
 
+    double bound = 0, largest_g = 0;
     Node grid[K][K]; // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre)
     for (int k = 0; k < 4; ++k) {
         const int k1 = (k + 1) % 4;
@@ -463,8 +450,6 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
                 tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
                 if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
             }
-        if (bound > stop_bound || largest_g > stop_g)
-            return {std::max(bound, largest_g) * (1 + 64 * kEps), largest_g};
     }
     // Relative rounding of the sums above.
     return {bound * (1 + 64 * kEps), largest_g};
