@@ -58,12 +58,19 @@ Net make_net(const BezierPatch& b, Vec3 c) {
     constexpr int O = BezierPatch::kMaxOrder;
     std::array<Vec3, Net::kN> x{}; // w (P - c)
     std::array<double, Net::kN> w{};
+    // With one weight throughout (a polynomial patch) the weights' differences
+    // are exactly 0, so the points and first differences, which the quotient
+    // rule multiplies only by them, are not needed: not stored (count 0, their
+    // largest magnitude 0), the bounds unchanged. Saves most of the net.
+    bool one_weight = true;
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) one_weight = one_weight && b.at(i, j).w == b.at(0, 0).w;
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j) {
             const HPoint& h = b.at(i, j);
             x[i * O + j] = h.xyz() - h.w * c;
             w[i * O + j] = h.w;
-            n.add(Net::kP0, h.point() - c);
+            if (!one_weight) n.add(Net::kP0, h.point() - c);
             n.wlo = std::min(n.wlo, h.w);
         }
     assert(n.wlo > 0);
@@ -72,11 +79,11 @@ Net make_net(const BezierPatch& b, Vec3 c) {
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j) {
             if (i < p) {
-                n.add(Net::kXs, X(i + 1, j) - X(i, j));
+                if (!one_weight) n.add(Net::kXs, X(i + 1, j) - X(i, j));
                 n.Ws = std::max(n.Ws, std::abs(W(i + 1, j) - W(i, j)));
             }
             if (j < q) {
-                n.add(Net::kXt, X(i, j + 1) - X(i, j));
+                if (!one_weight) n.add(Net::kXt, X(i, j + 1) - X(i, j));
                 n.Wt = std::max(n.Wt, std::abs(W(i, j + 1) - W(i, j)));
             }
             if (i + 1 < p) {
