@@ -51,22 +51,16 @@ bool regular(const IMat<2>& A) {
 
 // Camera depth Z = X_2 / W over the small box of a certified hit, by the mean
 // value theorem about a point c of [0,1]^2: X_k(x) - X_k(c) = grad X_k(xi) .
-// (x - c) with xi in [0,1]^2, where |d X_k / ds| <= sum_ij |coefficient of
-// s^i t^j of the power form of d X_k / ds| (|s^i t^j| <= 1), likewise along t.
-// Xc: X_k(c) enclosed (enclose_homogeneous; X_3 = W when rational). For a box
-// of width ~1e-9 this is narrow enough to order hits and far cheaper than a
-// range enclosure over it.
+// (x - c) with xi in [0,1]^2, where |d X_k / ds| <= pp.slope_s[k], likewise
+// along t (projection.h). Xc: X_k(c) enclosed (enclose_homogeneous; X_3 = W
+// when rational). For a box of width ~1e-9 this is narrow enough to order
+// hits and far cheaper than a range enclosure over it.
 Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit, double cs, double ct,
                     const Interval* Xc) {
     const Interval ds = hit.s - Interval(cs), dt = hit.t - Interval(ct);
-    auto bound = [](const PowerForm& f, int c) {
-        Interval m(0.0);
-        for (int i = 0; i <= f.p; ++i)
-            for (int j = 0; j <= f.q; ++j) m = m + Interval(f.at(c, i, j).mag());
-        return Interval(-m.hi(), m.hi());
-    };
     auto over = [&](int c) {
-        return Xc[c] + bound(pp.forms.Xs, c) * ds + bound(pp.forms.Xt, c) * dt;
+        return Xc[c] + Interval(-pp.slope_s[c], pp.slope_s[c]) * ds +
+               Interval(-pp.slope_t[c], pp.slope_t[c]) * dt;
     };
     const Interval Z = over(2);
     if (!pp.forms.rational) return Z;

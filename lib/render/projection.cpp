@@ -6,6 +6,30 @@
 
 namespace seamless {
 
+namespace {
+
+// sum_ij |coefficient (i, j) of component c|, rounded up: |f_c| <= it on [0,1]^2.
+double coefficient_magnitude(const PowerForm& f, int c) {
+    Interval m(0.0);
+    for (int i = 0; i <= f.p; ++i)
+        for (int j = 0; j <= f.q; ++j) m = m + Interval(f.at(c, i, j).mag());
+    return m.hi();
+}
+
+} // namespace
+
+void set_camera_patch(ProjectedPatch& pp, const BezierPatch& b) {
+    pp.patch = b;
+    pp.forms = patch_forms(b);
+    pp.hull = enclose_point(pp.forms, ParamBox{});
+    for (int c = 0; c < 4; ++c) pp.slope_s[c] = pp.slope_t[c] = 0;
+    for (int c = 0; c < (pp.forms.rational ? 4 : 3); ++c) {
+        pp.slope_s[c] = coefficient_magnitude(pp.forms.Xs, c);
+        pp.slope_t[c] = coefficient_magnitude(pp.forms.Xt, c);
+    }
+    pp.shape = subpatch_shape(b);
+}
+
 ProjectedScene project_scene(const Scene& scene, int width, int height) {
     Camera cam = scene.camera;
     cam.width = width;
@@ -28,10 +52,7 @@ ProjectedScene project_scene(const Scene& scene, int width, int height) {
             }
             for (int i = 0; i <= b.p; ++i)
                 for (int j = 0; j <= b.q; ++j) b.at(i, j) = ps.frame.to_camera(b.at(i, j));
-            pp.patch = b;
-            pp.forms = patch_forms(b);
-            pp.hull = enclose_point(pp.forms, ParamBox{});
-            pp.shape = subpatch_shape(b);
+            set_camera_patch(pp, b);
             pp.material = scene.surface_material[k];
             ps.patches.push_back(std::move(pp));
         }

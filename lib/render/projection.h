@@ -22,7 +22,11 @@ struct ProjectedPatch {
                        // straight from them, not a rotated camera box); only
                        // when the scene needs them (needs_secondary_rays)
     bool has_world = false;
-    IVec3 hull;          // enclosure of the whole patch, camera coordinates
+    IVec3 hull; // enclosure of the whole patch, camera coordinates
+    // Upper bounds on |d X_k / ds| and |d X_k / dt| over [0,1]^2, k = 0..3 (the
+    // sums of the magnitudes of forms.Xs's and forms.Xt's coefficients, rounded
+    // up): the mean value form of a single ray's hit depth (pixel_solve.cpp).
+    double slope_s[4] = {}, slope_t[4] = {};
     SubpatchShape shape; // layout of its subpatches' coefficients (mark.h)
     int material = 0;
 };
@@ -36,6 +40,10 @@ struct ProjectedScene {
     // The camera-space primary ray through screen point (a, b): origin 0, direction (a, b, 1).
     static Ray primary_ray(double a, double b) { return {{0, 0, 0}, {a, b, 1}}; }
 };
+
+// Sets pp's patch to b (camera coordinates) and everything derived from it:
+// forms, hull, slope bounds, subpatch shape.
+void set_camera_patch(ProjectedPatch& pp, const BezierPatch& b);
 
 // Builds the projected scene for an image of width x height pixels.
 ProjectedScene project_scene(const Scene& scene, int width, int height);

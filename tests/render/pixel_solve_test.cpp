@@ -22,9 +22,7 @@ namespace {
 ProjectedPatch dome(std::mt19937& rng, double bulge) {
     const BezierPatch b = test::random_dome(rng, bulge);
     ProjectedPatch pp;
-    pp.patch = b;
-    pp.forms = patch_forms(b);
-    pp.hull = enclose_point(pp.forms, ParamBox{});
+    set_camera_patch(pp, b);
     return pp;
 }
 
@@ -140,11 +138,12 @@ TEST_CASE("Certified Newton's depth encloses the patch's depth, polynomial and r
     for (int n = 0; n < 200; ++n) {
         ProjectedPatch pp = dome(rng, n % 2 ? 0.8 : 3.0);
         if (n % 2) { // rational: the same points with weights in [0.5, 2]
-            for (int i = 0; i <= pp.patch.p; ++i)
-                for (int j = 0; j <= pp.patch.q; ++j)
-                    pp.patch.at(i, j) = HPoint::from(pp.patch.at(i, j).point(), Wt(rng));
-            pp.patch.rational = true;
-            pp.forms = patch_forms(pp.patch);
+            BezierPatch r = pp.patch;
+            for (int i = 0; i <= r.p; ++i)
+                for (int j = 0; j <= r.q; ++j)
+                    r.at(i, j) = HPoint::from(r.at(i, j).point(), Wt(rng));
+            r.rational = true;
+            set_camera_patch(pp, r);
         }
         const double s0 = S(rng), t0 = S(rng);
         const Vec3 P = evaluate(pp.patch, s0, t0).point;
