@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/error_bound.h>
 #include <seamless/tessellate/planarity.h>
+#include <seamless/tessellate/power_basis.h>
 
 #include <algorithm>
 #include <cassert>
@@ -242,6 +243,23 @@ SurfacePoint surface_point(const BezierPatch& b, double s, double t) {
     return evaluate(b, s, t);
 }
 
+// The surface a bound evaluates: a polynomial bicubic patch in the power basis
+// (power_basis.h: a third of the instructions, within `error` of the surface),
+// any other one by surface_point.
+struct Surface {
+    const BezierPatch& patch;
+    bool power = false;
+    PowerBasisPatch pb;
+    explicit Surface(const BezierPatch& b) : patch(b), power(has_power_basis(b)) {
+        if (power) pb = power_basis(b);
+    }
+    SurfacePoint at(double s, double t) const {
+        return power ? evaluate(pb, s, t) : surface_point(patch, s, t);
+    }
+    // Bound on the evaluation's rounding beyond rounding_allowance's.
+    double error() const { return power ? pb.error : 0; }
+};
+
 // One Gauss-Newton step from u (sp = S and its derivatives there) toward the
 // foot of x on S, each coordinate's step at most `limit` (near a pole the foot
 // is ill-determined), kept only when it brings S closer to x; clamped to
@@ -250,7 +268,7 @@ SurfacePoint surface_point(const BezierPatch& b, double s, double t) {
 // residual: the bound counts that part (|g_i - (n.g_i) n|), so it stays within
 // kConverged^2 / 2 of its value at the exact foot, a fraction of a percent.
 constexpr double kConverged = 0.02;
-bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
+bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
     const Vec3 r = x - sp.point;
     const double a11 = dot(sp.du, sp.du), a22 = dot(sp.dv, sp.dv), a12 = dot(sp.du, sp.dv);
     const double reg = 1e-12 * (a11 + a22);
@@ -264,7 +282,7 @@ bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double 
     const Param v{std::clamp(u.s + std::clamp(ds, -limit, limit), 0.0, 1.0),
                   std::clamp(u.t + std::clamp(dt, -limit, limit), 0.0, 1.0)};
     if (v.s == u.s && v.t == u.t) return false;
-    const SurfacePoint sv = surface_point(b, v.s, v.t);
+    const SurfacePoint sv = b.at(v.s, v.t);
     const Vec3 gv = sv.point - x;
     if (!(dot(gv, gv) < dot(r, r))) return false;
     u = v;
@@ -272,20 +290,20 @@ bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double 
     return true;
 }
 
-Param foot(const BezierPatch& b, Vec3 x, Param u, double limit, Vec3& g) {
-    SurfacePoint sp = surface_point(b, u.s, u.t);
+Param foot(const Surface& b, Vec3 x, Param u, double limit, Vec3& g) {
+    SurfacePoint sp = b.at(u.s, u.t);
     foot_step(b, x, u, sp, limit);
     g = sp.point - x;
     return u;
 }
 
 // Same along the line u(tau) = c0 + tau (c1 - c0), tau in [lo, hi].
-double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau, double lo,
-                    double hi, double limit, Vec3& g) {
+double foot_on_line(const Surface& b, Vec3 x, Param c0, Param c1, double tau, double lo, double hi,
+                    double limit, Vec3& g) {
     auto at = [&](double z) { return Param{c0.s + z * (c1.s - c0.s), c0.t + z * (c1.t - c0.t)}; };
     tau = std::clamp(tau, lo, hi);
     const Param u = at(tau);
-    const SurfacePoint sp = surface_point(b, u.s, u.t);
+    const SurfacePoint sp = b.at(u.s, u.t);
     g = sp.point - x;
     const Vec3 d = (c1.s - c0.s) * sp.du + (c1.t - c0.t) * sp.dv;
     const double dd = dot(d, d);
@@ -294,7 +312,7 @@ double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau
     if (!std::isfinite(step)) return tau;
     const double z = std::clamp(tau + std::clamp(step, -limit, limit), lo, hi);
     const Param v = at(z);
-    const Vec3 gv = surface_point(b, v.s, v.t).point - x;
+    const Vec3 gv = b.at(v.s, v.t).point - x;
     if (!(dot(gv, gv) < dot(g, g))) return tau;
     g = gv;
     return z;
@@ -302,9 +320,9 @@ double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau
 
 // Up to `iterations` steps toward the foot, the total move at most `limit`
 // per coordinate.
-Param foot_iterated(const BezierPatch& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
+Param foot_iterated(const Surface& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
     Param u = w;
-    SurfacePoint sp = surface_point(b, u.s, u.t);
+    SurfacePoint sp = b.at(u.s, u.t);
     for (int it = 0; it < iterations; ++it) {
         const double left = limit - std::max(std::abs(u.s - w.s), std::abs(u.t - w.t));
         if (!foot_step(b, x, u, sp, left)) break;
@@ -330,12 +348,13 @@ struct FanResult {
     double bound = 0, largest_g = 0;
 };
 
-FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
+FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
                        const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb);
 
 } // namespace
 
 double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, double target) {
+    const Surface S(b);
     const Net net = make_net(b, centre);
     const DerivativeBounds full = derivative_bounds(net);
 
@@ -367,15 +386,15 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     if (target > 0 && m > 2) {
         // Cheap first: m = 2 may already certify the target, or its refined
         // vertices, about as far from the surface as it lies, already exceed it.
-        const FanResult r = fan_bound_at(b, centre, V, 2, n, nb);
+        const FanResult r = fan_bound_at(S, centre, V, 2, n, nb);
         if (r.bound <= target || r.largest_g > target) return r.bound;
     }
-    return fan_bound_at(b, centre, V, m, n, nb).bound;
+    return fan_bound_at(S, centre, V, m, n, nb).bound;
 }
 
 namespace {
 
-FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
+FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
                        const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb) {
 
     // phi on the radial edges (centre to corner k), shared by two fan triangles.
@@ -391,7 +410,7 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
             Vec3 g;
             if (a == 0 || a == m) {
                 u = a == 0 ? kCentre : kCorner[k];
-                g = surface_point(b, u.s, u.t).point - x;
+                g = b.at(u.s, u.t).point - x;
             } else {
                 u = foot(b, x, w, 0.5 / m, g);
             }
@@ -513,13 +532,13 @@ Param param(const RingPoint& p) {
     return {p.fs >= 0 ? p.fs : param_of(p.s), p.ft >= 0 ? p.ft : param_of(p.t)};
 }
 
-Node vertex_phi(const BezierPatch& b, const RingPoint& p) {
+Node vertex_phi(const Surface& b, const RingPoint& p) {
     const int gs = p.s, gt = p.t;
     const Vec3 x = p.position;
     const Param w = param(p);
     // A seam vertex of another patch lies on this patch's side: phi keeps it.
-    if (gs < 0 || gt < 0) return {w, surface_point(b, w.s, w.t).point - x};
-    Vec3 g = surface_point(b, w.s, w.t).point - x;
+    if (gs < 0 || gt < 0) return {w, b.at(w.s, w.t).point - x};
+    Vec3 g = b.at(w.s, w.t).point - x;
     const bool s_side = gs == 0 || gs == kParamOne, t_side = gt == 0 || gt == kParamOne;
     if (s_side && t_side) return {w, g};
     auto spacing = [](int i) { return param_of(i & -i); }; // lowest set bit
@@ -543,13 +562,14 @@ bool on_patch_side(const RingPoint& a, const RingPoint& b) {
 // take the same steps, so the fans sharing them agree whatever `steps` each
 // one takes. A refined triangle's bound at or below `enough` (0: none) is
 // not tightened further (a tolerance needs no bound below itself).
-double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3 centre,
-                              std::span<const RingPoint> ring, int m, int steps, double enough) {
+double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const ParamRect& r,
+                              Vec3 centre, std::span<const RingPoint> ring, int m, int steps,
+                              double enough) {
     const size_t n = ring.size();
     const int side_step = m / kSideRefinement;
     const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
     const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-    const Node centre_node{{sc, tc}, surface_point(patch, sc, tc).point - centre};
+    const Node centre_node{{sc, tc}, S.at(sc, tc).point - centre};
     const double inner_limit =
         0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
 
@@ -566,14 +586,14 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
     auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
     for (size_t i = 0; i < n; ++i) {
         radial[i][0] = centre_node;
-        radial[i][m] = vertex_phi(patch, ring[i]);
+        radial[i][m] = vertex_phi(S, ring[i]);
         const Param p = param(ring[i]);
         for (int a = 1; a < m; ++a) {
             const double f = static_cast<double>(a) / m;
             const Param w{sc + f * (p.s - sc), tc + f * (p.t - tc)};
             const Vec3 x = centre + f * (ring[i].position - centre);
             Vec3 g;
-            const Param u = foot_iterated(patch, x, w, inner_limit, steps, g);
+            const Param u = foot_iterated(S, x, w, inner_limit, steps, g);
             radial[i][a] = {u, g};
         }
     }
@@ -603,10 +623,10 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
             if (side) {
                 // Along the patch's side, between phi(lo) and phi(hi).
                 const double z =
-                    foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
+                    foot_on_line(S, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
                 cn.u = {nlo.u.s + z * (nhi.u.s - nlo.u.s), nlo.u.t + z * (nhi.u.t - nlo.u.t)};
             } else {
-                cn.u = foot_iterated(patch, x, w, seg_limit, kFootSteps, cn.g);
+                cn.u = foot_iterated(S, x, w, seg_limit, kFootSteps, cn.g);
             }
         }
         // The refined points between: phi linear between the shared points.
@@ -622,8 +642,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
             const double fx = static_cast<double>(j) / m;
             Node& x = node(k, m - c, c);
             x.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
-            x.g = surface_point(patch, x.u.s, x.u.t).point -
-                  (lo.position + fx * (hi.position - lo.position));
+            x.g = S.at(x.u.s, x.u.t).point - (lo.position + fx * (hi.position - lo.position));
         }
         // Inside the fan triangle.
         const Param pp = param(P), pq = param(Q);
@@ -634,7 +653,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
                               tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
                 const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
                 Node& y = node(k, a, c);
-                y.u = foot_iterated(patch, x, w, inner_limit, steps, y.g);
+                y.u = foot_iterated(S, x, w, inner_limit, steps, y.g);
             }
     }
 
@@ -709,7 +728,10 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                            std::span<const RingPoint> ring, double scale, double target) {
     const size_t n = ring.size();
     assert(n >= 3);
-    const double allowance = rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
+    const Surface S(patch);
+    // The evaluator's own rounding (power basis) on top of the usual allowance.
+    const double allowance =
+        rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale) + S.error();
     // A tolerance needs a bound at or below it, not the tightest one: the
     // coarsest refinement first (phi on the shared sides is the same for every
     // m, so the fans stay continuous whatever m each one takes). Both results
@@ -721,7 +743,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         // Without feet inside the fan first: on the teapot at D = 0.001 about
         // 93 % of the fans certify so, with one evaluation per refined vertex.
         for (int steps : {0, kFootSteps}) {
-            coarse = std::min(coarse, certified_fan_bound_at(patch, r, centre, ring,
+            coarse = std::min(coarse, certified_fan_bound_at(patch, S, r, centre, ring,
                                                              kSideRefinement, steps, enough) +
                                           allowance);
             if (coarse <= target) return coarse;
@@ -739,8 +761,9 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     if (m == kSideRefinement && target > 0) return coarse;
-    return std::min(coarse, certified_fan_bound_at(patch, r, centre, ring, m, kFootSteps, enough) +
-                                allowance);
+    return std::min(coarse,
+                    certified_fan_bound_at(patch, S, r, centre, ring, m, kFootSteps, enough) +
+                        allowance);
 }
 
 } // namespace seamless

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/tessellate/power_basis.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace seamless {
+namespace {
+
+// Power coefficient i of the cubic Bernstein basis function k: sum_k M[i][k] P_k.
+constexpr double kM[4][4] = {{1, 0, 0, 0}, {-3, 3, 0, 0}, {3, -6, 3, 0}, {-1, 3, -3, 1}};
+// Column sums of |M|: how much of |P_k| can reach the coefficients.
+constexpr double kColumn[4] = {8, 12, 6, 1};
+
+// gamma_n with room to spare (u = eps / 2, and n u < 0.01 here).
+double gamma(int n) {
+    return 1.01 * n * (std::numeric_limits<double>::epsilon() / 2);
+}
+
+} // namespace
+
+bool has_power_basis(const BezierPatch& b) {
+    if (b.p != 3 || b.q != 3) return false;
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 3; ++j)
+            if (b.at(i, j).w != 1) return false;
+    return true;
+}
+
+PowerBasisPatch power_basis(const BezierPatch& b) {
+    assert(has_power_basis(b));
+    PowerBasisPatch pb;
+    const HPoint& o = b.at(0, 0);
+    pb.origin = {o.x, o.y, o.z};
+    double err2 = 0;
+    for (int c = 0; c < 3; ++c) {
+        // P - o, this coordinate (the weights are 1: the point is xyz).
+        double P[4][4], spread = 0, largest = 0;
+        for (int k = 0; k < 4; ++k)
+            for (int l = 0; l < 4; ++l) {
+                const HPoint& h = b.at(k, l);
+                const double v = (c == 0 ? h.x : c == 1 ? h.y : h.z);
+                const double ov = (c == 0 ? o.x : c == 1 ? o.y : o.z);
+                P[k][l] = v - ov;
+                spread += kColumn[k] * kColumn[l] * std::abs(P[k][l]);
+                largest = std::max(largest, std::abs(P[k][l]));
+            }
+        double T[4][4]; // T[i][l] = sum_k M[i][k] P[k][l]
+        for (int i = 0; i < 4; ++i)
+            for (int l = 0; l < 4; ++l) {
+                double sum = 0;
+                for (int k = 0; k <= i; ++k) sum += kM[i][k] * P[k][l];
+                T[i][l] = sum;
+            }
+        double total = 0; // sum |a_ij|
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                double sum = 0;
+                for (int l = 0; l <= j; ++l) sum += T[i][l] * kM[j][l];
+                pb.a[c][j][i] = sum;
+                total += std::abs(sum);
+            }
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 4; ++i) pb.at[c][j][i] = (j + 1) * pb.a[c][j + 1][i];
+        const double ov = std::abs(c == 0 ? o.x : c == 1 ? o.y : o.z);
+        // Horner twice (13), the coefficients (9), P - o (a convex combination
+        // of the rounded differences), the final + o; the sums above rounded too.
+        const double e =
+            (gamma(16) * total + gamma(10) * spread + gamma(2) * (largest + ov + total)) * 1.01;
+        err2 += e * e;
+    }
+    pb.error = 1.01 * std::sqrt(err2);
+    return pb;
+}
+
+SurfacePoint evaluate(const PowerBasisPatch& pb, double s, double t) {
+    double X[3], Xu[3], Xv[3];
+    for (int c = 0; c < 3; ++c) {
+        const double(&a)[4][4] = pb.a[c];
+        const double(&d)[3][4] = pb.at[c];
+        double row[4], rowv[4];
+        for (int i = 0; i < 4; ++i) {
+            row[i] = ((a[3][i] * t + a[2][i]) * t + a[1][i]) * t + a[0][i];
+            rowv[i] = (d[2][i] * t + d[1][i]) * t + d[0][i];
+        }
+        X[c] = ((row[3] * s + row[2]) * s + row[1]) * s + row[0];
+        Xu[c] = ((3 * row[3]) * s + 2 * row[2]) * s + row[1];
+        Xv[c] = ((rowv[3] * s + rowv[2]) * s + rowv[1]) * s + rowv[0];
+    }
+    return {pb.origin + Vec3{X[0], X[1], X[2]}, {Xu[0], Xu[1], Xu[2]}, {Xv[0], Xv[1], Xv[2]}};
+}
+
+} // namespace seamless
