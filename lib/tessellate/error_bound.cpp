@@ -52,13 +52,24 @@ struct Net {
     }
 };
 
-Net make_net(const BezierPatch& b, Vec3 c) {
+// A bicubic control net alone (a BezierPatch holds 10 x 10 points): the
+// boxes the certified bound extracts from bicubic patches.
+struct BicubicNet {
+    static constexpr int kMaxOrder = 4;
+    static constexpr int p = 3, q = 3;
+    std::array<HPoint, 16> cp;
+    HPoint& at(int i, int j) { return cp[i * 4 + j]; }
+    const HPoint& at(int i, int j) const { return cp[i * 4 + j]; }
+};
+
+template <class Patch> Net make_net(const Patch& b, Vec3 c) {
     Net n;
     const int p = n.p = b.p, q = n.q = b.q;
     n.wlo = std::numeric_limits<double>::infinity();
-    constexpr int O = BezierPatch::kMaxOrder;
-    std::array<Vec3, Net::kN> x{}; // w (P - c)
-    std::array<double, Net::kN> w{};
+    constexpr int O = Patch::kMaxOrder;
+    // Only the entries (i <= p, j <= q) are written and read: not zeroed.
+    std::array<std::array<double, 3>, O * O> x; // w (P - c)
+    std::array<double, O * O> w;
     // With one weight throughout (a polynomial patch) the weights' differences
     // are exactly 0, so the points and first differences, which the quotient
     // rule multiplies only by them, are not needed: not stored (count 0, their
@@ -69,13 +80,17 @@ Net make_net(const BezierPatch& b, Vec3 c) {
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j) {
             const HPoint& h = b.at(i, j);
-            x[i * O + j] = h.xyz() - h.w * c;
+            const Vec3 v = h.xyz() - h.w * c;
+            x[i * O + j] = {v.x, v.y, v.z};
             w[i * O + j] = h.w;
             if (!one_weight) n.add(Net::kP0, h.point() - c);
             n.wlo = std::min(n.wlo, h.w);
         }
     assert(n.wlo > 0);
-    auto X = [&](int i, int j) -> const Vec3& { return x[i * O + j]; };
+    auto X = [&](int i, int j) {
+        const std::array<double, 3>& v = x[i * O + j];
+        return Vec3{v[0], v[1], v[2]};
+    };
     auto W = [&](int i, int j) { return w[i * O + j]; };
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j) {
@@ -256,6 +271,10 @@ struct Surface {
     SurfacePoint at(double s, double t) const {
         return power ? evaluate(pb, s, t) : surface_point(patch, s, t);
     }
+    // The same point without the derivatives.
+    Vec3 point(double s, double t) const {
+        return power ? evaluate_point(pb, s, t) : surface_point(patch, s, t).point;
+    }
     // Bound on the evaluation's rounding beyond rounding_allowance's.
     double error() const { return power ? pb.error : 0; }
 };
@@ -312,7 +331,7 @@ double foot_on_line(const Surface& b, Vec3 x, Param c0, Param c1, double tau, do
     if (!std::isfinite(step)) return tau;
     const double z = std::clamp(tau + std::clamp(step, -limit, limit), lo, hi);
     const Param v = at(z);
-    const Vec3 gv = b.at(v.s, v.t).point - x;
+    const Vec3 gv = b.point(v.s, v.t) - x;
     if (!(dot(gv, gv) < dot(g, g))) return tau;
     g = gv;
     return z;
@@ -321,6 +340,10 @@ double foot_on_line(const Surface& b, Vec3 x, Param c0, Param c1, double tau, do
 // Up to `iterations` steps toward the foot, the total move at most `limit`
 // per coordinate.
 Param foot_iterated(const Surface& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
+    if (iterations == 0) {
+        g = b.point(w.s, w.t) - x;
+        return w;
+    }
     Param u = w;
     SurfacePoint sp = b.at(u.s, u.t);
     for (int it = 0; it < iterations; ++it) {
@@ -410,7 +433,7 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
             Vec3 g;
             if (a == 0 || a == m) {
                 u = a == 0 ? kCentre : kCorner[k];
-                g = b.at(u.s, u.t).point - x;
+                g = b.point(u.s, u.t) - x;
             } else {
                 u = foot(b, x, w, 0.5 / m, g);
             }
@@ -489,6 +512,45 @@ BezierPatch extract_subpatch(const BezierPatch& patch, const ParamRect& r) {
     return extract_box(patch, param_of(r.s0), param_of(r.s1), param_of(r.t0), param_of(r.t1));
 }
 
+namespace {
+
+// split_u / split_v (bezier_patch.h) of a bicubic net at s, keeping one part:
+// the same operations in the same order, so the same points.
+void split_bicubic(BicubicNet& b, double s, bool in_u, bool upper) {
+    for (int j = 0; j < 4; ++j) {
+        HPoint col[4], out[4];
+        for (int i = 0; i < 4; ++i) col[i] = in_u ? b.at(i, j) : b.at(j, i);
+        for (int level = 0; level <= 3; ++level) {
+            if (upper)
+                out[3 - level] = col[3 - level];
+            else
+                out[level] = col[0];
+            for (int i = 0; i < 3 - level; ++i) col[i] = lerp(col[i], col[i + 1], s);
+        }
+        for (int i = 0; i < 4; ++i) (in_u ? b.at(i, j) : b.at(j, i)) = out[i];
+    }
+}
+
+// extract_box of a bicubic patch, as a net alone (the same points).
+BicubicNet extract_bicubic(const BezierPatch& patch, double s0, double s1, double t0, double t1) {
+    BicubicNet b;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) b.at(i, j) = patch.at(i, j);
+    if (s0 > 0) split_bicubic(b, s0, true, true);
+    if (s1 < 1) split_bicubic(b, (s1 - s0) / (1 - s0), true, false);
+    if (t0 > 0) split_bicubic(b, t0, false, true);
+    if (t1 < 1) split_bicubic(b, (t1 - t0) / (1 - t0), false, false);
+    return b;
+}
+
+// make_net of extract_box(patch, s0, s1, t0, t1).
+Net box_net(const BezierPatch& patch, double s0, double s1, double t0, double t1, Vec3 c) {
+    if (patch.p == 3 && patch.q == 3) return make_net(extract_bicubic(patch, s0, s1, t0, t1), c);
+    return make_net(extract_box(patch, s0, s1, t0, t1), c);
+}
+
+} // namespace
+
 BezierPatch extract_box(const BezierPatch& patch, double s0, double s1, double t0, double t1) {
     BezierPatch cur = patch, lo, hi;
     if (s0 > 0) {
@@ -536,14 +598,13 @@ Node vertex_phi(const Surface& b, const RingPoint& p) {
     const int gs = p.s, gt = p.t;
     const Vec3 x = p.position;
     const Param w = param(p);
-    // A seam vertex of another patch lies on this patch's side: phi keeps it.
-    if (gs < 0 || gt < 0) return {w, b.at(w.s, w.t).point - x};
-    Vec3 g = b.at(w.s, w.t).point - x;
+    // A seam vertex of another patch lies on this patch's side: phi keeps it,
+    // as it keeps the vertices on the patch's sides.
     const bool s_side = gs == 0 || gs == kParamOne, t_side = gt == 0 || gt == kParamOne;
-    if (s_side && t_side) return {w, g};
+    if (gs < 0 || gt < 0 || s_side || t_side) return {w, b.point(w.s, w.t) - x};
     auto spacing = [](int i) { return param_of(i & -i); }; // lowest set bit
     const double limit = std::max(spacing(gs), spacing(gt));
-    if (s_side || t_side) return {w, g};
+    Vec3 g;
     const Param u = foot_iterated(b, x, w, limit, 3, g);
     return {u, g};
 }
@@ -569,7 +630,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
     const int side_step = m / kSideRefinement;
     const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
     const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-    const Node centre_node{{sc, tc}, S.at(sc, tc).point - centre};
+    const Node centre_node{{sc, tc}, S.point(sc, tc) - centre};
     const double inner_limit =
         0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
 
@@ -642,7 +703,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
             const double fx = static_cast<double>(j) / m;
             Node& x = node(k, m - c, c);
             x.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
-            x.g = S.at(x.u.s, x.u.t).point - (lo.position + fx * (hi.position - lo.position));
+            x.g = S.point(x.u.s, x.u.t) - (lo.position + fx * (hi.position - lo.position));
         }
         // Inside the fan triangle.
         const Param pp = param(P), pq = param(Q);
@@ -668,7 +729,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 bs0 = std::min(bs0, u.s), bs1 = std::max(bs1, u.s);
                 bt0 = std::min(bt0, u.t), bt1 = std::max(bt1, u.t);
             }
-    const Net net = make_net(extract_box(patch, bs0, bs1, bt0, bt1), centre);
+    const Net net = box_net(patch, bs0, bs1, bt0, bt1, centre);
 
     // (3) The bound on every refined triangle.
     const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
@@ -705,7 +766,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 (gnt + Rn) * (gnt + Rn) + (gtt + R) * (gtt + R) > top * top) {
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
-                const Net local = make_net(extract_box(patch, s0, s1, t0, t1), centre);
+                const Net local = box_net(patch, s0, s1, t0, t1, centre);
                 const SplitBounds ln = split_bounds(local, nk);
                 Rn = std::min(Rn, remainder(ln.normal, 1, 1));
                 R = std::min(R, remainder(ln.tangential, 1, 1));
@@ -753,7 +814,8 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     // against its normal remainder (about the geometric deviation).
     int m = kSideRefinement;
     {
-        const Net net = make_net(extract_subpatch(patch, r), centre);
+        const Net net =
+            box_net(patch, param_of(r.s0), param_of(r.s1), param_of(r.t0), param_of(r.t1), centre);
         const DerivativeBounds full = derivative_bounds(net);
         const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
         const double R1 = remainder(full, 1, 1);

@@ -25,9 +25,9 @@ namespace seamless {
 struct PowerBasisPatch {
     Vec3 origin;
     // a[c][j][i]: coordinate c's coefficient of s^i t^j (rows contiguous in i).
-    double a[3][4][4] = {};
+    alignas(16) double a[3][4][4] = {};
     // The t-derivative's coefficients of s^i t^j, j = 0..2: a[c][j + 1][i] (j + 1).
-    double at[3][3][4] = {};
+    alignas(16) double at[3][3][4] = {};
     double error = 0; // bound on |computed point - S(s, t)| for s, t in [0, 1]
 };
 
@@ -37,5 +37,7 @@ PowerBasisPatch power_basis(const BezierPatch& b);
 
 // Point and derivatives with respect to the local (s, t), s, t in [0, 1].
 SurfacePoint evaluate(const PowerBasisPatch& pb, double s, double t);
+// The point alone: the same value as evaluate(pb, s, t).point.
+Vec3 evaluate_point(const PowerBasisPatch& pb, double s, double t);
 
 } // namespace seamless

@@ -2,7 +2,7 @@
 // The power-basis evaluator is within its proven rounding bound of the exact
 // surface point (a long double Bernstein sum as reference), on the teapot's
 // patches and on a patch far from the origin where the rounding shows; its
-// derivatives agree with evaluate().
+// derivatives agree with evaluate(), its point alone with its point.
 #include "test_util.h"
 
 #include <seamless/model/model.h>
@@ -55,6 +55,8 @@ double worst_ratio(const BezierPatch& b, double& largest_difference) {
         for (int c = 0; c <= n; ++c) {
             const double s = a == n ? 1.0 : a / (n - 0.37), t = c == n ? 1.0 : c / (n - 0.61);
             const SurfacePoint p = evaluate(pb, s, t);
+            // The point alone is the same value (the bound relies on it).
+            CHECK(evaluate_point(pb, s, t) == p.point);
             const std::array<long double, 3> r = reference(b, s, t);
             const long double dx = p.point.x - r[0], dy = p.point.y - r[1], dz = p.point.z - r[2];
             const double d = static_cast<double>(std::sqrt(dx * dx + dy * dy + dz * dz));
