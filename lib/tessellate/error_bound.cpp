@@ -120,6 +120,16 @@ template <class Patch> Net make_net(const Patch& b, Vec3 c) {
     return n;
 }
 
+// make_net of a patch; a bicubic one as a 4 x 4 net (the same values, the
+// loops fixed).
+Net net_of(const BezierPatch& b, Vec3 c) {
+    if (b.p != 3 || b.q != 3) return make_net(b, c);
+    BicubicNet n;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) n.at(i, j) = b.at(i, j);
+    return make_net(n, c);
+}
+
 // M magnitudes of each difference at once (mag returns M values): the normal
 // and the tangential bounds in one pass over the differences.
 template <size_t M, class Mag>
@@ -263,20 +273,28 @@ SurfacePoint surface_point(const BezierPatch& b, double s, double t) {
 // any other one by surface_point.
 struct Surface {
     const BezierPatch& patch;
-    bool power = false;
-    PowerBasisPatch pb;
-    explicit Surface(const BezierPatch& b) : patch(b), power(has_power_basis(b)) {
-        if (power) pb = power_basis(b);
+    const PowerBasisPatch* pb = nullptr; // null: by surface_point
+    PowerBasisPatch own;
+    // `given`: patch's power basis, already at hand.
+    explicit Surface(const BezierPatch& b, const PowerBasisPatch* given = nullptr) : patch(b) {
+        if (given) {
+            pb = given;
+        } else if (has_power_basis(b)) {
+            own = power_basis(b);
+            pb = &own;
+        }
     }
+    Surface(const Surface&) = delete;
+    Surface& operator=(const Surface&) = delete;
     SurfacePoint at(double s, double t) const {
-        return power ? evaluate(pb, s, t) : surface_point(patch, s, t);
+        return pb ? evaluate(*pb, s, t) : surface_point(patch, s, t);
     }
     // The same point without the derivatives.
     Vec3 point(double s, double t) const {
-        return power ? evaluate_point(pb, s, t) : surface_point(patch, s, t).point;
+        return pb ? evaluate_point(*pb, s, t) : surface_point(patch, s, t).point;
     }
     // Bound on the evaluation's rounding beyond rounding_allowance's.
-    double error() const { return power ? pb.error : 0; }
+    double error() const { return pb ? pb->error : 0; }
 };
 
 // One Gauss-Newton step from u (sp = S and its derivatives there) toward the
@@ -376,9 +394,26 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
 
 } // namespace
 
+namespace {
+double fan_bound_of(const Surface& S, Vec3 centre, const std::array<Vec3, 4>& V, double target);
+} // namespace
+
 double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, double target) {
     const Surface S(b);
-    const Net net = make_net(b, centre);
+    return fan_bound_of(S, centre, V, target);
+}
+
+double fan_bound(const BezierPatch& b, const PowerBasisPatch& pb, Vec3 centre,
+                 const std::array<Vec3, 4>& V, double target) {
+    const Surface S(b, &pb);
+    return fan_bound_of(S, centre, V, target);
+}
+
+namespace {
+
+double fan_bound_of(const Surface& S, Vec3 centre, const std::array<Vec3, 4>& V, double target) {
+    const BezierPatch& b = S.patch;
+    const Net net = net_of(b, centre);
     const DerivativeBounds full = derivative_bounds(net);
 
     // Unit normals of the fan triangles (any unit vector keeps the bound valid:
@@ -414,6 +449,8 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     }
     return fan_bound_at(S, centre, V, m, n, nb).bound;
 }
+
+} // namespace
 
 namespace {
 
@@ -500,7 +537,7 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
 } // namespace
 
 std::array<double, 2> second_derivative_bounds(const BezierPatch& b) {
-    const DerivativeBounds d = derivative_bounds(make_net(b, b.corner(0)));
+    const DerivativeBounds d = derivative_bounds(net_of(b, b.corner(0)));
     return {d.A, d.C};
 }
 

@@ -31,6 +31,7 @@
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
+#include <seamless/tessellate/power_basis.h>
 #include <seamless/tessellate/subdivision.h>
 
 #include <array>
@@ -47,6 +48,9 @@ inline constexpr int kMaxFanRefinement = 8;
 // m. Without the rounding allowance (rounding_allowance below).
 double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V,
                  double target = 0);
+// The same with b's power basis at hand (power_basis.h; has_power_basis(b)).
+double fan_bound(const BezierPatch& b, const PowerBasisPatch& pb, Vec3 centre,
+                 const std::array<Vec3, 4>& V, double target = 0);
 
 // A vertex of a subpatch's ring: grid point on its patch and position.
 struct RingPoint {
