@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -39,17 +40,18 @@ struct Net {
     static constexpr int kN = BezierPatch::kMaxOrder * BezierPatch::kMaxOrder;
     enum Group { kP0, kXs, kXt, kXss, kXst, kXtt, kGroups };
     int p = 0, q = 0;
-    // Raw doubles: only the first count[g] of each group are written and read
-    // (a Vec3 array would be zeroed on every construction, 14 KB).
-    std::array<std::array<double, 3>, kGroups * kN> diff;
+    // Raw doubles, one array per coordinate (split_bounds takes two at a
+    // time): only the first count[g] of each group are written and read (a
+    // Vec3 array would be zeroed on every construction, 14 KB).
+    alignas(16) std::array<double, kGroups * kN> dx, dy, dz;
     std::array<int, kGroups> count{};
     double Ws = 0, Wt = 0, Wss = 0, Wst = 0, Wtt = 0;
     double wlo = 1;
-    void add(Group g, Vec3 v) { diff[g * kN + count[g]++] = {v.x, v.y, v.z}; }
-    Vec3 at(int g, int i) const {
-        const std::array<double, 3>& d = diff[g * kN + i];
-        return {d[0], d[1], d[2]};
+    void add(Group g, Vec3 v) {
+        const int i = g * kN + count[g]++;
+        dx[i] = v.x, dy[i] = v.y, dz[i] = v.z;
     }
+    Vec3 at(int g, int i) const { return {dx[g * kN + i], dy[g * kN + i], dz[g * kN + i]}; }
 };
 
 // A bicubic control net alone (a BezierPatch holds 10 x 10 points): the
@@ -92,29 +94,32 @@ template <class Patch> Net make_net(const Patch& b, Vec3 c) {
         return Vec3{v[0], v[1], v[2]};
     };
     auto W = [&](int i, int j) { return w[i * O + j]; };
+    // Second and mixed differences (one weight: the weights' are exactly 0).
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
+            if (i + 1 < p) n.add(Net::kXss, X(i + 2, j) - 2 * X(i + 1, j) + X(i, j));
+            if (j + 1 < q) n.add(Net::kXtt, X(i, j + 2) - 2 * X(i, j + 1) + X(i, j));
+            if (i < p && j < q)
+                n.add(Net::kXst, X(i + 1, j + 1) - X(i + 1, j) - X(i, j + 1) + X(i, j));
+        }
+    if (one_weight) return n;
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j) {
             if (i < p) {
-                if (!one_weight) n.add(Net::kXs, X(i + 1, j) - X(i, j));
+                n.add(Net::kXs, X(i + 1, j) - X(i, j));
                 n.Ws = std::max(n.Ws, std::abs(W(i + 1, j) - W(i, j)));
             }
             if (j < q) {
-                if (!one_weight) n.add(Net::kXt, X(i, j + 1) - X(i, j));
+                n.add(Net::kXt, X(i, j + 1) - X(i, j));
                 n.Wt = std::max(n.Wt, std::abs(W(i, j + 1) - W(i, j)));
             }
-            if (i + 1 < p) {
-                n.add(Net::kXss, X(i + 2, j) - 2 * X(i + 1, j) + X(i, j));
+            if (i + 1 < p)
                 n.Wss = std::max(n.Wss, std::abs(W(i + 2, j) - 2 * W(i + 1, j) + W(i, j)));
-            }
-            if (j + 1 < q) {
-                n.add(Net::kXtt, X(i, j + 2) - 2 * X(i, j + 1) + X(i, j));
+            if (j + 1 < q)
                 n.Wtt = std::max(n.Wtt, std::abs(W(i, j + 2) - 2 * W(i, j + 1) + W(i, j)));
-            }
-            if (i < p && j < q) {
-                n.add(Net::kXst, X(i + 1, j + 1) - X(i + 1, j) - X(i, j + 1) + X(i, j));
+            if (i < p && j < q)
                 n.Wst = std::max(n.Wst,
                                  std::abs(W(i + 1, j + 1) - W(i + 1, j) - W(i, j + 1) + W(i, j)));
-            }
         }
     n.Ws *= p, n.Wt *= q, n.Wss *= p * (p - 1), n.Wtt *= q * (q - 1), n.Wst *= p * q;
     return n;
@@ -132,17 +137,11 @@ Net net_of(const BezierPatch& b, Vec3 c) {
 
 // M magnitudes of each difference at once (mag returns M values): the normal
 // and the tangential bounds in one pass over the differences.
-template <size_t M, class Mag>
-std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
-    using Mags = std::array<double, M>;
-    std::array<Mags, Net::kGroups> top{};
-    for (int g = 0; g < Net::kGroups; ++g) {
-        Mags& to = top[g];
-        for (int i = 0; i < n.count[g]; ++i) {
-            const Mags m = mag(n.at(g, i));
-            for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], m[k]);
-        }
-    }
+template <size_t M> using Tops = std::array<std::array<double, M>, Net::kGroups>;
+
+// The bounds from the largest magnitudes of each group of differences.
+template <size_t M>
+std::array<DerivativeBounds, M> derivative_bounds_from(const Net& n, const Tops<M>& top) {
     const int p = n.p, q = n.q;
     const double Ws = n.Ws, Wt = n.Wt, Wss = n.Wss, Wst = n.Wst, Wtt = n.Wtt;
     // Rounding of the differences and products: relative, a few ulps each.
@@ -160,6 +159,20 @@ std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
         r.C = (xtt + 2 * Pt * Wt + p0 * Wtt) / n.wlo * inflate;
     }
     return out;
+}
+
+template <size_t M, class Mag>
+std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
+    using Mags = std::array<double, M>;
+    Tops<M> top{};
+    for (int g = 0; g < Net::kGroups; ++g) {
+        Mags& to = top[g];
+        for (int i = 0; i < n.count[g]; ++i) {
+            const Mags m = mag(n.at(g, i));
+            for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], m[k]);
+        }
+    }
+    return derivative_bounds_from<M>(n, top);
 }
 
 // Bounds of S itself (Euclidean norm).
@@ -185,10 +198,42 @@ SplitBounds split_bounds(const Net& net, Vec3 n) {
         const DerivativeBounds full = derivative_bounds(net);
         return {full, full};
     }
-    const std::array<DerivativeBounds, 2> b = derivative_bounds_of<2>(net, [&](Vec3 v) {
-        const double d = dot(v, n);
-        return std::array<double, 2>{std::abs(d), norm(v - d * n)};
-    });
+    // Per difference v: |v . n| and |v - (v . n) n|, two differences at a time
+    // (SSE2 vector extension; each lane does dot() and norm()'s operations in
+    // their order). The largest norm is the root of the largest square (the
+    // root is monotone and correctly rounded: the same value).
+    using Lanes = double __attribute__((vector_size(16)));
+    auto load = [](const double* p) {
+        Lanes v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    };
+    const Lanes nx = {n.x, n.x}, ny = {n.y, n.y}, nz = {n.z, n.z};
+    Tops<2> top{};
+    for (int g = 0; g < Net::kGroups; ++g) {
+        const int base = g * Net::kN, count = net.count[g];
+        Lanes tn = {0, 0}, tt = {0, 0};
+        int i = 0;
+        for (; i + 1 < count; i += 2) {
+            const Lanes x = load(&net.dx[base + i]), y = load(&net.dy[base + i]),
+                        z = load(&net.dz[base + i]);
+            const Lanes d = x * nx + y * ny + z * nz;
+            const Lanes ad = d < 0 ? -d : d;
+            const Lanes tx = x - d * nx, ty = y - d * ny, tz = z - d * nz;
+            const Lanes t2 = tx * tx + ty * ty + tz * tz;
+            tn = tn < ad ? ad : tn;
+            tt = tt < t2 ? t2 : tt;
+        }
+        double mn = std::max(tn[0], tn[1]), mt = std::max(tt[0], tt[1]);
+        for (; i < count; ++i) {
+            const Vec3 v = net.at(g, i);
+            const double d = dot(v, n);
+            mn = std::max(mn, std::abs(d));
+            mt = std::max(mt, dot(v - d * n, v - d * n));
+        }
+        top[g] = {mn, std::sqrt(mt)};
+    }
+    const std::array<DerivativeBounds, 2> b = derivative_bounds_from<2>(net, top);
     return {b[0], b[1]};
 }
 
@@ -296,6 +341,28 @@ struct Surface {
     // Bound on the evaluation's rounding beyond rounding_allowance's.
     double error() const { return pb ? pb->error : 0; }
 };
+
+// power_basis(b) of the patch this thread asked about last (the certified
+// bounds run over a patch's subpatches in order): null when b has none.
+const PowerBasisPatch* last_power_basis(const BezierPatch& b) {
+    if (!has_power_basis(b)) return nullptr;
+    thread_local std::array<HPoint, 16> key;
+    thread_local bool valid = false;
+    thread_local PowerBasisPatch pb;
+    bool same = valid;
+    for (int i = 0; i < 4 && same; ++i)
+        for (int j = 0; j < 4 && same; ++j) {
+            const HPoint &h = b.at(i, j), &k = key[i * 4 + j];
+            same = h.x == k.x && h.y == k.y && h.z == k.z && h.w == k.w;
+        }
+    if (!same) {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) key[i * 4 + j] = b.at(i, j);
+        pb = power_basis(b);
+        valid = true;
+    }
+    return &pb;
+}
 
 // One Gauss-Newton step from u (sp = S and its derivatives there) toward the
 // foot of x on S, each coordinate's step at most `limit` (near a pole the foot
@@ -826,7 +893,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                            std::span<const RingPoint> ring, double scale, double target) {
     const size_t n = ring.size();
     assert(n >= 3);
-    const Surface S(patch);
+    const Surface S(patch, last_power_basis(patch));
     // The evaluator's own rounding (power basis) on top of the usual allowance.
     const double allowance =
         rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale) + S.error();

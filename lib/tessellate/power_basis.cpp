@@ -29,7 +29,7 @@ bool has_power_basis(const BezierPatch& b) {
     return true;
 }
 
-PowerBasisPatch power_basis(const BezierPatch& b) {
+PowerBasisPatch power_basis(const BezierPatch& b, bool rounding_bound) {
     assert(has_power_basis(b));
     PowerBasisPatch pb;
     const HPoint& o = b.at(0, 0);
@@ -37,16 +37,20 @@ PowerBasisPatch power_basis(const BezierPatch& b) {
     double err2 = 0;
     for (int c = 0; c < 3; ++c) {
         // P - o, this coordinate (the weights are 1: the point is xyz).
-        double P[4][4], spread = 0, largest = 0;
+        double P[4][4], spread = 0, largest = 0, total = 0; // total: sum |a_ij|
         for (int k = 0; k < 4; ++k)
             for (int l = 0; l < 4; ++l) {
                 const HPoint& h = b.at(k, l);
                 const double v = (c == 0 ? h.x : c == 1 ? h.y : h.z);
                 const double ov = (c == 0 ? o.x : c == 1 ? o.y : o.z);
                 P[k][l] = v - ov;
-                spread += kColumn[k] * kColumn[l] * std::abs(P[k][l]);
-                largest = std::max(largest, std::abs(P[k][l]));
             }
+        if (rounding_bound)
+            for (int k = 0; k < 4; ++k)
+                for (int l = 0; l < 4; ++l) {
+                    spread += kColumn[k] * kColumn[l] * std::abs(P[k][l]);
+                    largest = std::max(largest, std::abs(P[k][l]));
+                }
         double T[4][4]; // T[i][l] = sum_k M[i][k] P[k][l]
         for (int i = 0; i < 4; ++i)
             for (int l = 0; l < 4; ++l) {
@@ -54,16 +58,17 @@ PowerBasisPatch power_basis(const BezierPatch& b) {
                 for (int k = 0; k <= i; ++k) sum += kM[i][k] * P[k][l];
                 T[i][l] = sum;
             }
-        double total = 0; // sum |a_ij|
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j) {
                 double sum = 0;
                 for (int l = 0; l <= j; ++l) sum += T[i][l] * kM[j][l];
                 pb.a[c][j][i] = sum;
-                total += std::abs(sum);
             }
         for (int j = 0; j < 3; ++j)
             for (int i = 0; i < 4; ++i) pb.at[c][j][i] = (j + 1) * pb.a[c][j + 1][i];
+        if (!rounding_bound) continue;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) total += std::abs(pb.a[c][j][i]);
         const double ov = std::abs(c == 0 ? o.x : c == 1 ? o.y : o.z);
         // Horner twice (13), the coefficients (9), P - o (a convex combination
         // of the rounded differences), the final + o; the sums above rounded too.
@@ -71,7 +76,7 @@ PowerBasisPatch power_basis(const BezierPatch& b) {
             (gamma(16) * total + gamma(10) * spread + gamma(2) * (largest + ov + total)) * 1.01;
         err2 += e * e;
     }
-    pb.error = 1.01 * std::sqrt(err2);
+    pb.error = rounding_bound ? 1.01 * std::sqrt(err2) : 0;
     return pb;
 }
 

@@ -33,7 +33,8 @@ struct PowerBasisPatch {
 
 // Only for a polynomial bicubic patch (p = q = 3, every weight 1).
 bool has_power_basis(const BezierPatch& b);
-PowerBasisPatch power_basis(const BezierPatch& b);
+// rounding_bound false: `error` left 0 (for estimates, not proofs).
+PowerBasisPatch power_basis(const BezierPatch& b, bool rounding_bound = true);
 
 // Point and derivatives with respect to the local (s, t), s, t in [0, 1].
 SurfacePoint evaluate(const PowerBasisPatch& pb, double s, double t);

@@ -38,7 +38,7 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
     // for the quick rejection's points and the fan bound's evaluations.
     const bool power = o.tolerance > 0 && has_power_basis(b);
     PowerBasisPatch pb;
-    if (power) pb = power_basis(b);
+    if (power) pb = power_basis(b, false); // fan_bound adds no rounding allowance
     auto point = [&](double s, double t) {
         return power ? evaluate_point(pb, s, t) : evaluate_point(b, s, t);
     };

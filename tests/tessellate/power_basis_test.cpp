@@ -44,6 +44,9 @@ double worst_ratio(const BezierPatch& b, double& largest_difference) {
     REQUIRE(has_power_basis(b));
     const PowerBasisPatch pb = power_basis(b);
     REQUIRE(pb.error > 0);
+    // Without the rounding bound: the same coefficients (the subdivision's estimates).
+    const PowerBasisPatch plain = power_basis(b, false);
+    CHECK(plain.error == 0);
     double magnitude = 0;
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) magnitude = std::max(magnitude, norm(b.point(i, j)));
@@ -57,6 +60,7 @@ double worst_ratio(const BezierPatch& b, double& largest_difference) {
             const SurfacePoint p = evaluate(pb, s, t);
             // The point alone is the same value (the bound relies on it).
             CHECK(evaluate_point(pb, s, t) == p.point);
+            CHECK(evaluate_point(plain, s, t) == p.point);
             const std::array<long double, 3> r = reference(b, s, t);
             const long double dx = p.point.x - r[0], dy = p.point.y - r[1], dz = p.point.z - r[2];
             const double d = static_cast<double>(std::sqrt(dx * dx + dy * dy + dz * dz));
