@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/net_bounds.h>
 #include <seamless/tessellate/planarity.h>
 #include <seamless/tessellate/power_basis.h>
 
@@ -17,225 +18,6 @@ namespace seamless {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-
-// Bounds over [0,1]^2 of S' = S - c and its first and second partial
-// derivatives, measured by `mag` (the Euclidean norm, or |n . v| for a unit n).
-// X' = X - W c is the homogeneous form of S'; its derivatives' Bernstein
-// coefficients are differences of the control net, bounded by their largest
-// magnitude (convex hull property); the quotient rule with W >= wlo > 0 gives
-//   S_s  = (X'_s - S' W_s) / W,
-//   S_ss = (X'_ss - 2 S_s W_s - S' W_ss) / W,
-//   S_st = (X'_st - S_s W_t - S_t W_s - S' W_st) / W.
-struct DerivativeBounds {
-    double A = 0, B = 0, C = 0; // |S_ss|, |S_st|, |S_tt|
-};
-
-// The differenced control net of S' = S - c, computed once and measured along
-// as many directions as a bound needs (split_bounds: one per fan triangle).
-// Index groups of `diff`: the points P - c, then the first, second and mixed
-// differences of X' in s and t (their Bernstein coefficients up to the factors
-// p, p (p - 1), ...). The weights' differences are direction-free: kept as
-// their largest magnitudes, times those factors.
-struct Net {
-    static constexpr int kN = BezierPatch::kMaxOrder * BezierPatch::kMaxOrder;
-    enum Group { kP0, kXs, kXt, kXss, kXst, kXtt, kGroups };
-    int p = 0, q = 0;
-    // Raw doubles, one array per coordinate (split_bounds takes two at a
-    // time): only the first count[g] of each group are written and read (a
-    // Vec3 array would be zeroed on every construction, 14 KB).
-    alignas(16) std::array<double, kGroups * kN> dx, dy, dz;
-    std::array<int, kGroups> count{};
-    double Ws = 0, Wt = 0, Wss = 0, Wst = 0, Wtt = 0;
-    double wlo = 1;
-    void add(Group g, Vec3 v) {
-        const int i = g * kN + count[g]++;
-        dx[i] = v.x, dy[i] = v.y, dz[i] = v.z;
-    }
-    Vec3 at(int g, int i) const { return {dx[g * kN + i], dy[g * kN + i], dz[g * kN + i]}; }
-};
-
-// A bicubic control net alone (a BezierPatch holds 10 x 10 points): the
-// boxes the certified bound extracts from bicubic patches.
-struct BicubicNet {
-    static constexpr int kMaxOrder = 4;
-    static constexpr int p = 3, q = 3;
-    std::array<HPoint, 16> cp;
-    HPoint& at(int i, int j) { return cp[i * 4 + j]; }
-    const HPoint& at(int i, int j) const { return cp[i * 4 + j]; }
-};
-
-template <class Patch> Net make_net(const Patch& b, Vec3 c) {
-    Net n;
-    const int p = n.p = b.p, q = n.q = b.q;
-    n.wlo = std::numeric_limits<double>::infinity();
-    constexpr int O = Patch::kMaxOrder;
-    // Only the entries (i <= p, j <= q) are written and read: not zeroed.
-    std::array<std::array<double, 3>, O * O> x; // w (P - c)
-    std::array<double, O * O> w;
-    // With one weight throughout (a polynomial patch) the weights' differences
-    // are exactly 0, so the points and first differences, which the quotient
-    // rule multiplies only by them, are not needed: not stored (count 0, their
-    // largest magnitude 0), the bounds unchanged. Saves most of the net.
-    bool one_weight = true;
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) one_weight = one_weight && b.at(i, j).w == b.at(0, 0).w;
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) {
-            const HPoint& h = b.at(i, j);
-            const Vec3 v = h.xyz() - h.w * c;
-            x[i * O + j] = {v.x, v.y, v.z};
-            w[i * O + j] = h.w;
-            if (!one_weight) n.add(Net::kP0, h.point() - c);
-            n.wlo = std::min(n.wlo, h.w);
-        }
-    assert(n.wlo > 0);
-    auto X = [&](int i, int j) {
-        const std::array<double, 3>& v = x[i * O + j];
-        return Vec3{v[0], v[1], v[2]};
-    };
-    auto W = [&](int i, int j) { return w[i * O + j]; };
-    // Second and mixed differences (one weight: the weights' are exactly 0).
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) {
-            if (i + 1 < p) n.add(Net::kXss, X(i + 2, j) - 2 * X(i + 1, j) + X(i, j));
-            if (j + 1 < q) n.add(Net::kXtt, X(i, j + 2) - 2 * X(i, j + 1) + X(i, j));
-            if (i < p && j < q)
-                n.add(Net::kXst, X(i + 1, j + 1) - X(i + 1, j) - X(i, j + 1) + X(i, j));
-        }
-    if (one_weight) return n;
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) {
-            if (i < p) {
-                n.add(Net::kXs, X(i + 1, j) - X(i, j));
-                n.Ws = std::max(n.Ws, std::abs(W(i + 1, j) - W(i, j)));
-            }
-            if (j < q) {
-                n.add(Net::kXt, X(i, j + 1) - X(i, j));
-                n.Wt = std::max(n.Wt, std::abs(W(i, j + 1) - W(i, j)));
-            }
-            if (i + 1 < p)
-                n.Wss = std::max(n.Wss, std::abs(W(i + 2, j) - 2 * W(i + 1, j) + W(i, j)));
-            if (j + 1 < q)
-                n.Wtt = std::max(n.Wtt, std::abs(W(i, j + 2) - 2 * W(i, j + 1) + W(i, j)));
-            if (i < p && j < q)
-                n.Wst = std::max(n.Wst,
-                                 std::abs(W(i + 1, j + 1) - W(i + 1, j) - W(i, j + 1) + W(i, j)));
-        }
-    n.Ws *= p, n.Wt *= q, n.Wss *= p * (p - 1), n.Wtt *= q * (q - 1), n.Wst *= p * q;
-    return n;
-}
-
-// make_net of a patch; a bicubic one as a 4 x 4 net (the same values, the
-// loops fixed).
-Net net_of(const BezierPatch& b, Vec3 c) {
-    if (b.p != 3 || b.q != 3) return make_net(b, c);
-    BicubicNet n;
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) n.at(i, j) = b.at(i, j);
-    return make_net(n, c);
-}
-
-// M magnitudes of each difference at once (mag returns M values): the normal
-// and the tangential bounds in one pass over the differences.
-template <size_t M> using Tops = std::array<std::array<double, M>, Net::kGroups>;
-
-// The bounds from the largest magnitudes of each group of differences.
-template <size_t M>
-std::array<DerivativeBounds, M> derivative_bounds_from(const Net& n, const Tops<M>& top) {
-    const int p = n.p, q = n.q;
-    const double Ws = n.Ws, Wt = n.Wt, Wss = n.Wss, Wst = n.Wst, Wtt = n.Wtt;
-    // Rounding of the differences and products: relative, a few ulps each.
-    const double inflate = 1 + 64 * kEps;
-    std::array<DerivativeBounds, M> out;
-    for (size_t k = 0; k < M; ++k) {
-        const double xs = top[Net::kXs][k] * p, xt = top[Net::kXt][k] * q;
-        const double xss = top[Net::kXss][k] * (p * (p - 1));
-        const double xtt = top[Net::kXtt][k] * (q * (q - 1)), xst = top[Net::kXst][k] * (p * q);
-        const double p0 = top[Net::kP0][k];
-        const double Ps = (xs + p0 * Ws) / n.wlo, Pt = (xt + p0 * Wt) / n.wlo;
-        DerivativeBounds& r = out[k];
-        r.A = (xss + 2 * Ps * Ws + p0 * Wss) / n.wlo * inflate;
-        r.B = (xst + Ps * Wt + Pt * Ws + p0 * Wst) / n.wlo * inflate;
-        r.C = (xtt + 2 * Pt * Wt + p0 * Wtt) / n.wlo * inflate;
-    }
-    return out;
-}
-
-template <size_t M, class Mag>
-std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
-    using Mags = std::array<double, M>;
-    Tops<M> top{};
-    for (int g = 0; g < Net::kGroups; ++g) {
-        Mags& to = top[g];
-        for (int i = 0; i < n.count[g]; ++i) {
-            const Mags m = mag(n.at(g, i));
-            for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], m[k]);
-        }
-    }
-    return derivative_bounds_from<M>(n, top);
-}
-
-// Bounds of S itself (Euclidean norm).
-DerivativeBounds derivative_bounds(const Net& n) {
-    return derivative_bounds_of<1>(n, [](Vec3 v) { return std::array<double, 1>{norm(v)}; })[0];
-}
-
-double remainder(const DerivativeBounds& d, double ds, double dt) {
-    return (d.A * ds * ds + 2 * d.B * ds * dt + d.C * dt * dt) / 8;
-}
-
-// The derivative bounds of n . S and of the tangential part S - (n . S) n, for
-// a unit n (the zero vector: both the full bounds). Both parts are linear maps
-// of S, so their remainders bound the two components of g separately; the
-// tangential part holds only the parametrisation's drift and the tilt between
-// n and the surface normal, far less than |S_ss| where the surface curves.
-struct SplitBounds {
-    DerivativeBounds normal, tangential;
-};
-
-SplitBounds split_bounds(const Net& net, Vec3 n) {
-    if (!(norm(n) > 0)) {
-        const DerivativeBounds full = derivative_bounds(net);
-        return {full, full};
-    }
-    // Per difference v: |v . n| and |v - (v . n) n|, two differences at a time
-    // (SSE2 vector extension; each lane does dot() and norm()'s operations in
-    // their order). The largest norm is the root of the largest square (the
-    // root is monotone and correctly rounded: the same value).
-    using Lanes = double __attribute__((vector_size(16)));
-    auto load = [](const double* p) {
-        Lanes v;
-        std::memcpy(&v, p, sizeof v);
-        return v;
-    };
-    const Lanes nx = {n.x, n.x}, ny = {n.y, n.y}, nz = {n.z, n.z};
-    Tops<2> top{};
-    for (int g = 0; g < Net::kGroups; ++g) {
-        const int base = g * Net::kN, count = net.count[g];
-        Lanes tn = {0, 0}, tt = {0, 0};
-        int i = 0;
-        for (; i + 1 < count; i += 2) {
-            const Lanes x = load(&net.dx[base + i]), y = load(&net.dy[base + i]),
-                        z = load(&net.dz[base + i]);
-            const Lanes d = x * nx + y * ny + z * nz;
-            const Lanes ad = d < 0 ? -d : d;
-            const Lanes tx = x - d * nx, ty = y - d * ny, tz = z - d * nz;
-            const Lanes t2 = tx * tx + ty * ty + tz * tz;
-            tn = tn < ad ? ad : tn;
-            tt = tt < t2 ? t2 : tt;
-        }
-        double mn = std::max(tn[0], tn[1]), mt = std::max(tt[0], tt[1]);
-        for (; i < count; ++i) {
-            const Vec3 v = net.at(g, i);
-            const double d = dot(v, n);
-            mn = std::max(mn, std::abs(d));
-            mt = std::max(mt, dot(v - d * n, v - d * n));
-        }
-        top[g] = {mn, std::sqrt(mt)};
-    }
-    const std::array<DerivativeBounds, 2> b = derivative_bounds_from<2>(net, top);
-    return {b[0], b[1]};
-}
 
 struct Param {
     double s = 0, t = 0;
@@ -500,8 +282,8 @@ double fan_bound_of(const Surface& S, Vec3 centre, const std::array<Vec3, 4>& V,
     double R1 = 0, Rn1 = 0;
     for (int k = 0; k < 4; ++k) {
         const double ds = k % 2 == 0 ? 1.0 : 0.5, dt = k % 2 == 0 ? 0.5 : 1.0;
-        R1 = std::max(R1, remainder(full, ds, dt));
-        Rn1 = std::max(Rn1, remainder(nb[k].normal, ds, dt));
+        R1 = std::max(R1, taylor_remainder(full, ds, dt));
+        Rn1 = std::max(Rn1, taylor_remainder(nb[k].normal, ds, dt));
     }
     const double want = std::max(0.4 * Rn1, 0.2 * target);
     int m = 1;
@@ -587,8 +369,8 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
                 std::max({p0.u.s, p1.u.s, p2.u.s}) - std::min({p0.u.s, p1.u.s, p2.u.s});
             const double dt =
                 std::max({p0.u.t, p1.u.t, p2.u.t}) - std::min({p0.u.t, p1.u.t, p2.u.t});
-            const double en = gn + remainder(nb[k].normal, ds, dt);
-            const double et = gt + remainder(nb[k].tangential, ds, dt);
+            const double en = gn + taylor_remainder(nb[k].normal, ds, dt);
+            const double et = gt + taylor_remainder(nb[k].tangential, ds, dt);
             bound = std::max(bound, std::sqrt(en * en + et * et));
         };
         for (int a = 0; a < m; ++a)
@@ -615,45 +397,6 @@ double rounding_allowance(int depth, double scale) {
 BezierPatch extract_subpatch(const BezierPatch& patch, const ParamRect& r) {
     return extract_box(patch, param_of(r.s0), param_of(r.s1), param_of(r.t0), param_of(r.t1));
 }
-
-namespace {
-
-// split_u / split_v (bezier_patch.h) of a bicubic net at s, keeping one part:
-// the same operations in the same order, so the same points.
-void split_bicubic(BicubicNet& b, double s, bool in_u, bool upper) {
-    for (int j = 0; j < 4; ++j) {
-        HPoint col[4], out[4];
-        for (int i = 0; i < 4; ++i) col[i] = in_u ? b.at(i, j) : b.at(j, i);
-        for (int level = 0; level <= 3; ++level) {
-            if (upper)
-                out[3 - level] = col[3 - level];
-            else
-                out[level] = col[0];
-            for (int i = 0; i < 3 - level; ++i) col[i] = lerp(col[i], col[i + 1], s);
-        }
-        for (int i = 0; i < 4; ++i) (in_u ? b.at(i, j) : b.at(j, i)) = out[i];
-    }
-}
-
-// extract_box of a bicubic patch, as a net alone (the same points).
-BicubicNet extract_bicubic(const BezierPatch& patch, double s0, double s1, double t0, double t1) {
-    BicubicNet b;
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) b.at(i, j) = patch.at(i, j);
-    if (s0 > 0) split_bicubic(b, s0, true, true);
-    if (s1 < 1) split_bicubic(b, (s1 - s0) / (1 - s0), true, false);
-    if (t0 > 0) split_bicubic(b, t0, false, true);
-    if (t1 < 1) split_bicubic(b, (t1 - t0) / (1 - t0), false, false);
-    return b;
-}
-
-// make_net of extract_box(patch, s0, s1, t0, t1).
-Net box_net(const BezierPatch& patch, double s0, double s1, double t0, double t1, Vec3 c) {
-    if (patch.p == 3 && patch.q == 3) return make_net(extract_bicubic(patch, s0, s1, t0, t1), c);
-    return make_net(extract_box(patch, s0, s1, t0, t1), c);
-}
-
-} // namespace
 
 BezierPatch extract_box(const BezierPatch& patch, double s0, double s1, double t0, double t1) {
     BezierPatch cur = patch, lo, hi;
@@ -861,8 +604,8 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
             const double s0 = std::min({u0.s, u1.s, u2.s}), s1 = std::max({u0.s, u1.s, u2.s});
             const double t0 = std::min({u0.t, u1.t, u2.t}), t1 = std::max({u0.t, u1.t, u2.t});
             const double ds = (s1 - s0) / (bs1 - bs0), dt = (t1 - t0) / (bt1 - bt0);
-            double Rn = remainder(nb.normal, ds, dt);
-            double R = remainder(nb.tangential, ds, dt);
+            double Rn = taylor_remainder(nb.normal, ds, dt);
+            double R = taylor_remainder(nb.tangential, ds, dt);
             // Only where it can raise the running maximum above `enough`
             // (lossless when enough = 0).
             const double top = std::max(bound, enough);
@@ -872,8 +615,8 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
                 const Net local = box_net(patch, s0, s1, t0, t1, centre);
                 const SplitBounds ln = split_bounds(local, nk);
-                Rn = std::min(Rn, remainder(ln.normal, 1, 1));
-                R = std::min(R, remainder(ln.tangential, 1, 1));
+                Rn = std::min(Rn, taylor_remainder(ln.normal, 1, 1));
+                R = std::min(R, taylor_remainder(ln.tangential, 1, 1));
             }
             const double en = gnt + Rn, et = gtt + R;
             bound = std::max(bound, std::sqrt(en * en + et * et));
@@ -922,8 +665,8 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
             box_net(patch, param_of(r.s0), param_of(r.s1), param_of(r.t0), param_of(r.t1), centre);
         const DerivativeBounds full = derivative_bounds(net);
         const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
-        const double R1 = remainder(full, 1, 1);
-        const double Rn1 = remainder(split_bounds(net, nz).normal, 1, 1);
+        const double R1 = taylor_remainder(full, 1, 1);
+        const double Rn1 = taylor_remainder(split_bounds(net, nz).normal, 1, 1);
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     if (m == kSideRefinement && target > 0) return coarse;

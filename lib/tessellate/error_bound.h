@@ -75,9 +75,11 @@ struct RingPoint {
 // derivative bounds over the parameter box of phi's refined vertices (phi is
 // linear on each refined triangle, so phi(sigma) lies in it: the subpatch and
 // the feet's small moves, as tight as the four-triangle bound's own net).
-// Includes the rounding allowance. `target` > 0 (a requested tolerance): a
-// bound at or below it is enough, so the coarsest refinement (m = 4) is tried
-// first and the finer one only when it ends above `target`.
+// Includes the rounding allowance and, for a polynomial bicubic patch, the
+// power-basis evaluator's proven rounding (power_basis.h). `target` > 0 (a
+// requested tolerance): a bound at or below it is enough, so the coarsest
+// refinement (m = 4) is tried first and the finer one only when it ends above
+// `target`.
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
                            std::span<const RingPoint> ring, double scale, double target = 0);
 
