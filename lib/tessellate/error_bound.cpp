@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/net_bounds.h>
 #include <seamless/tessellate/planarity.h>
+#include <seamless/tessellate/power_basis.h>
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -15,156 +18,6 @@ namespace seamless {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-
-// Bounds over [0,1]^2 of S' = S - c and its first and second partial
-// derivatives, measured by `mag` (the Euclidean norm, or |n . v| for a unit n).
-// X' = X - W c is the homogeneous form of S'; its derivatives' Bernstein
-// coefficients are differences of the control net, bounded by their largest
-// magnitude (convex hull property); the quotient rule with W >= wlo > 0 gives
-//   S_s  = (X'_s - S' W_s) / W,
-//   S_ss = (X'_ss - 2 S_s W_s - S' W_ss) / W,
-//   S_st = (X'_st - S_s W_t - S_t W_s - S' W_st) / W.
-struct DerivativeBounds {
-    double A = 0, B = 0, C = 0; // |S_ss|, |S_st|, |S_tt|
-};
-
-// The differenced control net of S' = S - c, computed once and measured along
-// as many directions as a bound needs (split_bounds: one per fan triangle).
-// Index groups of `diff`: the points P - c, then the first, second and mixed
-// differences of X' in s and t (their Bernstein coefficients up to the factors
-// p, p (p - 1), ...). The weights' differences are direction-free: kept as
-// their largest magnitudes, times those factors.
-struct Net {
-    static constexpr int kN = BezierPatch::kMaxOrder * BezierPatch::kMaxOrder;
-    enum Group { kP0, kXs, kXt, kXss, kXst, kXtt, kGroups };
-    int p = 0, q = 0;
-    // Raw doubles: only the first count[g] of each group are written and read
-    // (a Vec3 array would be zeroed on every construction, 14 KB).
-    std::array<std::array<double, 3>, kGroups * kN> diff;
-    std::array<int, kGroups> count{};
-    double Ws = 0, Wt = 0, Wss = 0, Wst = 0, Wtt = 0;
-    double wlo = 1;
-    void add(Group g, Vec3 v) { diff[g * kN + count[g]++] = {v.x, v.y, v.z}; }
-    Vec3 at(int g, int i) const {
-        const std::array<double, 3>& d = diff[g * kN + i];
-        return {d[0], d[1], d[2]};
-    }
-};
-
-Net make_net(const BezierPatch& b, Vec3 c) {
-    Net n;
-    const int p = n.p = b.p, q = n.q = b.q;
-    n.wlo = std::numeric_limits<double>::infinity();
-    constexpr int O = BezierPatch::kMaxOrder;
-    std::array<Vec3, Net::kN> x{}; // w (P - c)
-    std::array<double, Net::kN> w{};
-    // With one weight throughout (a polynomial patch) the weights' differences
-    // are exactly 0, so the points and first differences, which the quotient
-    // rule multiplies only by them, are not needed: not stored (count 0, their
-    // largest magnitude 0), the bounds unchanged. Saves most of the net.
-    bool one_weight = true;
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) one_weight = one_weight && b.at(i, j).w == b.at(0, 0).w;
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) {
-            const HPoint& h = b.at(i, j);
-            x[i * O + j] = h.xyz() - h.w * c;
-            w[i * O + j] = h.w;
-            if (!one_weight) n.add(Net::kP0, h.point() - c);
-            n.wlo = std::min(n.wlo, h.w);
-        }
-    assert(n.wlo > 0);
-    auto X = [&](int i, int j) -> const Vec3& { return x[i * O + j]; };
-    auto W = [&](int i, int j) { return w[i * O + j]; };
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) {
-            if (i < p) {
-                if (!one_weight) n.add(Net::kXs, X(i + 1, j) - X(i, j));
-                n.Ws = std::max(n.Ws, std::abs(W(i + 1, j) - W(i, j)));
-            }
-            if (j < q) {
-                if (!one_weight) n.add(Net::kXt, X(i, j + 1) - X(i, j));
-                n.Wt = std::max(n.Wt, std::abs(W(i, j + 1) - W(i, j)));
-            }
-            if (i + 1 < p) {
-                n.add(Net::kXss, X(i + 2, j) - 2 * X(i + 1, j) + X(i, j));
-                n.Wss = std::max(n.Wss, std::abs(W(i + 2, j) - 2 * W(i + 1, j) + W(i, j)));
-            }
-            if (j + 1 < q) {
-                n.add(Net::kXtt, X(i, j + 2) - 2 * X(i, j + 1) + X(i, j));
-                n.Wtt = std::max(n.Wtt, std::abs(W(i, j + 2) - 2 * W(i, j + 1) + W(i, j)));
-            }
-            if (i < p && j < q) {
-                n.add(Net::kXst, X(i + 1, j + 1) - X(i + 1, j) - X(i, j + 1) + X(i, j));
-                n.Wst = std::max(n.Wst,
-                                 std::abs(W(i + 1, j + 1) - W(i + 1, j) - W(i, j + 1) + W(i, j)));
-            }
-        }
-    n.Ws *= p, n.Wt *= q, n.Wss *= p * (p - 1), n.Wtt *= q * (q - 1), n.Wst *= p * q;
-    return n;
-}
-
-// M magnitudes of each difference at once (mag returns M values): the normal
-// and the tangential bounds in one pass over the differences.
-template <size_t M, class Mag>
-std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
-    using Mags = std::array<double, M>;
-    std::array<Mags, Net::kGroups> top{};
-    for (int g = 0; g < Net::kGroups; ++g) {
-        Mags& to = top[g];
-        for (int i = 0; i < n.count[g]; ++i) {
-            const Mags m = mag(n.at(g, i));
-            for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], m[k]);
-        }
-    }
-    const int p = n.p, q = n.q;
-    const double Ws = n.Ws, Wt = n.Wt, Wss = n.Wss, Wst = n.Wst, Wtt = n.Wtt;
-    // Rounding of the differences and products: relative, a few ulps each.
-    const double inflate = 1 + 64 * kEps;
-    std::array<DerivativeBounds, M> out;
-    for (size_t k = 0; k < M; ++k) {
-        const double xs = top[Net::kXs][k] * p, xt = top[Net::kXt][k] * q;
-        const double xss = top[Net::kXss][k] * (p * (p - 1));
-        const double xtt = top[Net::kXtt][k] * (q * (q - 1)), xst = top[Net::kXst][k] * (p * q);
-        const double p0 = top[Net::kP0][k];
-        const double Ps = (xs + p0 * Ws) / n.wlo, Pt = (xt + p0 * Wt) / n.wlo;
-        DerivativeBounds& r = out[k];
-        r.A = (xss + 2 * Ps * Ws + p0 * Wss) / n.wlo * inflate;
-        r.B = (xst + Ps * Wt + Pt * Ws + p0 * Wst) / n.wlo * inflate;
-        r.C = (xtt + 2 * Pt * Wt + p0 * Wtt) / n.wlo * inflate;
-    }
-    return out;
-}
-
-// Bounds of S itself (Euclidean norm).
-DerivativeBounds derivative_bounds(const Net& n) {
-    return derivative_bounds_of<1>(n, [](Vec3 v) { return std::array<double, 1>{norm(v)}; })[0];
-}
-
-double remainder(const DerivativeBounds& d, double ds, double dt) {
-    return (d.A * ds * ds + 2 * d.B * ds * dt + d.C * dt * dt) / 8;
-}
-
-// The derivative bounds of n . S and of the tangential part S - (n . S) n, for
-// a unit n (the zero vector: both the full bounds). Both parts are linear maps
-// of S, so their remainders bound the two components of g separately; the
-// tangential part holds only the parametrisation's drift and the tilt between
-// n and the surface normal, far less than |S_ss| where the surface curves.
-struct SplitBounds {
-    DerivativeBounds normal, tangential;
-};
-
-SplitBounds split_bounds(const Net& net, Vec3 n) {
-    if (!(norm(n) > 0)) {
-        const DerivativeBounds full = derivative_bounds(net);
-        return {full, full};
-    }
-    const std::array<DerivativeBounds, 2> b = derivative_bounds_of<2>(net, [&](Vec3 v) {
-        const double d = dot(v, n);
-        return std::array<double, 2>{std::abs(d), norm(v - d * n)};
-    });
-    return {b[0], b[1]};
-}
 
 struct Param {
     double s = 0, t = 0;
@@ -242,6 +95,57 @@ SurfacePoint surface_point(const BezierPatch& b, double s, double t) {
     return evaluate(b, s, t);
 }
 
+// The surface a bound evaluates: a polynomial bicubic patch in the power basis
+// (power_basis.h: a third of the instructions, within `error` of the surface),
+// any other one by surface_point.
+struct Surface {
+    const BezierPatch& patch;
+    const PowerBasisPatch* pb = nullptr; // null: by surface_point
+    PowerBasisPatch own;
+    // `given`: patch's power basis, already at hand.
+    explicit Surface(const BezierPatch& b, const PowerBasisPatch* given = nullptr) : patch(b) {
+        if (given) {
+            pb = given;
+        } else if (has_power_basis(b)) {
+            own = power_basis(b);
+            pb = &own;
+        }
+    }
+    Surface(const Surface&) = delete;
+    Surface& operator=(const Surface&) = delete;
+    SurfacePoint at(double s, double t) const {
+        return pb ? evaluate(*pb, s, t) : surface_point(patch, s, t);
+    }
+    // The same point without the derivatives.
+    Vec3 point(double s, double t) const {
+        return pb ? evaluate_point(*pb, s, t) : surface_point(patch, s, t).point;
+    }
+    // Bound on the evaluation's rounding beyond rounding_allowance's.
+    double error() const { return pb ? pb->error : 0; }
+};
+
+// power_basis(b) of the patch this thread asked about last (the certified
+// bounds run over a patch's subpatches in order): null when b has none.
+const PowerBasisPatch* last_power_basis(const BezierPatch& b) {
+    if (!has_power_basis(b)) return nullptr;
+    thread_local std::array<HPoint, 16> key;
+    thread_local bool valid = false;
+    thread_local PowerBasisPatch pb;
+    bool same = valid;
+    for (int i = 0; i < 4 && same; ++i)
+        for (int j = 0; j < 4 && same; ++j) {
+            const HPoint &h = b.at(i, j), &k = key[i * 4 + j];
+            same = h.x == k.x && h.y == k.y && h.z == k.z && h.w == k.w;
+        }
+    if (!same) {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) key[i * 4 + j] = b.at(i, j);
+        pb = power_basis(b);
+        valid = true;
+    }
+    return &pb;
+}
+
 // One Gauss-Newton step from u (sp = S and its derivatives there) toward the
 // foot of x on S, each coordinate's step at most `limit` (near a pole the foot
 // is ill-determined), kept only when it brings S closer to x; clamped to
@@ -250,7 +154,7 @@ SurfacePoint surface_point(const BezierPatch& b, double s, double t) {
 // residual: the bound counts that part (|g_i - (n.g_i) n|), so it stays within
 // kConverged^2 / 2 of its value at the exact foot, a fraction of a percent.
 constexpr double kConverged = 0.02;
-bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
+bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
     const Vec3 r = x - sp.point;
     const double a11 = dot(sp.du, sp.du), a22 = dot(sp.dv, sp.dv), a12 = dot(sp.du, sp.dv);
     const double reg = 1e-12 * (a11 + a22);
@@ -264,7 +168,7 @@ bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double 
     const Param v{std::clamp(u.s + std::clamp(ds, -limit, limit), 0.0, 1.0),
                   std::clamp(u.t + std::clamp(dt, -limit, limit), 0.0, 1.0)};
     if (v.s == u.s && v.t == u.t) return false;
-    const SurfacePoint sv = surface_point(b, v.s, v.t);
+    const SurfacePoint sv = b.at(v.s, v.t);
     const Vec3 gv = sv.point - x;
     if (!(dot(gv, gv) < dot(r, r))) return false;
     u = v;
@@ -272,20 +176,20 @@ bool foot_step(const BezierPatch& b, Vec3 x, Param& u, SurfacePoint& sp, double 
     return true;
 }
 
-Param foot(const BezierPatch& b, Vec3 x, Param u, double limit, Vec3& g) {
-    SurfacePoint sp = surface_point(b, u.s, u.t);
+Param foot(const Surface& b, Vec3 x, Param u, double limit, Vec3& g) {
+    SurfacePoint sp = b.at(u.s, u.t);
     foot_step(b, x, u, sp, limit);
     g = sp.point - x;
     return u;
 }
 
 // Same along the line u(tau) = c0 + tau (c1 - c0), tau in [lo, hi].
-double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau, double lo,
-                    double hi, double limit, Vec3& g) {
+double foot_on_line(const Surface& b, Vec3 x, Param c0, Param c1, double tau, double lo, double hi,
+                    double limit, Vec3& g) {
     auto at = [&](double z) { return Param{c0.s + z * (c1.s - c0.s), c0.t + z * (c1.t - c0.t)}; };
     tau = std::clamp(tau, lo, hi);
     const Param u = at(tau);
-    const SurfacePoint sp = surface_point(b, u.s, u.t);
+    const SurfacePoint sp = b.at(u.s, u.t);
     g = sp.point - x;
     const Vec3 d = (c1.s - c0.s) * sp.du + (c1.t - c0.t) * sp.dv;
     const double dd = dot(d, d);
@@ -294,7 +198,7 @@ double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau
     if (!std::isfinite(step)) return tau;
     const double z = std::clamp(tau + std::clamp(step, -limit, limit), lo, hi);
     const Param v = at(z);
-    const Vec3 gv = surface_point(b, v.s, v.t).point - x;
+    const Vec3 gv = b.point(v.s, v.t) - x;
     if (!(dot(gv, gv) < dot(g, g))) return tau;
     g = gv;
     return z;
@@ -302,9 +206,13 @@ double foot_on_line(const BezierPatch& b, Vec3 x, Param c0, Param c1, double tau
 
 // Up to `iterations` steps toward the foot, the total move at most `limit`
 // per coordinate.
-Param foot_iterated(const BezierPatch& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
+Param foot_iterated(const Surface& b, Vec3 x, Param w, double limit, int iterations, Vec3& g) {
+    if (iterations == 0) {
+        g = b.point(w.s, w.t) - x;
+        return w;
+    }
     Param u = w;
-    SurfacePoint sp = surface_point(b, u.s, u.t);
+    SurfacePoint sp = b.at(u.s, u.t);
     for (int it = 0; it < iterations; ++it) {
         const double left = limit - std::max(std::abs(u.s - w.s), std::abs(u.t - w.t));
         if (!foot_step(b, x, u, sp, left)) break;
@@ -330,13 +238,31 @@ struct FanResult {
     double bound = 0, largest_g = 0;
 };
 
-FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
+FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
                        const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb);
 
 } // namespace
 
+namespace {
+double fan_bound_of(const Surface& S, Vec3 centre, const std::array<Vec3, 4>& V, double target);
+} // namespace
+
 double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, double target) {
-    const Net net = make_net(b, centre);
+    const Surface S(b);
+    return fan_bound_of(S, centre, V, target);
+}
+
+double fan_bound(const BezierPatch& b, const PowerBasisPatch& pb, Vec3 centre,
+                 const std::array<Vec3, 4>& V, double target) {
+    const Surface S(b, &pb);
+    return fan_bound_of(S, centre, V, target);
+}
+
+namespace {
+
+double fan_bound_of(const Surface& S, Vec3 centre, const std::array<Vec3, 4>& V, double target) {
+    const BezierPatch& b = S.patch;
+    const Net net = net_of(b, centre);
     const DerivativeBounds full = derivative_bounds(net);
 
     // Unit normals of the fan triangles (any unit vector keeps the bound valid:
@@ -356,8 +282,8 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     double R1 = 0, Rn1 = 0;
     for (int k = 0; k < 4; ++k) {
         const double ds = k % 2 == 0 ? 1.0 : 0.5, dt = k % 2 == 0 ? 0.5 : 1.0;
-        R1 = std::max(R1, remainder(full, ds, dt));
-        Rn1 = std::max(Rn1, remainder(nb[k].normal, ds, dt));
+        R1 = std::max(R1, taylor_remainder(full, ds, dt));
+        Rn1 = std::max(Rn1, taylor_remainder(nb[k].normal, ds, dt));
     }
     const double want = std::max(0.4 * Rn1, 0.2 * target);
     int m = 1;
@@ -367,15 +293,17 @@ double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V
     if (target > 0 && m > 2) {
         // Cheap first: m = 2 may already certify the target, or its refined
         // vertices, about as far from the surface as it lies, already exceed it.
-        const FanResult r = fan_bound_at(b, centre, V, 2, n, nb);
+        const FanResult r = fan_bound_at(S, centre, V, 2, n, nb);
         if (r.bound <= target || r.largest_g > target) return r.bound;
     }
-    return fan_bound_at(b, centre, V, m, n, nb).bound;
+    return fan_bound_at(S, centre, V, m, n, nb).bound;
 }
+
+} // namespace
 
 namespace {
 
-FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
+FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>& V, int m,
                        const std::array<Vec3, 4>& n, const std::array<SplitBounds, 4>& nb) {
 
     // phi on the radial edges (centre to corner k), shared by two fan triangles.
@@ -391,7 +319,7 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
             Vec3 g;
             if (a == 0 || a == m) {
                 u = a == 0 ? kCentre : kCorner[k];
-                g = surface_point(b, u.s, u.t).point - x;
+                g = b.point(u.s, u.t) - x;
             } else {
                 u = foot(b, x, w, 0.5 / m, g);
             }
@@ -441,8 +369,8 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
                 std::max({p0.u.s, p1.u.s, p2.u.s}) - std::min({p0.u.s, p1.u.s, p2.u.s});
             const double dt =
                 std::max({p0.u.t, p1.u.t, p2.u.t}) - std::min({p0.u.t, p1.u.t, p2.u.t});
-            const double en = gn + remainder(nb[k].normal, ds, dt);
-            const double et = gt + remainder(nb[k].tangential, ds, dt);
+            const double en = gn + taylor_remainder(nb[k].normal, ds, dt);
+            const double et = gt + taylor_remainder(nb[k].tangential, ds, dt);
             bound = std::max(bound, std::sqrt(en * en + et * et));
         };
         for (int a = 0; a < m; ++a)
@@ -458,7 +386,7 @@ FanResult fan_bound_at(const BezierPatch& b, Vec3 centre, const std::array<Vec3,
 } // namespace
 
 std::array<double, 2> second_derivative_bounds(const BezierPatch& b) {
-    const DerivativeBounds d = derivative_bounds(make_net(b, b.corner(0)));
+    const DerivativeBounds d = derivative_bounds(net_of(b, b.corner(0)));
     return {d.A, d.C};
 }
 
@@ -513,18 +441,17 @@ Param param(const RingPoint& p) {
     return {p.fs >= 0 ? p.fs : param_of(p.s), p.ft >= 0 ? p.ft : param_of(p.t)};
 }
 
-Node vertex_phi(const BezierPatch& b, const RingPoint& p) {
+Node vertex_phi(const Surface& b, const RingPoint& p) {
     const int gs = p.s, gt = p.t;
     const Vec3 x = p.position;
     const Param w = param(p);
-    // A seam vertex of another patch lies on this patch's side: phi keeps it.
-    if (gs < 0 || gt < 0) return {w, surface_point(b, w.s, w.t).point - x};
-    Vec3 g = surface_point(b, w.s, w.t).point - x;
+    // A seam vertex of another patch lies on this patch's side: phi keeps it,
+    // as it keeps the vertices on the patch's sides.
     const bool s_side = gs == 0 || gs == kParamOne, t_side = gt == 0 || gt == kParamOne;
-    if (s_side && t_side) return {w, g};
+    if (gs < 0 || gt < 0 || s_side || t_side) return {w, b.point(w.s, w.t) - x};
     auto spacing = [](int i) { return param_of(i & -i); }; // lowest set bit
     const double limit = std::max(spacing(gs), spacing(gt));
-    if (s_side || t_side) return {w, g};
+    Vec3 g;
     const Param u = foot_iterated(b, x, w, limit, 3, g);
     return {u, g};
 }
@@ -543,13 +470,14 @@ bool on_patch_side(const RingPoint& a, const RingPoint& b) {
 // take the same steps, so the fans sharing them agree whatever `steps` each
 // one takes. A refined triangle's bound at or below `enough` (0: none) is
 // not tightened further (a tolerance needs no bound below itself).
-double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3 centre,
-                              std::span<const RingPoint> ring, int m, int steps, double enough) {
+double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const ParamRect& r,
+                              Vec3 centre, std::span<const RingPoint> ring, int m, int steps,
+                              double enough) {
     const size_t n = ring.size();
     const int side_step = m / kSideRefinement;
     const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
     const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-    const Node centre_node{{sc, tc}, surface_point(patch, sc, tc).point - centre};
+    const Node centre_node{{sc, tc}, S.point(sc, tc) - centre};
     const double inner_limit =
         0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
 
@@ -566,14 +494,14 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
     auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
     for (size_t i = 0; i < n; ++i) {
         radial[i][0] = centre_node;
-        radial[i][m] = vertex_phi(patch, ring[i]);
+        radial[i][m] = vertex_phi(S, ring[i]);
         const Param p = param(ring[i]);
         for (int a = 1; a < m; ++a) {
             const double f = static_cast<double>(a) / m;
             const Param w{sc + f * (p.s - sc), tc + f * (p.t - tc)};
             const Vec3 x = centre + f * (ring[i].position - centre);
             Vec3 g;
-            const Param u = foot_iterated(patch, x, w, inner_limit, steps, g);
+            const Param u = foot_iterated(S, x, w, inner_limit, steps, g);
             radial[i][a] = {u, g};
         }
     }
@@ -603,10 +531,10 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
             if (side) {
                 // Along the patch's side, between phi(lo) and phi(hi).
                 const double z =
-                    foot_on_line(patch, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
+                    foot_on_line(S, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
                 cn.u = {nlo.u.s + z * (nhi.u.s - nlo.u.s), nlo.u.t + z * (nhi.u.t - nlo.u.t)};
             } else {
-                cn.u = foot_iterated(patch, x, w, seg_limit, kFootSteps, cn.g);
+                cn.u = foot_iterated(S, x, w, seg_limit, kFootSteps, cn.g);
             }
         }
         // The refined points between: phi linear between the shared points.
@@ -622,8 +550,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
             const double fx = static_cast<double>(j) / m;
             Node& x = node(k, m - c, c);
             x.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
-            x.g = surface_point(patch, x.u.s, x.u.t).point -
-                  (lo.position + fx * (hi.position - lo.position));
+            x.g = S.point(x.u.s, x.u.t) - (lo.position + fx * (hi.position - lo.position));
         }
         // Inside the fan triangle.
         const Param pp = param(P), pq = param(Q);
@@ -634,7 +561,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
                               tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
                 const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
                 Node& y = node(k, a, c);
-                y.u = foot_iterated(patch, x, w, inner_limit, steps, y.g);
+                y.u = foot_iterated(S, x, w, inner_limit, steps, y.g);
             }
     }
 
@@ -649,7 +576,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
                 bs0 = std::min(bs0, u.s), bs1 = std::max(bs1, u.s);
                 bt0 = std::min(bt0, u.t), bt1 = std::max(bt1, u.t);
             }
-    const Net net = make_net(extract_box(patch, bs0, bs1, bt0, bt1), centre);
+    const Net net = box_net(patch, bs0, bs1, bt0, bt1, centre);
 
     // (3) The bound on every refined triangle.
     const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
@@ -677,8 +604,8 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
             const double s0 = std::min({u0.s, u1.s, u2.s}), s1 = std::max({u0.s, u1.s, u2.s});
             const double t0 = std::min({u0.t, u1.t, u2.t}), t1 = std::max({u0.t, u1.t, u2.t});
             const double ds = (s1 - s0) / (bs1 - bs0), dt = (t1 - t0) / (bt1 - bt0);
-            double Rn = remainder(nb.normal, ds, dt);
-            double R = remainder(nb.tangential, ds, dt);
+            double Rn = taylor_remainder(nb.normal, ds, dt);
+            double R = taylor_remainder(nb.tangential, ds, dt);
             // Only where it can raise the running maximum above `enough`
             // (lossless when enough = 0).
             const double top = std::max(bound, enough);
@@ -686,10 +613,10 @@ double certified_fan_bound_at(const BezierPatch& patch, const ParamRect& r, Vec3
                 (gnt + Rn) * (gnt + Rn) + (gtt + R) * (gtt + R) > top * top) {
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
-                const Net local = make_net(extract_box(patch, s0, s1, t0, t1), centre);
+                const Net local = box_net(patch, s0, s1, t0, t1, centre);
                 const SplitBounds ln = split_bounds(local, nk);
-                Rn = std::min(Rn, remainder(ln.normal, 1, 1));
-                R = std::min(R, remainder(ln.tangential, 1, 1));
+                Rn = std::min(Rn, taylor_remainder(ln.normal, 1, 1));
+                R = std::min(R, taylor_remainder(ln.tangential, 1, 1));
             }
             const double en = gnt + Rn, et = gtt + R;
             bound = std::max(bound, std::sqrt(en * en + et * et));
@@ -709,7 +636,10 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                            std::span<const RingPoint> ring, double scale, double target) {
     const size_t n = ring.size();
     assert(n >= 3);
-    const double allowance = rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale);
+    const Surface S(patch, last_power_basis(patch));
+    // The evaluator's own rounding (power basis) on top of the usual allowance.
+    const double allowance =
+        rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale) + S.error();
     // A tolerance needs a bound at or below it, not the tightest one: the
     // coarsest refinement first (phi on the shared sides is the same for every
     // m, so the fans stay continuous whatever m each one takes). Both results
@@ -721,7 +651,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         // Without feet inside the fan first: on the teapot at D = 0.001 about
         // 93 % of the fans certify so, with one evaluation per refined vertex.
         for (int steps : {0, kFootSteps}) {
-            coarse = std::min(coarse, certified_fan_bound_at(patch, r, centre, ring,
+            coarse = std::min(coarse, certified_fan_bound_at(patch, S, r, centre, ring,
                                                              kSideRefinement, steps, enough) +
                                           allowance);
             if (coarse <= target) return coarse;
@@ -731,16 +661,18 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     // against its normal remainder (about the geometric deviation).
     int m = kSideRefinement;
     {
-        const Net net = make_net(extract_subpatch(patch, r), centre);
+        const Net net =
+            box_net(patch, param_of(r.s0), param_of(r.s1), param_of(r.t0), param_of(r.t1), centre);
         const DerivativeBounds full = derivative_bounds(net);
         const Vec3 nz = normalize(cross(ring[0].position - centre, ring[n / 2].position - centre));
-        const double R1 = remainder(full, 1, 1);
-        const double Rn1 = remainder(split_bounds(net, nz).normal, 1, 1);
+        const double R1 = taylor_remainder(full, 1, 1);
+        const double Rn1 = taylor_remainder(split_bounds(net, nz).normal, 1, 1);
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     if (m == kSideRefinement && target > 0) return coarse;
-    return std::min(coarse, certified_fan_bound_at(patch, r, centre, ring, m, kFootSteps, enough) +
-                                allowance);
+    return std::min(coarse,
+                    certified_fan_bound_at(patch, S, r, centre, ring, m, kFootSteps, enough) +
+                        allowance);
 }
 
 } // namespace seamless

@@ -31,6 +31,7 @@
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
+#include <seamless/tessellate/power_basis.h>
 #include <seamless/tessellate/subdivision.h>
 
 #include <array>
@@ -47,6 +48,9 @@ inline constexpr int kMaxFanRefinement = 8;
 // m. Without the rounding allowance (rounding_allowance below).
 double fan_bound(const BezierPatch& b, Vec3 centre, const std::array<Vec3, 4>& V,
                  double target = 0);
+// The same with b's power basis at hand (power_basis.h; has_power_basis(b)).
+double fan_bound(const BezierPatch& b, const PowerBasisPatch& pb, Vec3 centre,
+                 const std::array<Vec3, 4>& V, double target = 0);
 
 // A vertex of a subpatch's ring: grid point on its patch and position.
 struct RingPoint {
@@ -71,9 +75,11 @@ struct RingPoint {
 // derivative bounds over the parameter box of phi's refined vertices (phi is
 // linear on each refined triangle, so phi(sigma) lies in it: the subpatch and
 // the feet's small moves, as tight as the four-triangle bound's own net).
-// Includes the rounding allowance. `target` > 0 (a requested tolerance): a
-// bound at or below it is enough, so the coarsest refinement (m = 4) is tried
-// first and the finer one only when it ends above `target`.
+// Includes the rounding allowance and, for a polynomial bicubic patch, the
+// power-basis evaluator's proven rounding (power_basis.h). `target` > 0 (a
+// requested tolerance): a bound at or below it is enough, so the coarsest
+// refinement (m = 4) is tried first and the finer one only when it ends above
+// `target`.
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
                            std::span<const RingPoint> ring, double scale, double target = 0);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/error_bound.h>
 #include <seamless/tessellate/planarity.h>
+#include <seamless/tessellate/power_basis.h>
 #include <seamless/tessellate/subdivision.h>
 
 #include <algorithm>
@@ -33,6 +34,14 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
                   const std::array<Vec3, 4>& V, double& fan_error) {
     if (o.tolerance <= 0 && o.angle <= 0) return true;
     static constexpr double kParam[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    // A polynomial bicubic subpatch in the power basis (power_basis.h) once,
+    // for the quick rejection's points and the fan bound's evaluations.
+    const bool power = o.tolerance > 0 && has_power_basis(b);
+    PowerBasisPatch pb;
+    if (power) pb = power_basis(b, false); // fan_bound adds no rounding allowance
+    auto point = [&](double s, double t) {
+        return power ? evaluate_point(pb, s, t) : evaluate_point(b, s, t);
+    };
     for (int k = 0; k < 4; ++k) {
         const int k1 = (k + 1) % 4;
         const Vec3 n = normalize(cross(V[k] - centre, V[k1] - centre));
@@ -42,12 +51,10 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
             // triangle's parameter centroid far from its plane.
             const double s = (0.5 + kParam[k][0] + kParam[k1][0]) / 3;
             const double t = (0.5 + kParam[k][1] + kParam[k1][1]) / 3;
-            if (std::abs(dot(evaluate_point(b, s, t) - centre, n)) > 1.2 * o.tolerance)
-                return false;
+            if (std::abs(dot(point(s, t) - centre, n)) > 1.2 * o.tolerance) return false;
             const double ms = 0.5 * (kParam[k][0] + kParam[k1][0]);
             const double mt = 0.5 * (kParam[k][1] + kParam[k1][1]);
-            if (std::abs(dot(evaluate_point(b, ms, mt) - centre, n)) > 1.2 * o.tolerance)
-                return false;
+            if (std::abs(dot(point(ms, mt) - centre, n)) > 1.2 * o.tolerance) return false;
         }
         if (o.angle > 0) {
             const double cos_half = std::cos(0.5 * o.angle);
@@ -60,7 +67,8 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
         }
     }
     if (o.tolerance > 0) {
-        fan_error = fan_bound(b, centre, V, o.tolerance);
+        fan_error =
+            power ? fan_bound(b, pb, centre, V, o.tolerance) : fan_bound(b, centre, V, o.tolerance);
         return fan_error <= o.tolerance;
     }
     return true;

@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/net_bounds.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace seamless {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// A bicubic control net alone (a BezierPatch holds 10 x 10 points): the
+// boxes the certified bound extracts from bicubic patches.
+struct BicubicNet {
+    static constexpr int kMaxOrder = 4;
+    static constexpr int p = 3, q = 3;
+    std::array<HPoint, 16> cp;
+    HPoint& at(int i, int j) { return cp[i * 4 + j]; }
+    const HPoint& at(int i, int j) const { return cp[i * 4 + j]; }
+};
+
+template <class Patch> Net make_net(const Patch& b, Vec3 c) {
+    Net n;
+    const int p = n.p = b.p, q = n.q = b.q;
+    n.wlo = std::numeric_limits<double>::infinity();
+    constexpr int O = Patch::kMaxOrder;
+    // Only the entries (i <= p, j <= q) are written and read: not zeroed.
+    std::array<std::array<double, 3>, O * O> x; // w (P - c)
+    std::array<double, O * O> w;
+    // With one weight throughout (a polynomial patch) the weights' differences
+    // are exactly 0, so the points and first differences, which the quotient
+    // rule multiplies only by them, are not needed: not stored (count 0, their
+    // largest magnitude 0), the bounds unchanged. Saves most of the net.
+    bool one_weight = true;
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) one_weight = one_weight && b.at(i, j).w == b.at(0, 0).w;
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
+            const HPoint& h = b.at(i, j);
+            const Vec3 v = h.xyz() - h.w * c;
+            x[i * O + j] = {v.x, v.y, v.z};
+            w[i * O + j] = h.w;
+            if (!one_weight) n.add(Net::kP0, h.point() - c);
+            n.wlo = std::min(n.wlo, h.w);
+        }
+    assert(n.wlo > 0);
+    auto X = [&](int i, int j) {
+        const std::array<double, 3>& v = x[i * O + j];
+        return Vec3{v[0], v[1], v[2]};
+    };
+    auto W = [&](int i, int j) { return w[i * O + j]; };
+    // Second and mixed differences (one weight: the weights' are exactly 0).
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
+            if (i + 1 < p) n.add(Net::kXss, X(i + 2, j) - 2 * X(i + 1, j) + X(i, j));
+            if (j + 1 < q) n.add(Net::kXtt, X(i, j + 2) - 2 * X(i, j + 1) + X(i, j));
+            if (i < p && j < q)
+                n.add(Net::kXst, X(i + 1, j + 1) - X(i + 1, j) - X(i, j + 1) + X(i, j));
+        }
+    if (one_weight) return n;
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
+            if (i < p) {
+                n.add(Net::kXs, X(i + 1, j) - X(i, j));
+                n.Ws = std::max(n.Ws, std::abs(W(i + 1, j) - W(i, j)));
+            }
+            if (j < q) {
+                n.add(Net::kXt, X(i, j + 1) - X(i, j));
+                n.Wt = std::max(n.Wt, std::abs(W(i, j + 1) - W(i, j)));
+            }
+            if (i + 1 < p)
+                n.Wss = std::max(n.Wss, std::abs(W(i + 2, j) - 2 * W(i + 1, j) + W(i, j)));
+            if (j + 1 < q)
+                n.Wtt = std::max(n.Wtt, std::abs(W(i, j + 2) - 2 * W(i, j + 1) + W(i, j)));
+            if (i < p && j < q)
+                n.Wst = std::max(n.Wst,
+                                 std::abs(W(i + 1, j + 1) - W(i + 1, j) - W(i, j + 1) + W(i, j)));
+        }
+    n.Ws *= p, n.Wt *= q, n.Wss *= p * (p - 1), n.Wtt *= q * (q - 1), n.Wst *= p * q;
+    return n;
+}
+
+template <size_t M> using Tops = std::array<std::array<double, M>, Net::kGroups>;
+
+// The bounds from the largest magnitudes of each group of differences.
+template <size_t M>
+std::array<DerivativeBounds, M> derivative_bounds_from(const Net& n, const Tops<M>& top) {
+    const int p = n.p, q = n.q;
+    const double Ws = n.Ws, Wt = n.Wt, Wss = n.Wss, Wst = n.Wst, Wtt = n.Wtt;
+    // Rounding of the differences and products: relative, a few ulps each.
+    const double inflate = 1 + 64 * kEps;
+    std::array<DerivativeBounds, M> out;
+    for (size_t k = 0; k < M; ++k) {
+        const double xs = top[Net::kXs][k] * p, xt = top[Net::kXt][k] * q;
+        const double xss = top[Net::kXss][k] * (p * (p - 1));
+        const double xtt = top[Net::kXtt][k] * (q * (q - 1)), xst = top[Net::kXst][k] * (p * q);
+        const double p0 = top[Net::kP0][k];
+        const double Ps = (xs + p0 * Ws) / n.wlo, Pt = (xt + p0 * Wt) / n.wlo;
+        DerivativeBounds& r = out[k];
+        r.A = (xss + 2 * Ps * Ws + p0 * Wss) / n.wlo * inflate;
+        r.B = (xst + Ps * Wt + Pt * Ws + p0 * Wst) / n.wlo * inflate;
+        r.C = (xtt + 2 * Pt * Wt + p0 * Wtt) / n.wlo * inflate;
+    }
+    return out;
+}
+
+template <size_t M, class Mag>
+std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
+    using Mags = std::array<double, M>;
+    Tops<M> top{};
+    for (int g = 0; g < Net::kGroups; ++g) {
+        Mags& to = top[g];
+        for (int i = 0; i < n.count[g]; ++i) {
+            const Mags m = mag(n.at(g, i));
+            for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], m[k]);
+        }
+    }
+    return derivative_bounds_from<M>(n, top);
+}
+
+// split_u / split_v (bezier_patch.h) of a bicubic net at s, keeping one part:
+// the same operations in the same order, so the same points.
+void split_bicubic(BicubicNet& b, double s, bool in_u, bool upper) {
+    for (int j = 0; j < 4; ++j) {
+        HPoint col[4], out[4];
+        for (int i = 0; i < 4; ++i) col[i] = in_u ? b.at(i, j) : b.at(j, i);
+        for (int level = 0; level <= 3; ++level) {
+            if (upper)
+                out[3 - level] = col[3 - level];
+            else
+                out[level] = col[0];
+            for (int i = 0; i < 3 - level; ++i) col[i] = lerp(col[i], col[i + 1], s);
+        }
+        for (int i = 0; i < 4; ++i) (in_u ? b.at(i, j) : b.at(j, i)) = out[i];
+    }
+}
+
+// extract_box of a bicubic patch, as a net alone (the same points).
+BicubicNet extract_bicubic(const BezierPatch& patch, double s0, double s1, double t0, double t1) {
+    BicubicNet b;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) b.at(i, j) = patch.at(i, j);
+    if (s0 > 0) split_bicubic(b, s0, true, true);
+    if (s1 < 1) split_bicubic(b, (s1 - s0) / (1 - s0), true, false);
+    if (t0 > 0) split_bicubic(b, t0, false, true);
+    if (t1 < 1) split_bicubic(b, (t1 - t0) / (1 - t0), false, false);
+    return b;
+}
+
+} // namespace
+
+Net net_of(const BezierPatch& b, Vec3 c) {
+    if (b.p != 3 || b.q != 3) return make_net(b, c);
+    BicubicNet n;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) n.at(i, j) = b.at(i, j);
+    return make_net(n, c);
+}
+
+// M magnitudes of each difference at once (mag returns M values): the normal
+// and the tangential bounds in one pass over the differences.
+Net box_net(const BezierPatch& patch, double s0, double s1, double t0, double t1, Vec3 c) {
+    if (patch.p == 3 && patch.q == 3) return make_net(extract_bicubic(patch, s0, s1, t0, t1), c);
+    return make_net(extract_box(patch, s0, s1, t0, t1), c);
+}
+
+DerivativeBounds derivative_bounds(const Net& n) {
+    return derivative_bounds_of<1>(n, [](Vec3 v) { return std::array<double, 1>{norm(v)}; })[0];
+}
+
+SplitBounds split_bounds(const Net& net, Vec3 n) {
+    if (!(norm(n) > 0)) {
+        const DerivativeBounds full = derivative_bounds(net);
+        return {full, full};
+    }
+    // Per difference v: |v . n| and |v - (v . n) n|, two differences at a time
+    // (SSE2 vector extension; each lane does dot() and norm()'s operations in
+    // their order). The largest norm is the root of the largest square (the
+    // root is monotone and correctly rounded: the same value).
+    using Lanes = double __attribute__((vector_size(16)));
+    auto load = [](const double* p) {
+        Lanes v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    };
+    const Lanes nx = {n.x, n.x}, ny = {n.y, n.y}, nz = {n.z, n.z};
+    Tops<2> top{};
+    for (int g = 0; g < Net::kGroups; ++g) {
+        const int base = g * Net::kN, count = net.count[g];
+        Lanes tn = {0, 0}, tt = {0, 0};
+        int i = 0;
+        for (; i + 1 < count; i += 2) {
+            const Lanes x = load(&net.dx[base + i]), y = load(&net.dy[base + i]),
+                        z = load(&net.dz[base + i]);
+            const Lanes d = x * nx + y * ny + z * nz;
+            const Lanes ad = d < 0 ? -d : d;
+            const Lanes tx = x - d * nx, ty = y - d * ny, tz = z - d * nz;
+            const Lanes t2 = tx * tx + ty * ty + tz * tz;
+            tn = tn < ad ? ad : tn;
+            tt = tt < t2 ? t2 : tt;
+        }
+        double mn = std::max(tn[0], tn[1]), mt = std::max(tt[0], tt[1]);
+        for (; i < count; ++i) {
+            const Vec3 v = net.at(g, i);
+            const double d = dot(v, n);
+            mn = std::max(mn, std::abs(d));
+            mt = std::max(mt, dot(v - d * n, v - d * n));
+        }
+        top[g] = {mn, std::sqrt(mt)};
+    }
+    const std::array<DerivativeBounds, 2> b = derivative_bounds_from<2>(net, top);
+    return {b[0], b[1]};
+}
+
+} // namespace seamless
