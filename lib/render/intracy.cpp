@@ -489,9 +489,9 @@ class PartRenderer {
             ++st.second_order_attempts;
             const double ca[2] = {ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_a(B.x1 + 0.5)};
             const double cb[2] = {ps_.frame.screen_b(B.y0 + 0.5), ps_.frame.screen_b(B.y1 + 0.5)};
-            const SecondOrder so = second_order(
-                pp, *cs.lighting, ps_.lighting.materials[pp.material], box, cs.e,
-                mark_jacobian(sys_, box).A, ca, cb, levels_, opt_.dither, pixel_.sys, st);
+            const SecondOrder so =
+                second_order(pp, *cs.lighting, ps_.lighting.materials[pp.material], box, cs.e, sys_,
+                             ca, cb, levels_, opt_.dither, pixel_.sys, st);
             if (!so.paint) {
                 // Halving B quarters the bound: children may pass where B failed.
                 if (so.error_levels < 4 * (opt_.dither ? 0.5 : 1.0)) levels_over_ = 0;

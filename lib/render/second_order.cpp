@@ -68,15 +68,26 @@ bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Mat
     return I[0].is_finite() && I[1].is_finite() && I[2].is_finite();
 }
 
+std::array<IntervalJet, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
+                                          const Material& mat, const ParamBox& box,
+                                          const PatchEnclosure& e, const IMat<2>& A, Interval a,
+                                          Interval b) {
+    V3<IntervalJet> P, N;
+    if (!surface_jets(pp.forms, box, e, A, a, b, P, N)) {
+        const IntervalJet any{Interval(0.0, 1.0), Interval::entire(), Interval::entire()};
+        return {any, any, any};
+    }
+    return shade<IntervalJet>(lighting, mat, P, N, Vec3{});
+}
+
 SecondOrder second_order(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
-                         const ParamBox& box, const PatchEnclosure& e, const IMat<2>& A,
+                         const ParamBox& box, const PatchEnclosure& e, const ClusterSystem& sys,
                          const double ca[2], const double cb[2], int levels, bool dither,
                          ClusterSystem& scratch, RenderStats& st) {
     SecondOrder r;
-    V3<IntervalJet> P, N;
     const Interval a = Interval::hull(ca[0], ca[1]), b = Interval::hull(cb[0], cb[1]);
-    if (!surface_jets(pp.forms, box, e, A, a, b, P, N)) return r;
-    const std::array<IntervalJet, 3> I = shade<IntervalJet>(lighting, mat, P, N, Vec3{});
+    const MarkJacobian J = mark_jacobian(sys, box);
+    const std::array<IntervalJet, 3> I = intensity_jets(pp, lighting, mat, box, e, J.A, a, b);
     const double wa = (Interval(ca[1]) - Interval(ca[0])).mag();
     const double wb = (Interval(cb[1]) - Interval(cb[0])).mag();
     const double limit = dither ? 0.5 : 1.0;
@@ -90,7 +101,6 @@ SecondOrder second_order(const ProjectedPatch& pp, const Scene& lighting, const 
     r.error_levels = 0;
     // The corners: certified hits, interval SHADE there; painted from the
     // midpoints, which are within rad of the true corner intensities.
-    const MarkJacobian J = mark_jacobian(A);
     double corner_rad[3] = {0, 0, 0};
     for (int k = 0; k < 4; ++k) {
         std::array<Interval, 3> Ic;

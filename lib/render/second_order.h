@@ -36,6 +36,7 @@
 #include <seamless/interval/interval_matrix.h>
 #include <seamless/render/interval_jet.h>
 #include <seamless/render/pixel_solve.h>
+#include <seamless/render/primary_cluster.h>
 #include <seamless/render/projection.h>
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
@@ -70,6 +71,16 @@ bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Mat
                       double a, double b, const ParamBox& box, const MarkJacobian& J,
                       ClusterSystem& scratch, RenderStats& st, std::array<Interval, 3>& I);
 
+// The intensity of the rays of a cluster as jets over B: shade<IntervalJet>
+// (shading.h) at the jets of surface_jets; [0, 1] with entire partials where
+// those are undecided. (Splitting `box` into 3 x 3 parts and taking the hull of
+// their jets narrowed the bound a little but cost more than it saved:
+// docs/results/render.md, fifth round.)
+std::array<IntervalJet, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
+                                          const Material& mat, const ParamBox& box,
+                                          const PatchEnclosure& e, const IMat<2>& A, Interval a,
+                                          Interval b);
+
 // The second-order test of a cluster whose plain step 9 failed on span.
 struct SecondOrder {
     bool paint = false;
@@ -77,12 +88,12 @@ struct SecondOrder {
     double error_levels = 0;         // e of the comment above (in levels), the widest channel
     std::array<double, 3> bound{};   // |I - L| over B per channel (intensity)
 };
-// pp, box, A: the certified cluster (box contracted by certify_cluster, A as in
-// surface_jets); e: enclose(pp.forms, box); lighting: the lights that reach
-// every ray of B (camera coordinates), mat: the patch's material; ca, cb: screen coordinates of B's
-// first and last pixel column and row.
+// pp, box, sys: the certified cluster (box contracted by certify_cluster, sys
+// its cluster system); e: enclose(pp.forms, box); lighting: the lights that reach every ray of B
+// (camera coordinates), mat: the patch's material; ca, cb: screen coordinates of B's first and last
+// pixel column and row.
 SecondOrder second_order(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
-                         const ParamBox& box, const PatchEnclosure& e, const IMat<2>& A,
+                         const ParamBox& box, const PatchEnclosure& e, const ClusterSystem& sys,
                          const double ca[2], const double cb[2], int levels, bool dither,
                          ClusterSystem& scratch, RenderStats& st);
 

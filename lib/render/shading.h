@@ -97,13 +97,14 @@ inline Interval either(Interval a, Interval b) {
 }
 
 // Intensity in [0, 1] per channel at surface point P with (not necessarily unit)
-// normal N, seen from `eye`. T: double, Interval, or IntervalJet
-// (interval_jet.h: the intensity's gradient over a cluster, second_order.h);
-// every non-double type takes the enclosure's outward-rounded constants. The normal is turned
-// towards the viewer (open surfaces are seen from both sides). For intervals: returns [0, 1] in
-// every channel when the side facing the viewer is undecided (a possible silhouette). `eye` may be
-// a box (V3<Interval>) when the viewer is itself a cluster of points, as for reflected rays seen
-// from the hull of the mirror's points.
+// normal N, seen from `eye`. The normal is turned towards the viewer (open
+// surfaces are seen from both sides). For intervals: returns [0, 1] in every
+// channel when the side facing the viewer is undecided (a possible silhouette).
+// `eye` may be a box (V3<Interval>) when the viewer is itself a cluster of
+// points, as for reflected rays seen from the hull of the mirror's points.
+// T: double, Interval, or IntervalJet (interval_jet.h: the intensity with its
+// gradient over a cluster, for step 9's second-order criterion, second_order.h);
+// every type but double takes outward-rounded products of the constants.
 template <class T>
 std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3<T> N,
                        const V3<T>& eye) {

@@ -82,8 +82,8 @@ Tally check_clusters(const Scene& scene, int w, int h, int block, std::vector<in
                     exact[static_cast<size_t>((block - 1) * block)], exact.back()};
                 for (const int n : levels)
                     for (const bool dither : {true, false}) {
-                        const SecondOrder so = second_order(pp, ps.lighting, mat, box, e, A, ca, cb,
-                                                            n, dither, scratch, st);
+                        const SecondOrder so = second_order(pp, ps.lighting, mat, box, e, sys, ca,
+                                                            cb, n, dither, scratch, st);
                         if (!std::isfinite(so.bound[0]) || !std::isfinite(so.bound[1]) ||
                             !std::isfinite(so.bound[2]))
                             continue;
