@@ -251,7 +251,9 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
         for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
     }
     lighting_.ambient = ps_.lighting.ambient;
-    r.I = shade<Interval>(ts_ ? lighting_ : ps_.lighting, mat, P, N, Vec3{});
+    r.lighting = ts_ ? &lighting_ : &ps_.lighting;
+    r.e = e;
+    r.I = shade<Interval>(*r.lighting, mat, P, N, Vec3{});
     r.secondary = ts_ && (mat.reflect > 0 || mat.transmit > 0) && scene_.max_depth > 0;
     if (r.secondary) {
         // The secondary terms only add to the local ones: if those alone

@@ -26,6 +26,12 @@ struct ClusterShading {
     std::array<Interval, 3> I;
     bool secondary = false; // reflected or refracted clusters were traced
     bool shadowed = false;  // some light is certainly blocked for every ray of B
+    // For step 9's second-order criterion (second_order.h): the enclosures
+    // of point and derivatives over the box, and the ambient and lights that
+    // reach every ray of B in camera coordinates (the shader's own scene or
+    // scratch: valid until its next call).
+    PatchEnclosure e;
+    const Scene* lighting = nullptr;
 };
 
 // The lights that reach every point of a cluster: decided = false when some

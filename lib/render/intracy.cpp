@@ -44,6 +44,7 @@
 #include <seamless/render/projection.h>
 #include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
+#include <seamless/render/second_order.h>
 #include <seamless/render/shading.h>
 #include <seamless/render/step_clock.h>
 #include <seamless/render/trace.h>
@@ -473,9 +474,32 @@ class PartRenderer {
             hi[c] = quantise(I[c].hi(), levels_);
             levels_over_ = std::max(levels_over_, hi[c] - lo[c]);
         }
+        bool span = false;
         for (int c = 0; c < 3; ++c) {
-            if (hi[c] - lo[c] > (opt_.dither ? 1 : 0)) return RenderStats::span;
+            span |= hi[c] - lo[c] > (opt_.dither ? 1 : 0);
             two |= hi[c] > lo[c];
+        }
+        // Step 9 with a second-order criterion (second_order.h) where the
+        // enclosure spans too many levels: primary clusters only (reflected
+        // and refracted light keeps the plain rule), B not tiny.
+        std::array<double, 3> corner[4];
+        if (span) {
+            const long long area = static_cast<long long>(B.x1 - B.x0 + 1) * (B.y1 - B.y0 + 1);
+            if (secondary || area < kSecondOrderArea) return RenderStats::span;
+            ++st.second_order_attempts;
+            const double ca[2] = {ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_a(B.x1 + 0.5)};
+            const double cb[2] = {ps_.frame.screen_b(B.y0 + 0.5), ps_.frame.screen_b(B.y1 + 0.5)};
+            const SecondOrder so =
+                second_order(pp, *cs.lighting, ps_.lighting.materials[pp.material], box, cs.e, sys_,
+                             ca, cb, levels_, opt_.dither, pixel_.sys, st);
+            if (!so.paint) {
+                // Halving B quarters the bound: children may pass where B failed.
+                if (so.error_levels < 4 * (opt_.dither ? 0.5 : 1.0)) levels_over_ = 0;
+                return RenderStats::span;
+            }
+            ++st.second_order_painted;
+            st.second_order_pixels += area;
+            for (int k = 0; k < 4; ++k) corner[k] = so.corner[k];
         }
         st.secondary_clusters += secondary;
         st.shadowed_clusters += shadowed;
@@ -490,10 +514,9 @@ class PartRenderer {
             return -1;
         }
         // Step 9 with remark 2: corner rays, bilinear form, dither.
-        std::array<double, 3> corner[4];
         const int cx[4] = {B.x0, B.x1, B.x0, B.x1}, cy[4] = {B.y0, B.y0, B.y1, B.y1};
         const Mark only{m.patch, box, {}};
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < 4 && !span; ++k) {
             double cs, ct;
             const double ca = ps_.frame.screen_a(cx[k] + 0.5), cb = ps_.frame.screen_b(cy[k] + 0.5);
             if (newton_corner(pp.patch, ca, cb, box, cs, ct)) {
@@ -514,13 +537,10 @@ class PartRenderer {
             for (int x = B.x0; x <= B.x1; ++x) {
                 const double fx = (x - B.x0) / wx;
                 image_.surface_at(x, y) = 1;
-                for (int c = 0; c < 3; ++c) {
-                    const double v = (1 - fy) * ((1 - fx) * corner[0][c] + fx * corner[1][c]) +
-                                     fy * ((1 - fx) * corner[2][c] + fx * corner[3][c]);
-                    long level = std::lround(clamp01(v) * (levels_ - 1) + dither(x, y, c));
-                    level = std::clamp<long>(level, lo[c], hi[c]);
-                    image_.at(x, y, c) = static_cast<std::uint16_t>(level);
-                }
+                for (int c = 0; c < 3; ++c)
+                    image_.at(x, y, c) = static_cast<std::uint16_t>(
+                        bilinear_level(corner, c, fx, fy, opt_.dither ? dither(x, y, c) : 0.0,
+                                       levels_, lo[c], hi[c]));
             }
         }
         count(B, st);
@@ -535,7 +555,8 @@ class PartRenderer {
     int levels_;
     std::uint16_t bg_[3];
     int levels_over_ = 0; // the last step 9's widest enclosure in levels (0: not reached)
-    static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
+    static constexpr int kMaxBisections = 64;         // per marked patch and sub-screen
+    static constexpr long long kSecondOrderArea = 32; // smallest B for step 9's second order
     std::vector<Mark> arena_, work_;
     SubpatchArena coefs_; // the marks' subpatches
     std::vector<SubScreen> stack_;

@@ -34,6 +34,9 @@ void RenderStats::merge(const RenderStats& o) {
     single_pixel_seconds += o.single_pixel_seconds;
     nearest_by_plane += o.nearest_by_plane;
     lights_blocked_by_surface += o.lights_blocked_by_surface;
+    second_order_attempts += o.second_order_attempts;
+    second_order_painted += o.second_order_painted;
+    second_order_pixels += o.second_order_pixels;
     for (int i = 0; i < split_causes; ++i) {
         attempts_failed[i] += o.attempts_failed[i];
         single_pixels_by_cause[i] += o.single_pixels_by_cause[i];

@@ -83,6 +83,9 @@ struct RenderStats {
     // another marked patch overlapping), and SHADE step 2 lights found blocked
     // by a surface of triangles rather than one.
     long long nearest_by_plane = 0, lights_blocked_by_surface = 0;
+    // Step 9's second-order criterion (second_order.h), tried where the plain
+    // test failed on span: attempts, sub-screens painted by it, and their pixels.
+    long long second_order_attempts = 0, second_order_painted = 0, second_order_pixels = 0;
 
     double single_pixel_fraction() const {
         return width > 0 && height > 0

@@ -87,6 +87,14 @@ inline bool possibly_zero_crossing(double) {
 inline bool possibly_zero_crossing(Interval x) {
     return x.lo() <= 0 && x.hi() >= 0;
 }
+// Anything in [0, 1]: the intensity where the side facing the viewer is undecided.
+inline Interval unit_range(Interval) {
+    return {0.0, 1.0};
+}
+// Either of two values (a term that may be cut off somewhere in a cluster).
+inline Interval either(Interval a, Interval b) {
+    return hull(a, b);
+}
 
 // Intensity in [0, 1] per channel at surface point P with (not necessarily unit)
 // normal N, seen from `eye`. The normal is turned towards the viewer (open
@@ -94,6 +102,9 @@ inline bool possibly_zero_crossing(Interval x) {
 // channel when the side facing the viewer is undecided (a possible silhouette).
 // `eye` may be a box (V3<Interval>) when the viewer is itself a cluster of
 // points, as for reflected rays seen from the hull of the mirror's points.
+// T: double, Interval, or IntervalJet (interval_jet.h: the intensity with its
+// gradient over a cluster, for step 9's second-order criterion, second_order.h);
+// every type but double takes outward-rounded products of the constants.
 template <class T>
 std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3<T> N,
                        const V3<T>& eye) {
@@ -102,12 +113,11 @@ std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3
     T nv = dot3(N, V);
     std::array<T, 3> I{T(scene.ambient * m.color.x), T(scene.ambient * m.color.y),
                        T(scene.ambient * m.color.z)};
-    if constexpr (std::is_same_v<T, Interval>) {
-        I = {Interval(scene.ambient) * Interval(m.color.x),
-             Interval(scene.ambient) * Interval(m.color.y),
-             Interval(scene.ambient) * Interval(m.color.z)};
-        if (possibly_zero_crossing(nv))
-            return {Interval(0.0, 1.0), Interval(0.0, 1.0), Interval(0.0, 1.0)};
+    if constexpr (!std::is_same_v<T, double>) {
+        I = {T(Interval(scene.ambient) * Interval(m.color.x)),
+             T(Interval(scene.ambient) * Interval(m.color.y)),
+             T(Interval(scene.ambient) * Interval(m.color.z))};
+        if (possibly_zero_crossing(nv)) return {unit_range(nv), unit_range(nv), unit_range(nv)};
     }
     if (surely_negative(nv)) N = {-N.x, -N.y, -N.z};
     if (m.diffuse == 0 && m.specular == 0) return {clamp01(I[0]), clamp01(I[1]), clamp01(I[2])};
@@ -132,7 +142,7 @@ std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3
                 if (cos_nl.hi() <= 0)
                     spec = zero;
                 else if (cos_nl.lo() <= 0)
-                    spec = hull(spec, zero);
+                    spec = either(spec, zero);
             }
         }
         const double lc[3] = {light.color.x, light.color.y, light.color.z};
@@ -140,8 +150,8 @@ std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3
         for (int c = 0; c < 3; ++c) {
             if (lc[c] == 0) continue;
             T term = T(m.diffuse * mc[c]) * diff;
-            if constexpr (std::is_same_v<T, Interval>)
-                term = Interval(m.diffuse) * Interval(mc[c]) * diff;
+            if constexpr (!std::is_same_v<T, double>)
+                term = T(Interval(m.diffuse) * Interval(mc[c])) * diff;
             if (m.specular != 0) term = term + T(m.specular) * spec;
             I[c] = I[c] + T(lc[c]) * term;
         }

@@ -245,4 +245,26 @@ PatchEnclosure enclose(const PatchForms& f, ParamBox box) {
     return e;
 }
 
+PatchSecondDerivatives enclose_second(const PatchForms& f, ParamBox box, const PatchEnclosure& e) {
+    PatchSecondDerivatives d;
+    for (int c = 0; c < 3; ++c) {
+        d.ss[c] = horner(f.Xss, c, box);
+        d.st[c] = horner(f.Xst, c, box);
+        d.tt[c] = horner(f.Xtt, c, box);
+    }
+    if (!f.rational) return d;
+    const Interval W = intersect(horner(f.X, 3, box), f.w_hull);
+    const Interval Ws = horner(f.Xs, 3, box), Wt = horner(f.Xt, 3, box);
+    const Interval Wss = horner(f.Xss, 3, box), Wst = horner(f.Xst, 3, box),
+                   Wtt = horner(f.Xtt, 3, box);
+    const Interval two(2.0);
+    for (int c = 0; c < 3; ++c) {
+        const Interval P = e.point[c], Ps = e.ds[c], Pt = e.dt[c];
+        d.ss[c] = (d.ss[c] - two * Ps * Ws - P * Wss) / W;
+        d.st[c] = (d.st[c] - Ps * Wt - Pt * Ws - P * Wst) / W;
+        d.tt[c] = (d.tt[c] - two * Pt * Wt - P * Wtt) / W;
+    }
+    return d;
+}
+
 } // namespace seamless

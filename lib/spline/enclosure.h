@@ -53,6 +53,15 @@ Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, i
 IVec3 enclose_point(const PatchForms& f, ParamBox box);
 PatchEnclosure enclose(const PatchForms& f, ParamBox box);
 
+// The second partial derivatives of the point over a box: P_ss, P_st, P_tt
+// (Horner on the power forms; rational patches by differentiating X = P W twice:
+// X_ss = P_ss W + 2 P_s W_s + P W_ss, X_st = P_st W + P_s W_t + P_t W_s + P W_st).
+// e: enclose(f, box), whose point and first derivatives the quotient rule reuses.
+struct PatchSecondDerivatives {
+    IVec3 ss, st, tt;
+};
+PatchSecondDerivatives enclose_second(const PatchForms& f, ParamBox box, const PatchEnclosure& e);
+
 // Range enclosures (horner calls) made on this thread so far: a statistic
 // for the renderer's --stats (differences around a piece of work).
 long long range_enclosure_count();
