@@ -110,6 +110,19 @@ struct KnownBound {
     double bound = 0;
 };
 
+// Seconds since the previous call (or construction), for PhaseSeconds.
+class Lap {
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+
+  public:
+    double operator()() {
+        const auto now = std::chrono::steady_clock::now();
+        const double d = std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+        return d;
+    }
+};
+
 bool same_ring(std::span<const RingPoint> a, std::span<const RingPoint> b) {
     return std::equal(a.begin(), a.end(), b.begin(), b.end(),
                       [](const RingPoint& p, const RingPoint& q) {
@@ -140,13 +153,21 @@ struct PassMemo {
         : verdicts(patches), bounds(patches), parts(patches), changed(patches, 1), keep(keep) {}
 };
 
+// Where each patch's nodes and leaves start in the concatenated arrays (one
+// more entry: the ends).
+struct PatchRanges {
+    std::vector<int> node_start, leaf_start;
+};
+
 // (a) Every patch split on its own (in parallel), the trees then laid end to
-// end in patch order: the same arrays for any thread count.
-void subdivide_patches(const std::vector<BezierPatch>& patches, const SubdivisionOptions& sub,
-                       int threads, PassMemo& memo, PatchTrees& trees,
-                       std::vector<Subpatch>& subpatches) {
+// end in patch order (prefix sums, copied in parallel): the same arrays for
+// any thread count.
+PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
+                              const SubdivisionOptions& sub, int threads, PassMemo& memo,
+                              PatchTrees& trees, std::vector<Subpatch>& subpatches) {
     std::vector<Part>& parts = memo.parts;
-    parallel_chunks(static_cast<int>(patches.size()), threads, [&](int begin, int end) {
+    const int np = static_cast<int>(patches.size());
+    parallel_chunks(np, threads, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             if (!memo.changed[i]) continue;
             SubdivisionOptions o = sub;
@@ -155,28 +176,36 @@ void subdivide_patches(const std::vector<BezierPatch>& patches, const Subdivisio
             parts[i].root = subdivide(patches[i], i, o, parts[i].trees, parts[i].subpatches);
         }
     });
-    size_t nodes = 0, leaves = 0;
-    for (const Part& p : parts) nodes += p.trees.nodes.size(), leaves += p.subpatches.size();
-    trees.nodes.reserve(nodes);
-    subpatches.reserve(leaves);
-    trees.roots.reserve(patches.size());
-    for (const Part& p : parts) {
-        const int node0 = static_cast<int>(trees.nodes.size());
-        const int leaf0 = static_cast<int>(subpatches.size());
-        for (PatchNode n : p.trees.nodes) {
-            for (int& c : n.child)
-                if (c >= 0) c += node0;
-            if (n.subpatch >= 0) n.subpatch += leaf0;
-            trees.nodes.push_back(n);
-        }
-        for (Subpatch sp : p.subpatches) {
-            sp.node += node0;
-            subpatches.push_back(sp);
-        }
-        trees.roots.push_back(p.root + node0);
-        trees.depth = std::max(trees.depth, p.trees.depth);
+    PatchRanges at{std::vector<int>(np + 1, 0), std::vector<int>(np + 1, 0)};
+    for (int i = 0; i < np; ++i) {
+        at.node_start[i + 1] = at.node_start[i] + static_cast<int>(parts[i].trees.nodes.size());
+        at.leaf_start[i + 1] = at.leaf_start[i] + static_cast<int>(parts[i].subpatches.size());
+        trees.depth = std::max(trees.depth, parts[i].trees.depth);
     }
+    trees.nodes.resize(at.node_start[np]);
+    subpatches.resize(at.leaf_start[np]);
+    trees.roots.resize(np);
+    parallel_chunks(np, threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const Part& p = parts[i];
+            const int node0 = at.node_start[i], leaf0 = at.leaf_start[i];
+            for (size_t j = 0; j < p.trees.nodes.size(); ++j) {
+                PatchNode n = p.trees.nodes[j];
+                for (int& c : n.child)
+                    if (c >= 0) c += node0;
+                if (n.subpatch >= 0) n.subpatch += leaf0;
+                trees.nodes[node0 + j] = n;
+            }
+            for (size_t j = 0; j < p.subpatches.size(); ++j) {
+                Subpatch sp = p.subpatches[j];
+                sp.node += node0;
+                subpatches[leaf0 + j] = sp;
+            }
+            trees.roots[i] = p.root + node0;
+        }
+    });
     if (!memo.keep) std::vector<Part>().swap(parts); // one pass: no copy kept
+    return at;
 }
 
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
@@ -184,8 +213,10 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
                              const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
                              bool last) {
     const auto start = std::chrono::steady_clock::now();
+    Lap lap;
     Tessellation out;
     TessellationStats& st = out.stats;
+    PhaseSeconds& phase = st.phases;
     const Box3 box = control_box(model);
     st.d_max = box.max_extent();
     const PlanarityTolerances paper =
@@ -209,7 +240,9 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     sub.angle = options.angle;
     sub.max_depth = options.max_depth;
     sub.split = &split;
-    subdivide_patches(patches, sub, options.threads, memo, out.trees, out.subpatches);
+    const PatchRanges ranges =
+        subdivide_patches(patches, sub, options.threads, memo, out.trees, out.subpatches);
+    phase.subdivision += lap();
 
     // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
     // Shared boundaries agree to the seam tolerance, and at least to the
@@ -240,6 +273,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     // sides stayed a level apart pass after pass). The fans on both sides run
     // over every vertex on their sides, by index, so no crack opens.
     vr.straight_segments = st.tolerance <= 0;
+    phase.boundaries += lap();
 
     // (d) Fans: each planar subpatch from its centre over its ring.
     TriangleMesh& mesh = out.mesh;
@@ -249,11 +283,6 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     // (and page faults) of growing these large arrays; untouched reserve costs
     // no memory.
     const size_t expected = 8 * out.subpatches.size();
-    mesh.triangles.reserve(expected);
-    mesh.triangle_surface.reserve(expected);
-    mesh.corner_normals.reserve(expected);
-    mesh.corner_uvs.reserve(expected);
-    out.trees.nodes.reserve(out.trees.nodes.size() + 2 * expected);
     vr.positions.reserve(2 * out.subpatches.size() + expected / 4);
     vr.placed.reserve(2 * out.subpatches.size() + expected / 4);
     vr.index.reserve(out.subpatches.size() + expected / 8);
@@ -274,6 +303,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
             centre_point[i] = evaluate(patches[sp.patch], sc, tc).point;
         }
     });
+    phase.rings += lap();
     // (d1) Their vertices, in subpatch order (vertices are numbered as they
     // are first met, so this stays sequential).
     std::vector<RingVertex> rings;
@@ -291,6 +321,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         vr.positions.push_back(centre_point[i]);
         vr.placed.push_back(1);
     }
+    phase.numbering += lap();
 
     // (d2) Each subpatch's certified bound on its own, in parallel.
     std::vector<char> fresh(count, 0);
@@ -328,17 +359,26 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         const Subpatch& sp = out.subpatches[i];
         if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
         st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
-        if (!fresh[i] || !memo.keep) continue;
-        KnownBound& k = memo.bounds[sp.patch][subpatch_key(sp.patch, sp.rect)];
-        k.ring.clear();
-        for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) {
-            const RingVertex& v = rings[j];
-            k.ring.push_back({v.s, v.t, vr.positions[v.vertex], v.fs, v.ft});
-        }
-        k.rect = sp.rect;
-        k.centre = vr.positions[centres[i]];
-        k.bound = sp.error_bound;
     }
+    // The fresh bounds kept for the next pass: each patch's map on its own.
+    const int np = static_cast<int>(patches.size());
+    parallel_chunks(certify && memo.keep ? np : 0, options.threads, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p)
+            for (int i = ranges.leaf_start[p]; i < ranges.leaf_start[p + 1]; ++i) {
+                if (!fresh[i]) continue;
+                const Subpatch& sp = out.subpatches[i];
+                KnownBound& k = memo.bounds[p][subpatch_key(sp.patch, sp.rect)];
+                k.ring.clear();
+                for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) {
+                    const RingVertex& v = rings[j];
+                    k.ring.push_back({v.s, v.t, vr.positions[v.vertex], v.fs, v.ft});
+                }
+                k.rect = sp.rect;
+                k.centre = vr.positions[centres[i]];
+                k.bound = sp.error_bound;
+            }
+    });
+    phase.bounds += lap();
     // Another pass will follow: the mesh of this one is not needed.
     if (!last && st.above_tolerance > 0) return out;
 
@@ -355,51 +395,104 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
                 ring_normals[j] = unit_normal(b, rings[j].fs, rings[j].ft, sc, tc);
         }
     });
+    phase.normals += lap();
 
-    // (d4) Fan triangles in subpatch order; none where two ring vertices are one (a pole).
+    // (d4) Fan triangles in subpatch order; none where two ring vertices are
+    // one (a pole). Counted per subpatch, placed by prefix sums, written in
+    // parallel: the same arrays for any thread count.
+    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const int first = ring_start[i], n = ring_start[i + 1] - first;
+            int c = 0;
+            for (int k = 0; k < n; ++k)
+                c += rings[first + k].vertex != rings[first + (k + 1) % n].vertex;
+            out.subpatches[i].triangle_count = c;
+        }
+    });
+    std::vector<int> fan_node(count + 1);
+    int triangles = 0;
+    fan_node[0] = static_cast<int>(out.trees.nodes.size());
     for (size_t i = 0; i < count; ++i) {
         Subpatch& sp = out.subpatches[i];
-        const BezierPatch& b = patches[sp.patch];
-        const ParamRect& r = sp.rect;
-        const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
-        const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-        const int first = ring_start[i], n = ring_start[i + 1] - first;
-        sp.first_triangle = mesh.triangle_count();
-        for (int k = 0; k < n; ++k) {
-            const RingVertex &a = rings[first + k], &c = rings[first + (k + 1) % n];
-            if (a.vertex == c.vertex) continue;
-            mesh.triangles.push_back({centres[i], a.vertex, c.vertex});
-            mesh.triangle_surface.push_back(b.surface);
-            mesh.corner_normals.push_back(
-                {centre_normals[i], ring_normals[first + k], ring_normals[first + (k + 1) % n]});
-            mesh.corner_uvs.push_back({std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
-                                       std::array<double, 2>{b.u_at(a.fs), b.v_at(a.ft)},
-                                       std::array<double, 2>{b.u_at(c.fs), b.v_at(c.ft)}});
-        }
-        sp.triangle_count = mesh.triangle_count() - sp.first_triangle;
-
-        // Proposition 11, remark 2: the triangles become the leaves below the subpatch.
-        const int added =
-            attach_triangles(out.trees, sp.node, sp.first_triangle, sp.triangle_count);
-        out.trees.depth = std::max(out.trees.depth, sp.depth + added);
+        sp.first_triangle = triangles;
+        triangles += sp.triangle_count;
+        fan_node[i + 1] = fan_node[i] + attached_nodes(sp.triangle_count);
         st.max_depth = std::max(st.max_depth, sp.depth);
         if (!sp.planar) ++st.nonplanar_subpatches;
     }
+    mesh.triangles.resize(triangles);
+    mesh.triangle_surface.resize(triangles);
+    mesh.corner_normals.resize(triangles);
+    mesh.corner_uvs.resize(triangles);
+    out.trees.nodes.resize(fan_node[count]);
+    std::vector<int> added(count);
+    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const Subpatch& sp = out.subpatches[i];
+            const BezierPatch& b = patches[sp.patch];
+            const ParamRect& r = sp.rect;
+            const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+            const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+            const int first = ring_start[i], n = ring_start[i + 1] - first;
+            int f = sp.first_triangle;
+            for (int k = 0; k < n; ++k) {
+                const RingVertex &a = rings[first + k], &c = rings[first + (k + 1) % n];
+                if (a.vertex == c.vertex) continue;
+                mesh.triangles[f] = {centres[i], a.vertex, c.vertex};
+                mesh.triangle_surface[f] = b.surface;
+                mesh.corner_normals[f] = {centre_normals[i], ring_normals[first + k],
+                                          ring_normals[first + (k + 1) % n]};
+                mesh.corner_uvs[f] = {std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
+                                      std::array<double, 2>{b.u_at(a.fs), b.v_at(a.ft)},
+                                      std::array<double, 2>{b.u_at(c.fs), b.v_at(c.ft)}};
+                ++f;
+            }
+            // Proposition 11, remark 2: the triangles become the leaves below the subpatch.
+            added[i] = attach_triangles_at(out.trees, sp.node, sp.first_triangle, sp.triangle_count,
+                                           fan_node[i]);
+        }
+    });
+    for (size_t i = 0; i < count; ++i)
+        out.trees.depth = std::max(out.trees.depth, out.subpatches[i].depth + added[i]);
     mesh.positions = std::move(vr.positions);
-    update_triangle_hulls(out.trees, [&mesh](int f) {
+    // Hulls bottom-up: each fan's subtree, then each patch's nodes above them.
+    const auto triangle_box = [&mesh](int f) {
         Box3 bb;
         for (int v : mesh.triangles[f]) bb.extend(mesh.positions[v]);
         return bb;
+    };
+    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            update_triangle_hulls(out.trees, fan_node[i], fan_node[i + 1], triangle_box);
     });
+    parallel_chunks(np, options.threads, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p)
+            update_triangle_hulls(out.trees, ranges.node_start[p], ranges.node_start[p + 1],
+                                  triangle_box);
+    });
+    phase.fans += lap();
 
     // At unit scale: the signed volume of a closed component stays finite.
-    if (options.orient_surfaces) st.flipped_surfaces = orient_surfaces(mesh).flipped_surfaces;
+    if (options.orient_surfaces)
+        st.flipped_surfaces = orient_surfaces(mesh, options.threads).flipped_surfaces;
+    phase.orientation += lap();
 
     st.subpatches = static_cast<int>(out.subpatches.size());
     st.triangles = mesh.triangle_count();
     st.vertices = mesh.vertex_count();
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+void add(PhaseSeconds& sum, const PhaseSeconds& p) {
+    sum.subdivision += p.subdivision;
+    sum.boundaries += p.boundaries;
+    sum.rings += p.rings;
+    sum.numbering += p.numbering;
+    sum.bounds += p.bounds;
+    sum.normals += p.normals;
+    sum.fans += p.fans;
+    sum.orientation += p.orientation;
 }
 
 // With a tolerance: a subpatch accepted by its four-triangle bound can end
@@ -412,11 +505,13 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     std::unordered_set<std::uint64_t> split;
     PassMemo memo(patches.size(), options.tolerance > 0);
     Tessellation t;
+    PhaseSeconds phases;
     constexpr int kPasses = 5;
     int pass = 0;
     for (;; ++pass) {
         const bool last = options.tolerance <= 0 || pass == kPasses - 1;
         t = tessellate_pass(model, patches, options, split, memo, last);
+        add(phases, t.stats.phases);
         if (last || t.stats.above_tolerance == 0) break;
         std::fill(memo.changed.begin(), memo.changed.end(), 0);
         for (const Subpatch& sp : t.subpatches)
@@ -426,6 +521,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
             }
     }
     t.stats.passes = pass + 1;
+    t.stats.phases = phases;
     t.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return t;
@@ -465,39 +561,57 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     }
     const int e = dm > 0 && std::isfinite(dm) ? std::ilogb(dm) : 0;
     if (e == 0) return tessellate_at_unit_scale(model, patches, options);
+    const auto start = std::chrono::steady_clock::now();
+    Lap lap;
     const double down = std::ldexp(1.0, -e), up = std::ldexp(1.0, e);
     Model m = model;
     for (BSplineSurface& s : m.surfaces)
         for (Vec3& p : s.points) p = down * p;
     std::vector<BezierPatch> ps = patches;
-    for (BezierPatch& b : ps)
-        for (HPoint& h : b.cp) h = {down * h.x, down * h.y, down * h.z, h.w};
+    parallel_chunks(static_cast<int>(ps.size()), options.threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            for (HPoint& h : ps[i].cp) h = {down * h.x, down * h.y, down * h.z, h.w};
+    });
     TessellationOptions o = options;
     if (o.eps1 >= 0) o.eps1 *= down;
     if (o.eps2 >= 0) o.eps2 *= down;
     if (o.seam_tolerance >= 0) o.seam_tolerance *= down;
     o.tolerance *= down;
+    const double scale_in = lap();
     Tessellation t = tessellate_at_unit_scale(m, ps, o);
+    lap();
     auto grow = [&](Box3& b) {
         if (!b.empty()) b = {up * b.lo, up * b.hi};
     };
-    for (Vec3& p : t.mesh.positions) p = up * p;
-    for (PatchNode& n : t.trees.nodes) {
-        grow(n.control_hull);
-        grow(n.triangle_hull);
-    }
-    for (Subpatch& sp : t.subpatches) {
-        sp.fan_error *= up;
-        sp.error_bound *= up;
-        sp.centre = up * sp.centre;
-        for (Vec3& c : sp.corners) c = up * c;
-    }
+    parallel_chunks(t.mesh.vertex_count(), options.threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) t.mesh.positions[i] = up * t.mesh.positions[i];
+    });
+    parallel_chunks(static_cast<int>(t.trees.nodes.size()), options.threads,
+                    [&](int begin, int end) {
+                        for (int i = begin; i < end; ++i) {
+                            grow(t.trees.nodes[i].control_hull);
+                            grow(t.trees.nodes[i].triangle_hull);
+                        }
+                    });
+    parallel_chunks(static_cast<int>(t.subpatches.size()), options.threads,
+                    [&](int begin, int end) {
+                        for (int i = begin; i < end; ++i) {
+                            Subpatch& sp = t.subpatches[i];
+                            sp.fan_error *= up;
+                            sp.error_bound *= up;
+                            sp.centre = up * sp.centre;
+                            for (Vec3& c : sp.corners) c = up * c;
+                        }
+                    });
     t.stats.d_max *= up;
     t.stats.eps1 *= up;
     t.stats.eps2 *= up;
     t.stats.seam_tolerance *= up;
     t.stats.tolerance = options.tolerance > 0 ? options.tolerance : 0.0;
     t.stats.max_error_bound *= up;
+    t.stats.phases.scaling = scale_in + lap();
+    t.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return t;
 }
 
