@@ -292,15 +292,76 @@ VertexKey vertex_key(const BoundaryMatch& m, int patch, int s, int t) {
     return {1, m.edge_group[pe], m.edge_reversed[pe] ? N - x : x, 0};
 }
 
+Vec3 exact_position(const std::vector<BezierPatch>& patches, const BoundaryMatch& m,
+                    VertexKey key) {
+    if (key.kind == 0) return patches[key.id / 4].corner(key.id % 4);
+    if (key.kind == 1) {
+        // Also every seam vertex (edge_graph.h): its line has one side only.
+        const int ref = m.group_ref[key.id];
+        int gs = 0, gt = 0;
+        edge_grid_point(ref % 4, key.a, gs, gt);
+        return evaluate(patches[ref / 4], param_of(gs), param_of(gt)).point;
+    }
+    return evaluate(patches[key.id], param_of(key.a), param_of(key.b)).point;
+}
+
+VertexKey canonical_key(const VertexRegistry& vr, VertexKey key) {
+    if (vr.alias && !vr.alias->empty()) {
+        auto a = vr.alias->find(key);
+        if (a != vr.alias->end()) return a->second;
+    }
+    return key;
+}
+
 int vertex_at(VertexRegistry& vr, int patch, int s, int t) {
     return vertex_of(vr, vertex_key(*vr.match, patch, s, t));
 }
 
-int vertex_of(VertexRegistry& vr, VertexKey key) {
-    if (vr.alias && !vr.alias->empty()) {
-        auto a = vr.alias->find(key);
-        if (a != vr.alias->end()) key = a->second;
+namespace {
+
+// Crack-free with straight segments: the point on the straight segment of
+// the subpatch side holding `key` strictly inside (Fig. 3, Q0 = (Q1 + Q2) / 2
+// recursively), placing the segment's ends first; false when no side holds it.
+bool straight_point(VertexRegistry& vr, VertexKey key, Vec3& p) {
+    if (!vr.crack_free || !vr.straight_segments) return false;
+    if (key.kind == 1) {
+        // A point of global edge g, on the reference patch's side.
+        const LineSegment* seg = containing(*vr.edges, key.id, key.a);
+        if (!seg) return false;
+        const int ref = vr.match->group_ref[key.id];
+        int gs = 0, gt = 0;
+        edge_grid_point(ref % 4, seg->a, gs, gt);
+        const int ia = vertex_at(vr, ref / 4, gs, gt);
+        edge_grid_point(ref % 4, seg->b, gs, gt);
+        const int ib = vertex_at(vr, ref / 4, gs, gt);
+        p = lerp(vr.positions[ia], vr.positions[ib],
+                 static_cast<double>(key.a - seg->a) / (seg->b - seg->a));
+        return true;
     }
+    if (key.kind != 2) return false;
+    const int patch = key.id, s = key.a, t = key.b;
+    // At most one subpatch side holds a grid point strictly inside.
+    const LineSegment* seg = nullptr;
+    bool along_s = true;
+    const int h = find_interior_line(*vr.edges, patch, 0, t);
+    if (h >= 0) seg = containing(*vr.edges, h, s);
+    if (!seg) {
+        const int v = find_interior_line(*vr.edges, patch, 1, s);
+        if (v >= 0) seg = containing(*vr.edges, v, t), along_s = false;
+    }
+    if (!seg) return false;
+    const int ia = along_s ? vertex_at(vr, patch, seg->a, t) : vertex_at(vr, patch, s, seg->a);
+    const int ib = along_s ? vertex_at(vr, patch, seg->b, t) : vertex_at(vr, patch, s, seg->b);
+    const int x = along_s ? s : t;
+    p = lerp(vr.positions[ia], vr.positions[ib],
+             static_cast<double>(x - seg->a) / (seg->b - seg->a));
+    return true;
+}
+
+} // namespace
+
+int vertex_of(VertexRegistry& vr, VertexKey key) {
+    key = canonical_key(vr, key);
     auto [it, fresh] = vr.index.try_emplace(key, static_cast<int>(vr.positions.size()));
     const int id = it->second;
     if (!fresh) {
@@ -309,55 +370,8 @@ int vertex_of(VertexRegistry& vr, VertexKey key) {
     }
     vr.positions.emplace_back();
     vr.placed.push_back(0);
-    const std::vector<BezierPatch>& patches = *vr.patches;
     Vec3 p;
-    if (key.kind == 0) {
-        p = patches[key.id / 4].corner(key.id % 4);
-    } else if (key.kind == 1) {
-        // A point of global edge g: on the straight segment of the subpatch
-        // side holding it (Fig. 3, Q0 = (Q1 + Q2) / 2 recursively), else the
-        // curve point of the reference patch.
-        const int ref = vr.match->group_ref[key.id];
-        const LineSegment* seg =
-            vr.crack_free && vr.straight_segments ? containing(*vr.edges, key.id, key.a) : nullptr;
-        int gs = 0, gt = 0;
-        if (seg) {
-            edge_grid_point(ref % 4, seg->a, gs, gt);
-            const int ia = vertex_at(vr, ref / 4, gs, gt);
-            edge_grid_point(ref % 4, seg->b, gs, gt);
-            const int ib = vertex_at(vr, ref / 4, gs, gt);
-            p = lerp(vr.positions[ia], vr.positions[ib],
-                     static_cast<double>(key.a - seg->a) / (seg->b - seg->a));
-        } else {
-            // Also every seam vertex (edge_graph.h): its line has one side only.
-            edge_grid_point(ref % 4, key.a, gs, gt);
-            p = evaluate(patches[ref / 4], param_of(gs), param_of(gt)).point;
-        }
-    } else {
-        const int patch = key.id, s = key.a, t = key.b;
-        const LineSegment* seg = nullptr;
-        bool along_s = true;
-        if (vr.crack_free && vr.straight_segments) {
-            // At most one subpatch side holds a grid point strictly inside.
-            const int h = find_interior_line(*vr.edges, patch, 0, t);
-            if (h >= 0) seg = containing(*vr.edges, h, s);
-            if (!seg) {
-                const int v = find_interior_line(*vr.edges, patch, 1, s);
-                if (v >= 0) seg = containing(*vr.edges, v, t), along_s = false;
-            }
-        }
-        if (seg) {
-            const int ia =
-                along_s ? vertex_at(vr, patch, seg->a, t) : vertex_at(vr, patch, s, seg->a);
-            const int ib =
-                along_s ? vertex_at(vr, patch, seg->b, t) : vertex_at(vr, patch, s, seg->b);
-            const int x = along_s ? s : t;
-            p = lerp(vr.positions[ia], vr.positions[ib],
-                     static_cast<double>(x - seg->a) / (seg->b - seg->a));
-        } else {
-            p = evaluate(patches[patch], param_of(s), param_of(t)).point;
-        }
-    }
+    if (!straight_point(vr, key, p)) p = exact_position(*vr.patches, *vr.match, key);
     vr.positions[id] = p;
     vr.placed[id] = 1;
     return id;

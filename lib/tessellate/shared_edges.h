@@ -128,6 +128,12 @@ struct VertexRegistry {
     std::vector<char> placed; // position computed (guards the recursion)
 };
 
+// The exact surface or curve point of a key: a corner, the reference patch's
+// edge point, an interior surface point (no straight segments).
+Vec3 exact_position(const std::vector<BezierPatch>& patches, const BoundaryMatch& m, VertexKey key);
+// The key every alias of `key` is numbered under (itself when it has none).
+VertexKey canonical_key(const VertexRegistry& vr, VertexKey key);
+
 // Index of the vertex at grid point (s, t) of `patch`, placing it on first use.
 int vertex_at(VertexRegistry& vr, int patch, int s, int t);
 // Index of the vertex with this key (of any patch), placing it on first use.

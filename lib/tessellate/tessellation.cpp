@@ -8,9 +8,11 @@
 #include <seamless/tessellate/tessellation.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <span>
 #include <unordered_map>
@@ -123,6 +125,51 @@ class Lap {
     }
 };
 
+// Dynamic scheduling on parallel_chunks (parallel.h): whichever worker is
+// free takes the next block of `grain` items, so the workers finish within one
+// block of each other (a fixed chunk of whole patches left one thread idle
+// while the other finished it). With `order` (grain 1) the items are taken in
+// that order: largest first, the last blocks are the smallest (longest
+// processing time first). Items write only their own slots, so the result is
+// the same for any thread count and any order.
+// Subpatches per block: small against the tens of thousands of a fine
+// tessellation, large against the cost of taking a block.
+constexpr int kGrain = 32;
+
+void pull_blocks(int n, int grain, int threads, const std::vector<int>* order,
+                 const std::function<void(int begin, int end)>& chunk) {
+    assert(!order || grain == 1);
+    const int blocks = (n + grain - 1) / grain;
+    std::atomic<int> next{0};
+    parallel_chunks(blocks, threads, [&](int, int) {
+        for (int b; (b = next.fetch_add(1, std::memory_order_relaxed)) < blocks;) {
+            if (order)
+                chunk((*order)[b], (*order)[b] + 1);
+            else
+                chunk(b * grain, std::min(n, (b + 1) * grain));
+        }
+    });
+}
+
+// Expected relative cost of subdividing `b` to deviation D, for the order of
+// the work only: a subpatch of size h deviates about h^2 |second difference|,
+// so about sqrt(M/D) splits per direction.
+double patch_cost(const BezierPatch& b, double D) {
+    double mss = 0, mtt = 0;
+    for (int i = 0; i <= b.p; ++i)
+        for (int j = 0; j <= b.q; ++j) {
+            if (i >= 1 && i < b.p)
+                mss = std::max(mss,
+                               norm(b.point(i + 1, j) - 2.0 * b.point(i, j) + b.point(i - 1, j)));
+            if (j >= 1 && j < b.q)
+                mtt = std::max(mtt,
+                               norm(b.point(i, j + 1) - 2.0 * b.point(i, j) + b.point(i, j - 1)));
+        }
+    const double cost =
+        (1 + std::sqrt(b.p * (b.p - 1) * mss / D)) * (1 + std::sqrt(b.q * (b.q - 1) * mtt / D));
+    return std::isfinite(cost) ? cost : 0.0;
+}
+
 bool same_ring(std::span<const RingPoint> a, std::span<const RingPoint> b) {
     return std::equal(a.begin(), a.end(), b.begin(), b.end(),
                       [](const RingPoint& p, const RingPoint& q) {
@@ -163,11 +210,16 @@ struct PatchRanges {
 // end in patch order (prefix sums, copied in parallel): the same arrays for
 // any thread count.
 PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
-                              const SubdivisionOptions& sub, int threads, PassMemo& memo,
+                              const SubdivisionOptions& sub, double D, int threads, PassMemo& memo,
                               PatchTrees& trees, std::vector<Subpatch>& subpatches) {
     std::vector<Part>& parts = memo.parts;
     const int np = static_cast<int>(patches.size());
-    parallel_chunks(np, threads, [&](int begin, int end) {
+    // Patches differ in cost by ten times and more (teapot): dearest first.
+    std::vector<double> cost(np);
+    std::vector<int> order(np);
+    for (int i = 0; i < np; ++i) cost[i] = patch_cost(patches[i], D), order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+    pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             if (!memo.changed[i]) continue;
             SubdivisionOptions o = sub;
@@ -208,6 +260,77 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
     return at;
 }
 
+// Vertices numbered as first met in subpatch order, each ring then its
+// centre, as vertex_of numbers them one by one, where every vertex is its
+// exact point (no straight segments: no vertex places another). In parallel:
+// the keys; the first uses of each patch's interior points (they belong to
+// that patch alone, and its subpatches are consecutive); the ids by a prefix
+// sum over the subpatches' new vertices; the positions. In one pass: the first
+// uses of the patch-boundary points, a small share of the slots.
+void number_vertices(const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
+                     const EdgeGraph& graph, const std::vector<int>& ring_start,
+                     const std::vector<Vec3>& centre_point, int threads, VertexRegistry& vr,
+                     std::vector<RingVertex>& rings, std::vector<int>& centres) {
+    const int count = static_cast<int>(subpatches.size());
+    const int np = static_cast<int>(leaf_start.size()) - 1;
+    std::vector<VertexKey> key(rings.size());
+    std::vector<int> first(rings.size()); // the slot of the key's first use
+    pull_blocks(count, kGrain, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) {
+                const RingVertex& v = rings[j];
+                key[j] = canonical_key(
+                    vr, v.foreign >= 0 ? graph.points[v.foreign].key
+                                       : vertex_key(*vr.match, subpatches[i].patch, v.s, v.t));
+            }
+    });
+    const auto interior = [&](int j, int patch) { return key[j].kind == 2 && key[j].id == patch; };
+    pull_blocks(np, 1, threads, nullptr, [&](int begin, int end) {
+        std::unordered_map<std::uint64_t, int> seen; // (s, t) -> first slot
+        for (int p = begin; p < end; ++p) {
+            seen.clear();
+            for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j) {
+                if (!interior(j, p)) continue;
+                const std::uint64_t st = (static_cast<std::uint64_t>(key[j].a) << 32) |
+                                         static_cast<std::uint32_t>(key[j].b);
+                first[j] = seen.try_emplace(st, j).first->second;
+            }
+        }
+    });
+    std::unordered_map<VertexKey, int, VertexKeyHash> shared;
+    for (int p = 0; p < np; ++p)
+        for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j)
+            if (!interior(j, p)) first[j] = shared.try_emplace(key[j], j).first->second;
+    std::vector<int> base(count + 1, 0);
+    pull_blocks(count, kGrain, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            int fresh = 1; // the centre
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) fresh += first[j] == j;
+            base[i + 1] = fresh;
+        }
+    });
+    for (int i = 0; i < count; ++i) base[i + 1] += base[i];
+    vr.positions.resize(base[count]);
+    vr.placed.assign(base[count], 1);
+    pull_blocks(count, kGrain, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            int id = base[i];
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                if (first[j] == j) {
+                    rings[j].vertex = id;
+                    vr.positions[id++] = exact_position(*vr.patches, *vr.match, key[j]);
+                }
+            centres[i] = id;
+            vr.positions[id] = centre_point[i];
+        }
+    });
+    pull_blocks(count, kGrain, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                if (first[j] != j) rings[j].vertex = rings[first[j]].vertex;
+    });
+}
+
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
                              const TessellationOptions& options,
                              const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
@@ -240,8 +363,9 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     sub.angle = options.angle;
     sub.max_depth = options.max_depth;
     sub.split = &split;
+    const double D = st.tolerance > 0 ? st.tolerance : st.eps1 > 0 ? st.eps1 : 1e-3 * st.d_max;
     const PatchRanges ranges =
-        subdivide_patches(patches, sub, options.threads, memo, out.trees, out.subpatches);
+        subdivide_patches(patches, sub, D, options.threads, memo, out.trees, out.subpatches);
     phase.subdivision += lap();
 
     // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
@@ -278,19 +402,11 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     // (d) Fans: each planar subpatch from its centre over its ring.
     TriangleMesh& mesh = out.mesh;
     for (const BSplineSurface& s : model.surfaces) mesh.surface_names.push_back(s.name);
-    // A fan has four triangles plus one per finer neighbour's vertex on its
-    // sides, rarely more than eight on average. Reserving avoids the copies
-    // (and page faults) of growing these large arrays; untouched reserve costs
-    // no memory.
-    const size_t expected = 8 * out.subpatches.size();
-    vr.positions.reserve(2 * out.subpatches.size() + expected / 4);
-    vr.placed.reserve(2 * out.subpatches.size() + expected / 4);
-    vr.index.reserve(out.subpatches.size() + expected / 8);
     // (d0) Each subpatch's ring and centre point on its own, in parallel.
     const size_t count = out.subpatches.size();
     std::vector<std::vector<RingVertex>> ring_of(count);
     std::vector<Vec3> centre_point(count);
-    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+    pull_blocks(static_cast<int>(count), kGrain, options.threads, nullptr, [&](int begin, int end) {
         std::vector<int> scratch;
         std::vector<Inside> inside;
         for (int i = begin; i < end; ++i) {
@@ -304,22 +420,40 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         }
     });
     phase.rings += lap();
-    // (d1) Their vertices, in subpatch order (vertices are numbered as they
-    // are first met, so this stays sequential).
-    std::vector<RingVertex> rings;
+    // (d1) Their vertices, numbered as first met in subpatch order (each ring,
+    // then its centre). The rings laid end to end by a prefix sum.
     std::vector<int> ring_start(count + 1, 0), centres(count);
-    rings.reserve(expected);
-    for (size_t i = 0; i < count; ++i) {
-        const Subpatch& sp = out.subpatches[i];
-        for (RingVertex& v : ring_of[i]) {
-            v.vertex = v.foreign >= 0 ? vertex_of(vr, graph.points[v.foreign].key)
-                                      : vertex_at(vr, sp.patch, v.s, v.t);
-            rings.push_back(v);
+    for (size_t i = 0; i < count; ++i)
+        ring_start[i + 1] = ring_start[i] + static_cast<int>(ring_of[i].size());
+    std::vector<RingVertex> rings(ring_start[count]);
+    pull_blocks(static_cast<int>(count), kGrain, options.threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            std::copy(ring_of[i].begin(), ring_of[i].end(), rings.begin() + ring_start[i]);
+            std::vector<RingVertex>().swap(ring_of[i]);
         }
-        ring_start[i + 1] = static_cast<int>(rings.size());
-        centres[i] = static_cast<int>(vr.positions.size());
-        vr.positions.push_back(centre_point[i]);
-        vr.placed.push_back(1);
+    });
+    if (vr.crack_free && vr.straight_segments) {
+        // A vertex on a straight segment places the segment's ends first:
+        // one by one.
+        // About three vertices per subpatch: reserving avoids the copies of
+        // growing these arrays.
+        vr.positions.reserve(3 * count);
+        vr.placed.reserve(3 * count);
+        vr.index.reserve(2 * count);
+        for (size_t i = 0; i < count; ++i) {
+            const Subpatch& sp = out.subpatches[i];
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) {
+                RingVertex& v = rings[j];
+                v.vertex = v.foreign >= 0 ? vertex_of(vr, graph.points[v.foreign].key)
+                                          : vertex_at(vr, sp.patch, v.s, v.t);
+            }
+            centres[i] = static_cast<int>(vr.positions.size());
+            vr.positions.push_back(centre_point[i]);
+            vr.placed.push_back(1);
+        }
+    } else {
+        number_vertices(out.subpatches, ranges.leaf_start, graph, ring_start, centre_point,
+                        options.threads, vr, rings, centres);
     }
     phase.numbering += lap();
 
@@ -332,7 +466,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         st.max_error_bound = std::numeric_limits<double>::quiet_NaN();
     }
     const int certified = certify ? static_cast<int>(count) : 0;
-    parallel_chunks(certified, options.threads, [&](int begin, int end) {
+    pull_blocks(certified, kGrain, options.threads, nullptr, [&](int begin, int end) {
         std::vector<RingPoint> fan;
         for (int i = begin; i < end; ++i) {
             Subpatch& sp = out.subpatches[i];
@@ -384,7 +518,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
 
     // (d3) Normals at the fans' vertices, in parallel.
     std::vector<Vec3> ring_normals(rings.size()), centre_normals(count);
-    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+    pull_blocks(static_cast<int>(count), kGrain, options.threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             const Subpatch& sp = out.subpatches[i];
             const BezierPatch& b = patches[sp.patch];
@@ -400,7 +534,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     // (d4) Fan triangles in subpatch order; none where two ring vertices are
     // one (a pole). Counted per subpatch, placed by prefix sums, written in
     // parallel: the same arrays for any thread count.
-    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+    pull_blocks(static_cast<int>(count), kGrain, options.threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             const int first = ring_start[i], n = ring_start[i + 1] - first;
             int c = 0;
@@ -426,7 +560,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     mesh.corner_uvs.resize(triangles);
     out.trees.nodes.resize(fan_node[count]);
     std::vector<int> added(count);
-    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+    pull_blocks(static_cast<int>(count), kGrain, options.threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             const Subpatch& sp = out.subpatches[i];
             const BezierPatch& b = patches[sp.patch];
@@ -461,7 +595,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         for (int v : mesh.triangles[f]) bb.extend(mesh.positions[v]);
         return bb;
     };
-    parallel_chunks(static_cast<int>(count), options.threads, [&](int begin, int end) {
+    pull_blocks(static_cast<int>(count), kGrain, options.threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i)
             update_triangle_hulls(out.trees, fan_node[i], fan_node[i + 1], triangle_box);
     });
