@@ -68,11 +68,12 @@ struct TessellationOptions {
     bool certify = true;
 };
 
-// Wall-clock seconds of the phases of tessellate(), summed over the passes:
-// which run in parallel (subdivision, rings, bounds, normals) and which on
-// one thread (boundaries: shared edges, edge registry and graph; numbering:
-// vertices in subpatch order; fans: triangles and patch-tree leaves;
-// orientation; scaling: the power-of-two scale in and out).
+// Wall-clock seconds of the phases of tessellate(), summed over the passes
+// (docs/formats.md, `phase_seconds`). In parallel: subdivision, rings,
+// bounds, normals, scaling (the power-of-two scale in and out), and but for
+// prefix sums fans (triangles, patch-tree leaves, hulls), orientation and,
+// without straight segments, numbering (vertices in subpatch order); on one
+// thread: boundaries (shared edges, edge registry and graph).
 struct PhaseSeconds {
     double subdivision = 0, boundaries = 0, rings = 0, numbering = 0, bounds = 0, normals = 0,
            fans = 0, orientation = 0, scaling = 0;
