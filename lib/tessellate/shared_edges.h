@@ -79,7 +79,9 @@ struct SideOnLine {
 SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int patch,
                         const ParamRect& r, int k);
 
-EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches);
+// The same registry for any number of worker threads (parallel.h).
+EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches,
+                                 int threads = 1);
 
 // Line coordinates strictly inside (a, b) where subpatches on other sides of
 // the line have corners, ascending; appended to `out`.

@@ -378,7 +378,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     const BoundaryMatch match = match_boundaries(patches, st.seam_tolerance);
     st.shared_edges = match.shared_edges;
     st.collapsed_edges = match.collapsed_edges;
-    const EdgeRegistry reg = build_edge_registry(match, out.subpatches);
+    const EdgeRegistry reg = build_edge_registry(match, out.subpatches, options.threads);
     // (c') The rest of the boundaries by geometry: one edge graph of the model.
     const EdgeGraph graph =
         options.crack_free ? build_edge_graph(patches, match, reg, st.seam_tolerance) : EdgeGraph{};
