@@ -122,6 +122,16 @@ void add_tessellate(CLI::App& app, Action& action) {
                                   {"above_tolerance", s.above_tolerance},
                                   {"passes", s.passes},
                                   {"seconds", s.seconds}};
+                const PhaseSeconds& ph = s.phases;
+                js["phase_seconds"] = {{"subdivision", ph.subdivision},
+                                       {"boundaries", ph.boundaries},
+                                       {"rings", ph.rings},
+                                       {"numbering", ph.numbering},
+                                       {"bounds", ph.bounds},
+                                       {"normals", ph.normals},
+                                       {"fans", ph.fans},
+                                       {"orientation", ph.orientation},
+                                       {"scaling", ph.scaling}};
                 write_text_atomically(files.staging(1), js.dump(2) + "\n");
             }
             files.commit(); // both outputs, or neither

@@ -57,10 +57,13 @@ void visit_candidate_triangles(const PatchTrees& trees, BoxPred&& box_pred, Visi
     }
 }
 
-// Recomputes every triangle_hull bottom-up from the triangles' corners.
+// Recomputes the triangle_hull of nodes [begin, end) bottom-up from the
+// triangles' corners; sons outside the range must be up to date. Ranges whose
+// sons lie inside them (one patch's nodes, one fan's subtree) can be updated
+// in parallel.
 template <class TriangleBox>
-void update_triangle_hulls(PatchTrees& trees, TriangleBox&& triangle_box) {
-    for (int i = static_cast<int>(trees.nodes.size()) - 1; i >= 0; --i) {
+void update_triangle_hulls(PatchTrees& trees, int begin, int end, TriangleBox&& triangle_box) {
+    for (int i = end - 1; i >= begin; --i) {
         PatchNode& n = trees.nodes[i];
         n.triangle_hull = Box3{};
         if (n.triangle >= 0) n.triangle_hull.extend(triangle_box(n.triangle));
@@ -72,8 +75,23 @@ void update_triangle_hulls(PatchTrees& trees, TriangleBox&& triangle_box) {
     }
 }
 
+// Recomputes every triangle_hull bottom-up from the triangles' corners.
+template <class TriangleBox>
+void update_triangle_hulls(PatchTrees& trees, TriangleBox&& triangle_box) {
+    update_triangle_hulls(trees, 0, static_cast<int>(trees.nodes.size()), triangle_box);
+}
+
+// Nodes that attach_triangles adds for `count` triangles.
+constexpr int attached_nodes(int count) {
+    return count >= 2 ? 2 * count - 2 : 0;
+}
+
 // Hangs the triangles [first, first + count) below node `at` as a balanced
 // binary subtree; returns the depth added below `at`.
 int attach_triangles(PatchTrees& trees, int at, int first, int count);
+
+// Same subtree, written into the nodes [node0, node0 + attached_nodes(count))
+// that already exist (so that fans can be attached in parallel).
+int attach_triangles_at(PatchTrees& trees, int at, int first, int count, int node0);
 
 } // namespace seamless

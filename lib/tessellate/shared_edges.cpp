@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/disjoint_sets.h>
+#include <seamless/base/parallel.h>
 #include <seamless/tessellate/shared_edges.h>
 
 #include <algorithm>
@@ -76,6 +77,11 @@ SideOnLine locate_side(const BoundaryMatch& m, int patch, const ParamRect& r, in
         out.line = it->second;
     }
     return out;
+}
+
+// Side k of r lies on a patch edge (its line is a global edge, or none).
+bool on_patch_edge(const ParamRect& r, int k) {
+    return k == 0 ? r.t0 == 0 : k == 1 ? r.s1 == kParamOne : k == 2 ? r.t1 == kParamOne : r.s0 == 0;
 }
 
 // The segment of `line` holding x strictly inside, or nullptr. Sides of one
@@ -215,29 +221,68 @@ SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int pat
     return locate_side(m, patch, r, k, &reg.interior_line, nullptr, reg.boundary_lines);
 }
 
-EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches) {
+EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches,
+                                 int threads) {
     EdgeRegistry reg;
     reg.boundary_lines = static_cast<int>(m.group_ref.size());
-    std::vector<std::pair<int, LineSegment>> all;
-    all.reserve(4 * subpatches.size());
-    for (const Subpatch& sp : subpatches)
-        for (int k = 0; k < 4; ++k) {
-            const SideOnLine s = locate_side(m, sp.patch, sp.rect, k, nullptr, &reg.interior_line,
-                                             reg.boundary_lines);
-            if (s.line >= 0) all.push_back({s.line, LineSegment{s.a, s.b, s.side}});
+    // Interior lines are numbered as first met in subpatch order. A patch's
+    // lines are its own: each run of one patch's subpatches numbers its lines
+    // on its own (in parallel), the runs' new lines then get global numbers
+    // in run order (a patch met again in a later run finds its lines known).
+    const int n = static_cast<int>(subpatches.size());
+    std::vector<int> run_start{0};
+    for (int i = 1; i <= n; ++i)
+        if (i == n || subpatches[i].patch != subpatches[i - 1].patch) run_start.push_back(i);
+    const int runs = static_cast<int>(run_start.size()) - 1;
+    std::vector<SideOnLine> sides(4 * static_cast<size_t>(n)); // line: local, or boundary
+    std::vector<std::vector<std::uint64_t>> run_keys(std::max(runs, 0));
+    parallel_chunks(runs, threads, [&](int begin, int end) {
+        std::unordered_map<std::uint64_t, int> local;
+        for (int r = begin; r < end; ++r) {
+            local.clear();
+            for (int i = run_start[r]; i < run_start[r + 1]; ++i)
+                for (int k = 0; k < 4; ++k)
+                    sides[4 * i + k] = locate_side(m, subpatches[i].patch, subpatches[i].rect, k,
+                                                   nullptr, &local, 0);
+            run_keys[r].resize(local.size());
+            for (const auto& [key, id] : local) run_keys[r][id] = key;
         }
+    });
+    std::vector<std::vector<int>> run_lines(std::max(runs, 0));
+    for (int r = 0; r < runs; ++r)
+        for (std::uint64_t key : run_keys[r])
+            run_lines[r].push_back(
+                reg.interior_line
+                    .try_emplace(key,
+                                 reg.boundary_lines + static_cast<int>(reg.interior_line.size()))
+                    .first->second);
+    parallel_chunks(runs, threads, [&](int begin, int end) {
+        for (int r = begin; r < end; ++r)
+            for (int i = run_start[r]; i < run_start[r + 1]; ++i)
+                for (int k = 0; k < 4; ++k) {
+                    SideOnLine& side = sides[4 * i + k];
+                    if (side.line >= 0 && !on_patch_edge(subpatches[i].rect, k))
+                        side.line = run_lines[r][side.line];
+                }
+    });
     const int lines = reg.boundary_lines + static_cast<int>(reg.interior_line.size());
     reg.offsets.assign(lines + 1, 0);
-    for (const auto& [line, seg] : all) ++reg.offsets[line + 1];
+    for (const SideOnLine& side : sides)
+        if (side.line >= 0) ++reg.offsets[side.line + 1];
     for (int l = 0; l < lines; ++l) reg.offsets[l + 1] += reg.offsets[l];
-    reg.segments.resize(all.size());
+    reg.segments.resize(reg.offsets[lines]);
     std::vector<int> fill(reg.offsets.begin(), reg.offsets.end() - 1);
-    for (const auto& [line, seg] : all) reg.segments[fill[line]++] = seg;
-    for (int l = 0; l < lines; ++l)
-        std::sort(reg.segments.begin() + reg.offsets[l], reg.segments.begin() + reg.offsets[l + 1],
-                  [](const LineSegment& x, const LineSegment& y) {
-                      return x.side != y.side ? x.side < y.side : x.a < y.a;
-                  });
+    for (const SideOnLine& side : sides)
+        if (side.line >= 0)
+            reg.segments[fill[side.line]++] = LineSegment{side.a, side.b, side.side};
+    parallel_chunks(lines, threads, [&](int begin, int end) {
+        for (int l = begin; l < end; ++l)
+            std::sort(reg.segments.begin() + reg.offsets[l],
+                      reg.segments.begin() + reg.offsets[l + 1],
+                      [](const LineSegment& x, const LineSegment& y) {
+                          return x.side != y.side ? x.side < y.side : x.a < y.a;
+                      });
+    });
     return reg;
 }
 
@@ -292,15 +337,76 @@ VertexKey vertex_key(const BoundaryMatch& m, int patch, int s, int t) {
     return {1, m.edge_group[pe], m.edge_reversed[pe] ? N - x : x, 0};
 }
 
+Vec3 exact_position(const std::vector<BezierPatch>& patches, const BoundaryMatch& m,
+                    VertexKey key) {
+    if (key.kind == 0) return patches[key.id / 4].corner(key.id % 4);
+    if (key.kind == 1) {
+        // Also every seam vertex (edge_graph.h): its line has one side only.
+        const int ref = m.group_ref[key.id];
+        int gs = 0, gt = 0;
+        edge_grid_point(ref % 4, key.a, gs, gt);
+        return evaluate(patches[ref / 4], param_of(gs), param_of(gt)).point;
+    }
+    return evaluate(patches[key.id], param_of(key.a), param_of(key.b)).point;
+}
+
+VertexKey canonical_key(const VertexRegistry& vr, VertexKey key) {
+    if (vr.alias && !vr.alias->empty()) {
+        auto a = vr.alias->find(key);
+        if (a != vr.alias->end()) return a->second;
+    }
+    return key;
+}
+
 int vertex_at(VertexRegistry& vr, int patch, int s, int t) {
     return vertex_of(vr, vertex_key(*vr.match, patch, s, t));
 }
 
-int vertex_of(VertexRegistry& vr, VertexKey key) {
-    if (vr.alias && !vr.alias->empty()) {
-        auto a = vr.alias->find(key);
-        if (a != vr.alias->end()) key = a->second;
+namespace {
+
+// Crack-free with straight segments: the point on the straight segment of
+// the subpatch side holding `key` strictly inside (Fig. 3, Q0 = (Q1 + Q2) / 2
+// recursively), placing the segment's ends first; false when no side holds it.
+bool straight_point(VertexRegistry& vr, VertexKey key, Vec3& p) {
+    if (!vr.crack_free || !vr.straight_segments) return false;
+    if (key.kind == 1) {
+        // A point of global edge g, on the reference patch's side.
+        const LineSegment* seg = containing(*vr.edges, key.id, key.a);
+        if (!seg) return false;
+        const int ref = vr.match->group_ref[key.id];
+        int gs = 0, gt = 0;
+        edge_grid_point(ref % 4, seg->a, gs, gt);
+        const int ia = vertex_at(vr, ref / 4, gs, gt);
+        edge_grid_point(ref % 4, seg->b, gs, gt);
+        const int ib = vertex_at(vr, ref / 4, gs, gt);
+        p = lerp(vr.positions[ia], vr.positions[ib],
+                 static_cast<double>(key.a - seg->a) / (seg->b - seg->a));
+        return true;
     }
+    if (key.kind != 2) return false;
+    const int patch = key.id, s = key.a, t = key.b;
+    // At most one subpatch side holds a grid point strictly inside.
+    const LineSegment* seg = nullptr;
+    bool along_s = true;
+    const int h = find_interior_line(*vr.edges, patch, 0, t);
+    if (h >= 0) seg = containing(*vr.edges, h, s);
+    if (!seg) {
+        const int v = find_interior_line(*vr.edges, patch, 1, s);
+        if (v >= 0) seg = containing(*vr.edges, v, t), along_s = false;
+    }
+    if (!seg) return false;
+    const int ia = along_s ? vertex_at(vr, patch, seg->a, t) : vertex_at(vr, patch, s, seg->a);
+    const int ib = along_s ? vertex_at(vr, patch, seg->b, t) : vertex_at(vr, patch, s, seg->b);
+    const int x = along_s ? s : t;
+    p = lerp(vr.positions[ia], vr.positions[ib],
+             static_cast<double>(x - seg->a) / (seg->b - seg->a));
+    return true;
+}
+
+} // namespace
+
+int vertex_of(VertexRegistry& vr, VertexKey key) {
+    key = canonical_key(vr, key);
     auto [it, fresh] = vr.index.try_emplace(key, static_cast<int>(vr.positions.size()));
     const int id = it->second;
     if (!fresh) {
@@ -309,55 +415,8 @@ int vertex_of(VertexRegistry& vr, VertexKey key) {
     }
     vr.positions.emplace_back();
     vr.placed.push_back(0);
-    const std::vector<BezierPatch>& patches = *vr.patches;
     Vec3 p;
-    if (key.kind == 0) {
-        p = patches[key.id / 4].corner(key.id % 4);
-    } else if (key.kind == 1) {
-        // A point of global edge g: on the straight segment of the subpatch
-        // side holding it (Fig. 3, Q0 = (Q1 + Q2) / 2 recursively), else the
-        // curve point of the reference patch.
-        const int ref = vr.match->group_ref[key.id];
-        const LineSegment* seg =
-            vr.crack_free && vr.straight_segments ? containing(*vr.edges, key.id, key.a) : nullptr;
-        int gs = 0, gt = 0;
-        if (seg) {
-            edge_grid_point(ref % 4, seg->a, gs, gt);
-            const int ia = vertex_at(vr, ref / 4, gs, gt);
-            edge_grid_point(ref % 4, seg->b, gs, gt);
-            const int ib = vertex_at(vr, ref / 4, gs, gt);
-            p = lerp(vr.positions[ia], vr.positions[ib],
-                     static_cast<double>(key.a - seg->a) / (seg->b - seg->a));
-        } else {
-            // Also every seam vertex (edge_graph.h): its line has one side only.
-            edge_grid_point(ref % 4, key.a, gs, gt);
-            p = evaluate(patches[ref / 4], param_of(gs), param_of(gt)).point;
-        }
-    } else {
-        const int patch = key.id, s = key.a, t = key.b;
-        const LineSegment* seg = nullptr;
-        bool along_s = true;
-        if (vr.crack_free && vr.straight_segments) {
-            // At most one subpatch side holds a grid point strictly inside.
-            const int h = find_interior_line(*vr.edges, patch, 0, t);
-            if (h >= 0) seg = containing(*vr.edges, h, s);
-            if (!seg) {
-                const int v = find_interior_line(*vr.edges, patch, 1, s);
-                if (v >= 0) seg = containing(*vr.edges, v, t), along_s = false;
-            }
-        }
-        if (seg) {
-            const int ia =
-                along_s ? vertex_at(vr, patch, seg->a, t) : vertex_at(vr, patch, s, seg->a);
-            const int ib =
-                along_s ? vertex_at(vr, patch, seg->b, t) : vertex_at(vr, patch, s, seg->b);
-            const int x = along_s ? s : t;
-            p = lerp(vr.positions[ia], vr.positions[ib],
-                     static_cast<double>(x - seg->a) / (seg->b - seg->a));
-        } else {
-            p = evaluate(patches[patch], param_of(s), param_of(t)).point;
-        }
-    }
+    if (!straight_point(vr, key, p)) p = exact_position(*vr.patches, *vr.match, key);
     vr.positions[id] = p;
     vr.placed[id] = 1;
     return id;

@@ -79,7 +79,9 @@ struct SideOnLine {
 SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int patch,
                         const ParamRect& r, int k);
 
-EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches);
+// The same registry for any number of worker threads (parallel.h).
+EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches,
+                                 int threads = 1);
 
 // Line coordinates strictly inside (a, b) where subpatches on other sides of
 // the line have corners, ascending; appended to `out`.
@@ -127,6 +129,12 @@ struct VertexRegistry {
     std::vector<Vec3> positions;
     std::vector<char> placed; // position computed (guards the recursion)
 };
+
+// The exact surface or curve point of a key: a corner, the reference patch's
+// edge point, an interior surface point (no straight segments).
+Vec3 exact_position(const std::vector<BezierPatch>& patches, const BoundaryMatch& m, VertexKey key);
+// The key every alias of `key` is numbered under (itself when it has none).
+VertexKey canonical_key(const VertexRegistry& vr, VertexKey key);
 
 // Index of the vertex at grid point (s, t) of `patch`, placing it on first use.
 int vertex_at(VertexRegistry& vr, int patch, int s, int t);

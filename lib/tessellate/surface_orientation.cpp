@@ -1,21 +1,14 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/base/disjoint_sets.h>
+#include <seamless/base/parallel.h>
 #include <seamless/tessellate/surface_orientation.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <unordered_map>
+#include <map>
+#include <mutex>
 
 namespace seamless {
 namespace {
-
-struct EdgeUse {
-    int surface = -1, count = 0;
-    bool forward = false; // the first use runs from the smaller vertex index
-    bool mixed = false;   // used by more than one other surface or more than twice
-    int other = -1;
-    bool other_forward = false;
-};
 
 // Union-find with parity: flip(x) = parity(x) xor flip(root).
 struct ParitySets {
@@ -65,51 +58,89 @@ void flip_triangle(TriangleMesh& m, size_t f) {
     if (f < m.corner_uvs.size()) std::swap(m.corner_uvs[f][1], m.corner_uvs[f][2]);
 }
 
+// The directed uses of every undirected edge, bucketed by the smaller vertex
+// (CSR, in triangle order within a bucket): flat arrays, no hashing.
+struct EdgeUses {
+    std::vector<int> start; // per vertex into `uses`
+    struct Use {
+        int hi = 0, surface = 0;
+        bool forward = false; // runs from the smaller vertex index
+    };
+    std::vector<Use> uses;
+};
+
+EdgeUses edge_uses(const TriangleMesh& mesh) {
+    EdgeUses e;
+    e.start.assign(mesh.positions.size() + 1, 0);
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const int a = t[k], b = t[(k + 1) % 3];
+            if (a != b) ++e.start[std::min(a, b) + 1];
+        }
+    for (size_t v = 1; v < e.start.size(); ++v) e.start[v] += e.start[v - 1];
+    e.uses.resize(e.start.back());
+    std::vector<int> fill(e.start.begin(), e.start.end() - 1);
+    for (size_t f = 0; f < mesh.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+            if (a != b)
+                e.uses[fill[std::min(a, b)]++] = {std::max(a, b), mesh.triangle_surface[f], a < b};
+        }
+    return e;
+}
+
 } // namespace
 
-OrientationResult orient_surfaces(TriangleMesh& mesh) {
+OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
     OrientationResult out;
     const int ns = static_cast<int>(mesh.surface_names.size());
     if (ns < 1 || mesh.triangle_surface.size() != mesh.triangles.size()) return out;
 
-    // Directed uses of every undirected edge.
-    std::unordered_map<std::uint64_t, EdgeUse> edges;
-    edges.reserve(2 * mesh.triangles.size());
-    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-        const int s = mesh.triangle_surface[f];
-        for (int k = 0; k < 3; ++k) {
-            const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-            if (a == b) continue;
-            const auto key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
-                             static_cast<std::uint32_t>(std::max(a, b));
-            EdgeUse& e = edges[key];
-            if (e.count == 0) {
-                e.surface = s;
-                e.forward = a < b;
-            } else if (e.count == 1 && s != e.surface) {
-                e.other = s;
-                e.other_forward = a < b;
-            } else if (e.count >= 1) {
-                e.mixed = e.mixed || e.count >= 2 || s != e.surface;
+    // Votes per surface pair: an edge used twice, by two surfaces, votes for
+    // keeping both (opposite directions) or flipping one (equal directions).
+    // Surfaces with an edge used once or more than twice are open. The
+    // buckets are independent: counted in parallel, summed (order-free).
+    const EdgeUses e = edge_uses(mesh);
+    std::map<std::uint64_t, std::array<int, 2>> votes;
+    std::vector<char> open_surface(ns, 0);
+    std::mutex merge;
+    parallel_chunks(static_cast<int>(e.start.size()) - 1, threads, [&](int begin, int end) {
+        std::map<std::uint64_t, std::array<int, 2>> my_votes;
+        std::vector<int> my_open;
+        for (int v = begin; v < end; ++v) {
+            const EdgeUses::Use* first = e.uses.data() + e.start[v];
+            const EdgeUses::Use* last = e.uses.data() + e.start[v + 1];
+            for (const EdgeUses::Use* u = first; u != last; ++u) {
+                // The first use of its edge in this bucket (triangle order).
+                bool seen = false;
+                for (const EdgeUses::Use* w = first; w != u && !seen; ++w) seen = w->hi == u->hi;
+                if (seen) continue;
+                int count = 0;
+                const EdgeUses::Use* other = nullptr;
+                for (const EdgeUses::Use* w = u; w != last; ++w)
+                    if (w->hi == u->hi && ++count == 2) other = w;
+                if (count != 2) {
+                    my_open.push_back(u->surface);
+                } else if (other->surface != u->surface) {
+                    const int a = std::min(u->surface, other->surface);
+                    const int b = std::max(u->surface, other->surface);
+                    const auto pair =
+                        (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+                    ++my_votes[pair][u->forward == other->forward ? 1 : 0];
+                }
             }
-            ++e.count;
         }
-    }
-
-    // Votes per surface pair: opposite directions keep both, equal directions
-    // flip one. Majority decides; a pair with votes both ways is a conflict.
-    std::unordered_map<std::uint64_t, std::array<int, 2>> votes;
-    for (const auto& [key, e] : edges) {
-        if (e.count != 2 || e.mixed || e.other < 0) continue;
-        const int a = std::min(e.surface, e.other), b = std::max(e.surface, e.other);
-        const auto pair = (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-        ++votes[pair][e.forward == e.other_forward ? 1 : 0];
-    }
-    std::vector<std::pair<std::uint64_t, std::array<int, 2>>> ordered(votes.begin(), votes.end());
-    std::sort(ordered.begin(), ordered.end(),
-              [](const auto& x, const auto& y) { return x.first < y.first; });
+        const std::lock_guard<std::mutex> lock(merge);
+        for (const auto& [pair, v] : my_votes) {
+            votes[pair][0] += v[0];
+            votes[pair][1] += v[1];
+        }
+        for (int s : my_open) open_surface[s] = 1;
+    });
+    // Majority decides, pairs in ascending order; a pair with votes both ways
+    // is a conflict.
     ParitySets sets(ns);
-    for (const auto& [pair, v] : ordered) {
+    for (const auto& [pair, v] : votes) {
         if (v[0] != 0 && v[1] != 0) ++out.conflicts;
         const char rel = v[1] > v[0] ? 1 : 0;
         if (!sets.unite(static_cast<int>(pair >> 32), static_cast<int>(pair & 0xffffffffu), rel))
@@ -133,8 +164,8 @@ OrientationResult orient_surfaces(TriangleMesh& mesh) {
     for (int s = 0; s < ns; ++s)
         if (root[s] == s) flip_root[s] = keep[s] < 0;
     std::vector<char> open(ns, 0);
-    for (const auto& [key, e] : edges)
-        if (e.count != 2 || e.mixed) open[root[e.surface]] = 1;
+    for (int s = 0; s < ns; ++s)
+        if (open_surface[s]) open[root[s]] = 1;
     std::vector<double> volume(ns, 0);
     for (size_t f = 0; f < mesh.triangles.size(); ++f) {
         const int s = mesh.triangle_surface[f];
@@ -152,8 +183,10 @@ OrientationResult orient_surfaces(TriangleMesh& mesh) {
         flip[s] = parity[s] ^ flip_root[root[s]];
         out.flipped_surfaces += flip[s];
     }
-    for (size_t f = 0; f < mesh.triangles.size(); ++f)
-        if (flip[mesh.triangle_surface[f]]) flip_triangle(mesh, f);
+    parallel_chunks(mesh.triangle_count(), threads, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f)
+            if (flip[mesh.triangle_surface[f]]) flip_triangle(mesh, f);
+    });
     return out;
 }
 

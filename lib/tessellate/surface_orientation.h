@@ -20,7 +20,8 @@ struct OrientationResult {
 };
 
 // Flips whole surfaces (triangle_surface) of `mesh`: triangle windings,
-// corner normals and corner uvs. Needs triangle_surface; deterministic.
-OrientationResult orient_surfaces(TriangleMesh& mesh);
+// corner normals and corner uvs. Needs triangle_surface; deterministic, the
+// same for any number of worker threads (parallel.h: 0 every core, 1 sequential).
+OrientationResult orient_surfaces(TriangleMesh& mesh, int threads = 1);
 
 } // namespace seamless

@@ -68,6 +68,17 @@ struct TessellationOptions {
     bool certify = true;
 };
 
+// Wall-clock seconds of the phases of tessellate(), summed over the passes
+// (docs/formats.md, `phase_seconds`). In parallel: subdivision, rings,
+// bounds, normals, scaling (the power-of-two scale in and out), and but for
+// prefix sums fans (triangles, patch-tree leaves, hulls), orientation and,
+// without straight segments, numbering (vertices in subpatch order); on one
+// thread: boundaries (shared edges, edge registry and graph).
+struct PhaseSeconds {
+    double subdivision = 0, boundaries = 0, rings = 0, numbering = 0, bounds = 0, normals = 0,
+           fans = 0, orientation = 0, scaling = 0;
+};
+
 struct TessellationStats {
     int surfaces = 0, patches = 0, subpatches = 0, triangles = 0, vertices = 0;
     int shared_edges = 0, collapsed_edges = 0;
@@ -88,6 +99,7 @@ struct TessellationStats {
     int above_tolerance = 0;
     int passes = 1; // tessellation passes (a tolerance may need more than one)
     double seconds = 0;
+    PhaseSeconds phases;
 };
 
 struct Tessellation {

@@ -40,6 +40,10 @@ TEST_CASE("seamless tessellate writes a mesh and --stats JSON", "[cli]") {
     CHECK(js.at("eps2").get<double>() == 0.01);
     CHECK(js.at("max_error_bound").get<double>() == t.stats.max_error_bound);
     CHECK(js.at("seconds").get<double>() >= 0);
+    // The phases' seconds (docs/formats.md), one field each.
+    for (const char* phase : {"subdivision", "boundaries", "rings", "numbering", "bounds",
+                              "normals", "fans", "orientation", "scaling"})
+        CHECK(js.at("phase_seconds").at(phase).get<double>() >= 0);
 }
 
 TEST_CASE("seamless tessellate rejects a missing model with status 2", "[cli]") {
