@@ -27,12 +27,13 @@
 namespace seamless {
 
 // The next representable double above x (x itself for +inf and NaN).
+// Without branches on the sign: x + 0 turns -0 into +0 (round to nearest),
+// whose successor is denorm_min; then one ulp up is +1 on the bits of a
+// non-negative x and -1 on those of a negative one (-inf gives -max).
 inline double next_up(double x) {
     if (!(x < std::numeric_limits<double>::infinity())) return x; // +inf or NaN
-    if (x == 0) return std::numeric_limits<double>::denorm_min();
-    auto b = std::bit_cast<std::uint64_t>(x);
-    b = x > 0 ? b + 1 : b - 1;
-    return std::bit_cast<double>(b);
+    const auto b = std::bit_cast<std::int64_t>(x + 0.0);
+    return std::bit_cast<double>(b + ((b >> 63) | 1));
 }
 // The next representable double below x (x itself for -inf and NaN).
 inline double next_down(double x) {
@@ -108,9 +109,10 @@ class Interval {
     friend constexpr Interval operator-(Interval a) { return {-a.hi_, -a.lo_}; }
     friend Interval operator*(Interval a, Interval b) {
         // Sign cases (paper section 2, remark 2: most products need two real
-        // multiplications); bounds with infinities take the general path below.
+        // multiplications); bounds with infinities (and empty or NaN bounds)
+        // take the general path, out of line so that this part inlines.
         constexpr double big = std::numeric_limits<double>::max();
-        if (a.lo_ >= -big && a.hi_ <= big && b.lo_ >= -big && b.hi_ <= big) {
+        if (a.lo_ >= -big && a.hi_ <= big && b.lo_ >= -big && b.hi_ <= big) [[likely]] {
             if (a.lo_ >= 0) {
                 if (b.lo_ >= 0) return {next_down(a.lo_ * b.lo_), next_up(a.hi_ * b.hi_)};
                 if (b.hi_ <= 0) return {next_down(a.hi_ * b.lo_), next_up(a.lo_ * b.hi_)};
@@ -126,22 +128,16 @@ class Interval {
             return {next_down(std::min(a.lo_ * b.hi_, a.hi_ * b.lo_)),
                     next_up(std::max(a.lo_ * b.lo_, a.hi_ * b.hi_))};
         }
-        if (a.is_thin() && a.lo_ == 0) return Interval(0); // 0 * anything finite or not
-        if (b.is_thin() && b.lo_ == 0) return Interval(0);
-        double p1 = a.lo_ * b.lo_, p2 = a.lo_ * b.hi_, p3 = a.hi_ * b.lo_, p4 = a.hi_ * b.hi_;
-        double l = std::min(std::min(p1, p2), std::min(p3, p4));
-        double h = std::max(std::max(p1, p2), std::max(p3, p4));
-        if (std::isnan(l) || std::isnan(h)) return entire(); // 0 * inf inside a bound
-        return {next_down(l), next_up(h)};
+        return unbounded_product(a, b);
     }
     // Division (paper section 2, remark 1): defined when 0 is not in b; otherwise
     // the result is the entire line (use divide_intersect for the extended form).
     friend Interval operator/(Interval a, Interval b) {
         if (b.lo_ <= 0 && b.hi_ >= 0) return entire();
         double q1 = a.lo_ / b.lo_, q2 = a.lo_ / b.hi_, q3 = a.hi_ / b.lo_, q4 = a.hi_ / b.hi_;
+        if (std::isnan(q1 + q2 + q3 + q4)) return unbounded_quotient(a, b); // NaN or inf - inf
         double l = std::min(std::min(q1, q2), std::min(q3, q4));
         double h = std::max(std::max(q1, q2), std::max(q3, q4));
-        if (std::isnan(l) || std::isnan(h)) return entire();
         return {next_down(l), next_up(h)};
     }
     Interval& operator+=(Interval b) { return *this = *this + b; }
@@ -154,6 +150,36 @@ class Interval {
     }
 
   private:
+    // The product where a bound is infinite (or NaN): all four products of
+    // bounds, where a zero bound times an infinite one counts as 0 (the
+    // interval holds the real 0, and 0 times any real of the other is 0; an
+    // infinite bound stands for arbitrarily large reals, not for a value).
+    [[gnu::noinline]] static Interval unbounded_product(Interval a, Interval b) {
+        if (std::isnan(a.lo_) || std::isnan(a.hi_) || std::isnan(b.lo_) || std::isnan(b.hi_))
+            return entire();
+        if (a.is_thin() && a.lo_ == 0) return Interval(0); // 0 * anything finite or not
+        if (b.is_thin() && b.lo_ == 0) return Interval(0);
+        auto times = [](double x, double y) { return x == 0 || y == 0 ? 0.0 : x * y; };
+        double p1 = times(a.lo_, b.lo_), p2 = times(a.lo_, b.hi_), p3 = times(a.hi_, b.lo_),
+               p4 = times(a.hi_, b.hi_);
+        return {next_down(std::min(std::min(p1, p2), std::min(p3, p4))),
+                next_up(std::max(std::max(p1, p2), std::max(p3, p4)))};
+    }
+
+    // The quotient where a bound is infinite (or NaN), 0 not in b: an inf / inf
+    // corner is no value and is left out (the finite corners next to it already
+    // reach 0 and infinity); std::fmin and fmax skip it where std::min would
+    // return it or not depending on the order.
+    [[gnu::noinline]] static Interval unbounded_quotient(Interval a, Interval b) {
+        if (std::isnan(a.lo_) || std::isnan(a.hi_) || std::isnan(b.lo_) || std::isnan(b.hi_))
+            return entire();
+        double q1 = a.lo_ / b.lo_, q2 = a.lo_ / b.hi_, q3 = a.hi_ / b.lo_, q4 = a.hi_ / b.hi_;
+        double l = std::fmin(std::fmin(q1, q2), std::fmin(q3, q4));
+        double h = std::fmax(std::fmax(q1, q2), std::fmax(q3, q4));
+        if (std::isnan(l) || std::isnan(h)) return entire(); // every corner inf / inf
+        return {next_down(l), next_up(h)};
+    }
+
     double lo_ = 0, hi_ = 0;
 };
 

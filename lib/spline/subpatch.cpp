@@ -45,6 +45,67 @@ void right_part(Interval* c, int n, int stride, Interval u) {
         }
 }
 
+// The same two passes on pairs (-lo, hi) of doubles, two lanes at once: with
+// the lower bound negated, both bounds round up, and next_down(x) = -next_up(-x)
+// makes every result bit for bit that of left_part and right_part above. For
+// w >= 0 and a lane x, the product's bound is w.hi x where x > 0, else w.lo x
+// (a zero x gives a zero either way, and the outward step ignores the sign of
+// zero). Only for finite coefficients below 2^1000 and finite weights in [0,1]:
+// then no product or convex combination overflows.
+using Lanes = double __attribute__((vector_size(16)));
+using LaneBits = long long __attribute__((vector_size(16)));
+
+// next_up in both lanes of finite x: x + 0 turns -0 into +0 (round to
+// nearest), then one ulp up is +1 on the bits of x >= 0 and -1 below 0.
+inline Lanes up(Lanes x) {
+    x = x + Lanes{0.0, 0.0};
+    const LaneBits neg = x < Lanes{0.0, 0.0}; // -1 where negative
+    return reinterpret_cast<Lanes>(reinterpret_cast<LaneBits>(x) + 1 + neg + neg);
+}
+inline Lanes load_negated(const Interval& c) {
+    return Lanes{-c.lo(), c.hi()};
+}
+// w x for w >= 0 given as its bounds in both lanes, rounded up.
+inline Lanes weight_up(Lanes wlo, Lanes whi, Lanes x) {
+    const LaneBits pos = x > Lanes{0.0, 0.0};
+    const Lanes w = reinterpret_cast<Lanes>((reinterpret_cast<LaneBits>(whi) & pos) |
+                                            (reinterpret_cast<LaneBits>(wlo) & ~pos));
+    return up(w * x);
+}
+
+// Left part at u1 then right part at r of one row (either pass skipped when
+// its flag is off), as left_part and right_part.
+void restrict_row_lanes(Interval* c, int n, int stride, bool left, Interval u1, bool right,
+                        Interval r) {
+    Lanes x[BezierPatch::kMaxOrder];
+    for (int i = 0; i <= n; ++i) x[i] = load_negated(c[i * stride]);
+    auto lanes = [](double d) { return Lanes{d, d}; };
+    if (left) {
+        const Interval v = intersect(Interval(1.0) - u1, Interval(0.0, 1.0));
+        const Lanes vl = lanes(v.lo()), vh = lanes(v.hi()), ul = lanes(u1.lo()),
+                    uh = lanes(u1.hi());
+        for (int k = 1; k <= n; ++k)
+            for (int i = n; i >= k; --i)
+                x[i] = up(weight_up(vl, vh, x[i - 1]) + weight_up(ul, uh, x[i]));
+    }
+    if (right) {
+        const Interval v = intersect(Interval(1.0) - r, Interval(0.0, 1.0));
+        const Lanes vl = lanes(v.lo()), vh = lanes(v.hi()), ul = lanes(r.lo()), uh = lanes(r.hi());
+        for (int k = 1; k <= n; ++k)
+            for (int i = 0; i <= n - k; ++i)
+                x[i] = up(weight_up(vl, vh, x[i]) + weight_up(ul, uh, x[i + 1]));
+    }
+    for (int i = 0; i <= n; ++i) c[i * stride] = Interval(-x[i][0], x[i][1]);
+}
+
+// Every coefficient finite with magnitude below 2^1000 (the lane passes' condition).
+bool moderate(const Interval* c, int size) {
+    double m = 0;
+    for (int k = 0; k < size; ++k)
+        m = std::max(m, std::max(std::abs(c[k].lo()), std::abs(c[k].hi())));
+    return m < 0x1p1000; // false for NaN too
+}
+
 // Calls f(row pointer, n, stride) for every row of direction dir.
 template <class F> void for_rows(Interval* c, SubpatchShape sh, int dir, F f) {
     for (int d = 0; d < sh.dim; ++d) {
@@ -77,11 +138,18 @@ void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Inte
     assert(!u0.is_empty() && !u1.is_empty());
     const bool cut_hi = !(u1.is_thin() && u1.lo() == 1);
     const bool cut_lo = !(u0.is_thin() && u0.lo() == 0);
+    if (!cut_hi && !cut_lo) return;
+    // Within [0, u1] the new lower end is at u0 / u1 (u1 >= u0 > 0 when cut).
+    const Interval r =
+        cut_lo ? intersect(cut_hi ? u0 / u1 : u0, Interval(0.0, 1.0)) : Interval(0.0);
+    if (moderate(c, sh.size()) && !r.is_empty()) {
+        for_rows(c, sh, dir, [&](Interval* row, int n, int st) {
+            restrict_row_lanes(row, n, st, cut_hi, u1, cut_lo, r);
+        });
+        return;
+    }
     if (cut_hi) for_rows(c, sh, dir, [&](Interval* r, int n, int st) { left_part(r, n, st, u1); });
     if (!cut_lo) return;
-    // Within [0, u1] the new lower end is at u0 / u1 (u1 >= u0 > 0 here).
-    Interval r = cut_hi ? u0 / u1 : u0;
-    r = intersect(r, Interval(0.0, 1.0));
     for_rows(c, sh, dir, [&](Interval* row, int n, int st) { right_part(row, n, st, r); });
 }
 
