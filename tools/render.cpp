@@ -19,12 +19,10 @@ namespace seamless::cli {
 
 // INTRACY's failed step 7-9 attempts and single pixels by cause (RenderStats::SplitCause).
 nlohmann::json split_causes_json(const RenderStats& st) {
-    static const char* const names[RenderStats::split_causes] = {
-        "none", "seam", "surfaces", "one_patch", "not_nearest", "light", "span", "surface_seam"};
     nlohmann::json j = nlohmann::json::object();
     for (int i = 0; i < RenderStats::split_causes; ++i)
-        j[names[i]] = {{"attempts_failed", st.attempts_failed[i]},
-                       {"single_pixels", st.single_pixels_by_cause[i]}};
+        j[RenderStats::split_cause_names[i]] = {{"attempts_failed", st.attempts_failed[i]},
+                                                {"single_pixels", st.single_pixels_by_cause[i]}};
     return j;
 }
 

@@ -78,6 +78,9 @@ struct RenderStats {
                       // sharing a corner with another (a seam between surfaces)
         split_causes
     };
+    // The causes' names in --stats (docs/formats.md), in the enum's order.
+    static constexpr const char* split_cause_names[split_causes] = {
+        "none", "seam", "surfaces", "one_patch", "not_nearest", "light", "span", "surface_seam"};
     std::array<long long, split_causes> attempts_failed{}, single_pixels_by_cause{};
     // Step 7 certificates of "nearest" that needed a separating plane (depths of
     // another marked patch overlapping), and SHADE step 2 lights found blocked
