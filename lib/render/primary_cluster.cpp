@@ -53,12 +53,17 @@ Interval clip_columns(const Interval* C, int n) {
         lo = std::min(lo, a);
         hi = std::max(hi, b);
     };
+    double x_lo[BezierPatch::kMaxOrder], x_hi[BezierPatch::kMaxOrder]; // i / n, enclosed
     for (int i = 0; i <= n; ++i) {
         const Interval xi = Interval(static_cast<double>(i)) / N;
-        const double xi_lo = xi.lo(), xi_hi = xi.hi();
+        x_lo[i] = xi.lo();
+        x_hi[i] = xi.hi();
+    }
+    for (int i = 0; i <= n; ++i) {
+        const double xi_lo = x_lo[i], xi_hi = x_hi[i];
         if (C[i].contains(0.0)) add(xi_lo, xi_hi);
         for (int j = i + 1; j <= n; ++j) {
-            const double xj_hi = (Interval(static_cast<double>(j)) / N).hi();
+            const double xj_hi = x_hi[j];
             for (double yi : {C[i].lo(), C[i].hi()})
                 for (double yj : {C[j].lo(), C[j].hi()}) {
                     if (!((yi > 0 && yj < 0) || (yi < 0 && yj > 0))) continue;
