@@ -2,6 +2,7 @@
 #include <seamless/render/primary_cluster.h>
 
 #include <seamless/interval/hansen_sengupta.h>
+#include <seamless/interval/lanes.h>
 
 #include <cmath>
 #include <limits>
@@ -52,12 +53,17 @@ Interval clip_columns(const Interval* C, int n) {
         lo = std::min(lo, a);
         hi = std::max(hi, b);
     };
+    double x_lo[BezierPatch::kMaxOrder], x_hi[BezierPatch::kMaxOrder]; // i / n, enclosed
     for (int i = 0; i <= n; ++i) {
         const Interval xi = Interval(static_cast<double>(i)) / N;
-        const double xi_lo = xi.lo(), xi_hi = xi.hi();
+        x_lo[i] = xi.lo();
+        x_hi[i] = xi.hi();
+    }
+    for (int i = 0; i <= n; ++i) {
+        const double xi_lo = x_lo[i], xi_hi = x_hi[i];
         if (C[i].contains(0.0)) add(xi_lo, xi_hi);
         for (int j = i + 1; j <= n; ++j) {
-            const double xj_hi = (Interval(static_cast<double>(j)) / N).hi();
+            const double xj_hi = x_hi[j];
             for (double yi : {C[i].lo(), C[i].hi()})
                 for (double yj : {C[j].lo(), C[j].hi()}) {
                     if (!((yi > 0 && yj < 0) || (yi < 0 && yj > 0))) continue;
@@ -79,10 +85,75 @@ Interval g_at(const Interval* c, SubpatchShape sh, Interval e, int k, int i, int
     return c[sh.index(k, i, j)] - e * c[sh.index(2, i, j)];
 }
 
-// Hulls of the s- and t-differences of G_k's coefficients; x and z are
-// differenced first, so e enters once. 0 along a degree-0 direction.
+// The lane forms of coefficient_hulls and difference_ranges (lanes.h): the
+// same operations in the same order on pairs (-lo, hi), so the same bits.
+void coefficient_hulls_lanes(const Interval* c, SubpatchShape sh, Interval e, int k, Interval* col,
+                             Interval* row) {
+    using namespace lanes;
+    constexpr int K = BezierPatch::kMaxOrder;
+    const Factor f(e);
+    Lanes cl[K], rl[K];
+    for (int i = 0; i <= sh.p; ++i) cl[i] = empty();
+    for (int j = 0; j <= sh.q; ++j) rl[j] = empty();
+    const Interval* x = c + sh.index(k, 0, 0);
+    const Interval* z = c + sh.index(2, 0, 0);
+    for (int i = 0, ij = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j, ++ij) {
+            const Lanes g = sub(load(x[ij]), mul(f, load(z[ij])));
+            cl[i] = hull(cl[i], g);
+            rl[j] = hull(rl[j], g);
+        }
+    for (int i = 0; i <= sh.p; ++i) col[i] = store(cl[i]);
+    for (int j = 0; j <= sh.q; ++j) row[j] = store(rl[j]);
+}
+
+void difference_ranges_lanes(const Interval* c, SubpatchShape sh, Interval e, int k, Interval& du,
+                             Interval& dv) {
+    using namespace lanes;
+    const Factor f(e);
+    Lanes u = sh.p > 0 ? empty() : load(Interval(0.0));
+    Lanes v = sh.q > 0 ? empty() : load(Interval(0.0));
+    const Interval* x = c + sh.index(k, 0, 0);
+    const Interval* z = c + sh.index(2, 0, 0);
+    const int row = sh.q + 1;
+    for (int i = 0, ij = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j, ++ij) {
+            const Lanes x0 = load(x[ij]), z0 = load(z[ij]);
+            if (i < sh.p)
+                u = hull(u, sub(sub(load(x[ij + row]), x0), mul(f, sub(load(z[ij + row]), z0))));
+            if (j < sh.q)
+                v = hull(v, sub(sub(load(x[ij + 1]), x0), mul(f, sub(load(z[ij + 1]), z0))));
+        }
+    du = store(u);
+    dv = store(v);
+}
+
+} // namespace
+
+bool cluster_lanes_apply(const Interval* c, SubpatchShape sh, Interval a, Interval b) {
+    // Coefficients and differences below 2^501, factors below 2^500: every
+    // product and difference stays below 2^1002, far from overflow.
+    const Interval ab[2] = {a, b};
+    return lanes::moderate(ab, 2, 0x1p500) &&
+           lanes::moderate(c, 3 * (sh.p + 1) * (sh.q + 1), 0x1p500);
+}
+
+void coefficient_hulls(const Interval* c, SubpatchShape sh, Interval e, int k, Interval* col,
+                       Interval* row, bool lanes) {
+    if (lanes) return coefficient_hulls_lanes(c, sh, e, k, col, row);
+    for (int i = 0; i <= sh.p; ++i) col[i] = Interval::empty();
+    for (int j = 0; j <= sh.q; ++j) row[j] = Interval::empty();
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            const Interval g = g_at(c, sh, e, k, i, j);
+            col[i] = hull(col[i], g);
+            row[j] = hull(row[j], g);
+        }
+}
+
 void difference_ranges(const Interval* c, SubpatchShape sh, Interval e, int k, Interval& du,
-                       Interval& dv) {
+                       Interval& dv, bool lanes) {
+    if (lanes) return difference_ranges_lanes(c, sh, e, k, du, dv);
     du = sh.p > 0 ? Interval::empty() : Interval(0.0);
     dv = sh.q > 0 ? Interval::empty() : Interval(0.0);
     for (int i = 0; i <= sh.p; ++i)
@@ -96,16 +167,15 @@ void difference_ranges(const Interval* c, SubpatchShape sh, Interval e, int k, I
         }
 }
 
-} // namespace
-
 IMat<2> subpatch_jacobian(const Interval* c, SubpatchShape sh, const ParamBox& box, Interval a,
                           Interval b) {
     const Interval ws = Interval(box.s.hi()) - Interval(box.s.lo());
     const Interval wt = Interval(box.t.hi()) - Interval(box.t.lo());
     IMat<2> A;
+    const bool lanes = cluster_lanes_apply(c, sh, a, b);
     for (int k = 0; k < 2; ++k) {
         Interval du, dv;
-        difference_ranges(c, sh, k == 0 ? a : b, k, du, dv);
+        difference_ranges(c, sh, k == 0 ? a : b, k, du, dv, lanes);
         A(k, 0) = Interval(static_cast<double>(sh.p)) * du / ws;
         A(k, 1) = Interval(static_cast<double>(sh.q)) * dv / wt;
     }
@@ -117,21 +187,15 @@ bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, I
     constexpr int K = BezierPatch::kMaxOrder;
     u = Interval(0.0, 1.0);
     v = Interval(0.0, 1.0);
+    const bool lanes = cluster_lanes_apply(c, sh, a, b);
     for (int k = 0; k < 2; ++k) {
         const Interval e = k == 0 ? a : b;
         Interval col[K], row[K];
-        for (int i = 0; i <= sh.p; ++i) col[i] = Interval::empty();
-        for (int j = 0; j <= sh.q; ++j) row[j] = Interval::empty();
-        for (int i = 0; i <= sh.p; ++i)
-            for (int j = 0; j <= sh.q; ++j) {
-                const Interval g = g_at(c, sh, e, k, i, j);
-                col[i] = hull(col[i], g);
-                row[j] = hull(row[j], g);
-            }
+        coefficient_hulls(c, sh, e, k, col, row, lanes);
         u = intersect(u, clip_columns(col, sh.p));
         v = intersect(v, clip_columns(row, sh.q));
         if (u.is_empty() || v.is_empty()) return false;
-        if (D) difference_ranges(c, sh, e, k, (*D)(k, 0), (*D)(k, 1));
+        if (D) difference_ranges(c, sh, e, k, (*D)(k, 0), (*D)(k, 1), lanes);
     }
     return true;
 }

@@ -42,6 +42,19 @@ bool narrow(const ClusterSystem& sys, ParamBox& box, IMat<2>* jacobian = nullptr
 bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, Interval& u,
                   Interval& v, IMat<2>* D = nullptr);
 
+// The pieces of clip_cluster for G_k = X_k - e Z (e = a for k = 0, b for
+// k = 1): the hulls of its Bernstein coefficients over each column i
+// (col[0..p]) and row j (row[0..q]), and the hulls du, dv of their s- and
+// t-differences (x and z differenced first, so e enters once; 0 along a
+// degree-0 direction). lanes: computed on lane pairs (interval/lanes.h), bit
+// for bit the scalar results, allowed only where cluster_lanes_apply holds
+// (every bound of a, b and of the x, y, z coefficients below 2^500).
+bool cluster_lanes_apply(const Interval* c, SubpatchShape sh, Interval a, Interval b);
+void coefficient_hulls(const Interval* c, SubpatchShape sh, Interval e, int k, Interval* col,
+                       Interval* row, bool lanes);
+void difference_ranges(const Interval* c, SubpatchShape sh, Interval e, int k, Interval& du,
+                       Interval& dv, bool lanes);
+
 // The interval Jacobian of G with respect to the global (s, t) over a
 // subpatch's box (its coefficients c over exactly `box`): p times the hull of
 // the s-differences of the coefficients divided by the box's width, and the

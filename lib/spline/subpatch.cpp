@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/subpatch.h>
 
+#include <seamless/interval/lanes.h>
+
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -52,58 +54,33 @@ void right_part(Interval* c, int n, int stride, Interval u) {
 // (a zero x gives a zero either way, and the outward step ignores the sign of
 // zero). Only for finite coefficients below 2^1000 and finite weights in [0,1]:
 // then no product or convex combination overflows.
-using Lanes = double __attribute__((vector_size(16)));
-using LaneBits = long long __attribute__((vector_size(16)));
-
-// next_up in both lanes of finite x: x + 0 turns -0 into +0 (round to
-// nearest), then one ulp up is +1 on the bits of x >= 0 and -1 below 0.
-inline Lanes up(Lanes x) {
-    x = x + Lanes{0.0, 0.0};
-    const LaneBits neg = x < Lanes{0.0, 0.0}; // -1 where negative
-    return reinterpret_cast<Lanes>(reinterpret_cast<LaneBits>(x) + 1 + neg + neg);
-}
-inline Lanes load_negated(const Interval& c) {
-    return Lanes{-c.lo(), c.hi()};
-}
-// w x for w >= 0 given as its bounds in both lanes, rounded up.
-inline Lanes weight_up(Lanes wlo, Lanes whi, Lanes x) {
-    const LaneBits pos = x > Lanes{0.0, 0.0};
-    const Lanes w = reinterpret_cast<Lanes>((reinterpret_cast<LaneBits>(whi) & pos) |
-                                            (reinterpret_cast<LaneBits>(wlo) & ~pos));
-    return up(w * x);
-}
+using lanes::Lanes;
+using lanes::weight_up;
 
 // Left part at u1 then right part at r of one row (either pass skipped when
 // its flag is off), as left_part and right_part.
 void restrict_row_lanes(Interval* c, int n, int stride, bool left, Interval u1, bool right,
                         Interval r) {
     Lanes x[BezierPatch::kMaxOrder];
-    for (int i = 0; i <= n; ++i) x[i] = load_negated(c[i * stride]);
-    auto lanes = [](double d) { return Lanes{d, d}; };
+    for (int i = 0; i <= n; ++i) x[i] = lanes::load(c[i * stride]);
+    using lanes::splat;
+    using lanes::up;
     if (left) {
         const Interval v = intersect(Interval(1.0) - u1, Interval(0.0, 1.0));
-        const Lanes vl = lanes(v.lo()), vh = lanes(v.hi()), ul = lanes(u1.lo()),
-                    uh = lanes(u1.hi());
+        const Lanes vl = splat(v.lo()), vh = splat(v.hi()), ul = splat(u1.lo()),
+                    uh = splat(u1.hi());
         for (int k = 1; k <= n; ++k)
             for (int i = n; i >= k; --i)
                 x[i] = up(weight_up(vl, vh, x[i - 1]) + weight_up(ul, uh, x[i]));
     }
     if (right) {
         const Interval v = intersect(Interval(1.0) - r, Interval(0.0, 1.0));
-        const Lanes vl = lanes(v.lo()), vh = lanes(v.hi()), ul = lanes(r.lo()), uh = lanes(r.hi());
+        const Lanes vl = splat(v.lo()), vh = splat(v.hi()), ul = splat(r.lo()), uh = splat(r.hi());
         for (int k = 1; k <= n; ++k)
             for (int i = 0; i <= n - k; ++i)
                 x[i] = up(weight_up(vl, vh, x[i]) + weight_up(ul, uh, x[i + 1]));
     }
-    for (int i = 0; i <= n; ++i) c[i * stride] = Interval(-x[i][0], x[i][1]);
-}
-
-// Every coefficient finite with magnitude below 2^1000 (the lane passes' condition).
-bool moderate(const Interval* c, int size) {
-    double m = 0;
-    for (int k = 0; k < size; ++k)
-        m = std::max(m, std::max(std::abs(c[k].lo()), std::abs(c[k].hi())));
-    return m < 0x1p1000; // false for NaN too
+    for (int i = 0; i <= n; ++i) c[i * stride] = lanes::store(x[i]);
 }
 
 // Calls f(row pointer, n, stride) for every row of direction dir.
@@ -142,7 +119,7 @@ void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Inte
     // Within [0, u1] the new lower end is at u0 / u1 (u1 >= u0 > 0 when cut).
     const Interval r =
         cut_lo ? intersect(cut_hi ? u0 / u1 : u0, Interval(0.0, 1.0)) : Interval(0.0);
-    if (moderate(c, sh.size()) && !r.is_empty()) {
+    if (lanes::moderate(c, sh.size(), 0x1p1000) && !r.is_empty()) {
         for_rows(c, sh, dir, [&](Interval* row, int n, int st) {
             restrict_row_lanes(row, n, st, cut_hi, u1, cut_lo, r);
         });
