@@ -253,15 +253,13 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
     return at;
 }
 
-// The patches' nodes laid end to end (in parallel) at the start of one array
-// of `total` nodes, allocated once with room for the fans' subtrees (the
-// split trees' nodes are a fifth of a fine tessellation's: growing the array
-// copied them and zero-filled the rest a second time).
-void lay_out_nodes(PassMemo& memo, const PatchRanges& at, int total, int threads,
-                   PatchTrees& trees) {
+// The patches' nodes laid end to end (in parallel) at the start of the node
+// array, sized once with room for the fans' subtrees (the split trees' nodes
+// are a fifth of a fine tessellation's: growing the array copied them).
+void lay_out_nodes(PassMemo& memo, const PatchRanges& at, int threads, PatchTrees& trees) {
     const std::vector<Part>& parts = memo.parts;
     const int np = static_cast<int>(parts.size());
-    trees.nodes.resize(total);
+    assert(static_cast<int>(trees.nodes.size()) >= at.node_start.back());
     parallel_chunks(np, threads, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             const Part& p = parts[i];
@@ -580,11 +578,18 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         st.max_depth = std::max(st.max_depth, sp.depth);
         if (!sp.planar) ++st.nonplanar_subpatches;
     }
-    mesh.triangles.resize(triangles);
-    mesh.triangle_surface.resize(triangles);
-    mesh.corner_normals.resize(triangles);
-    mesh.corner_uvs.resize(triangles);
-    lay_out_nodes(memo, ranges, fan_node[count], options.threads, out.trees);
+    // resize zero-fills the output arrays (about 65 MB at a fine tolerance,
+    // page faults included) and no type of theirs may change: the five at
+    // once, largest first, one per free worker.
+    const std::function<void()> grow[] = {[&] { out.trees.nodes.resize(fan_node[count]); },
+                                          [&] { mesh.corner_normals.resize(triangles); },
+                                          [&] { mesh.corner_uvs.resize(triangles); },
+                                          [&] { mesh.triangles.resize(triangles); },
+                                          [&] { mesh.triangle_surface.resize(triangles); }};
+    pull_blocks(5, 1, options.threads, nullptr, [&](int begin, int end) {
+        for (int k = begin; k < end; ++k) grow[k]();
+    });
+    lay_out_nodes(memo, ranges, options.threads, out.trees);
     std::vector<int> added(count);
     pull_blocks(static_cast<int>(count), kGrain, options.threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
