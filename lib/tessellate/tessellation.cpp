@@ -9,13 +9,11 @@
 
 #include <algorithm>
 #include <atomic>
-#include <bit>
 #include <cassert>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <memory>
 #include <span>
 #include <unordered_map>
 #include <unordered_set>
@@ -236,30 +234,9 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
         at.leaf_start[i + 1] = at.leaf_start[i] + static_cast<int>(parts[i].subpatches.size());
         trees.depth = std::max(trees.depth, parts[i].trees.depth);
     }
+    trees.nodes.resize(at.node_start[np]);
     subpatches.resize(at.leaf_start[np]);
     trees.roots.resize(np);
-    parallel_chunks(np, threads, [&](int begin, int end) {
-        for (int i = begin; i < end; ++i) {
-            const Part& p = parts[i];
-            const int node0 = at.node_start[i], leaf0 = at.leaf_start[i];
-            for (size_t j = 0; j < p.subpatches.size(); ++j) {
-                Subpatch sp = p.subpatches[j];
-                sp.node += node0;
-                subpatches[leaf0 + j] = sp;
-            }
-            trees.roots[i] = p.root + node0;
-        }
-    });
-    return at;
-}
-
-// The patches' nodes laid end to end (in parallel) at the start of the node
-// array, sized once with room for the fans' subtrees (the split trees' nodes
-// are a fifth of a fine tessellation's: growing the array copied them).
-void lay_out_nodes(PassMemo& memo, const PatchRanges& at, int threads, PatchTrees& trees) {
-    const std::vector<Part>& parts = memo.parts;
-    const int np = static_cast<int>(parts.size());
-    assert(static_cast<int>(trees.nodes.size()) >= at.node_start.back());
     parallel_chunks(np, threads, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             const Part& p = parts[i];
@@ -271,9 +248,16 @@ void lay_out_nodes(PassMemo& memo, const PatchRanges& at, int threads, PatchTree
                 if (n.subpatch >= 0) n.subpatch += leaf0;
                 trees.nodes[node0 + j] = n;
             }
+            for (size_t j = 0; j < p.subpatches.size(); ++j) {
+                Subpatch sp = p.subpatches[j];
+                sp.node += node0;
+                subpatches[leaf0 + j] = sp;
+            }
+            trees.roots[i] = p.root + node0;
         }
     });
-    if (!memo.keep) std::vector<Part>().swap(memo.parts); // one pass: no copy kept
+    if (!memo.keep) std::vector<Part>().swap(parts); // one pass: no copy kept
+    return at;
 }
 
 // Vertices numbered as first met in subpatch order, each ring then its
@@ -290,8 +274,7 @@ void number_vertices(const std::vector<Subpatch>& subpatches, const std::vector<
     const int count = static_cast<int>(subpatches.size());
     const int np = static_cast<int>(leaf_start.size()) - 1;
     std::vector<VertexKey> key(rings.size());
-    // The slot of the key's first use; every slot is written below (no zero fill).
-    const std::unique_ptr<int[]> first(new int[rings.size()]);
+    std::vector<int> first(rings.size()); // the slot of the key's first use
     pull_blocks(count, kGrain, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i)
             for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) {
@@ -303,21 +286,14 @@ void number_vertices(const std::vector<Subpatch>& subpatches, const std::vector<
     });
     const auto interior = [&](int j, int patch) { return key[j].kind == 2 && key[j].id == patch; };
     pull_blocks(np, 1, threads, nullptr, [&](int begin, int end) {
-        // (s, t) -> first slot: open addressing in one flat table per worker,
-        // refilled per patch (a hash map per patch allocated a node per vertex).
-        std::vector<std::pair<std::uint64_t, int>> table; // slot -1: empty
+        std::unordered_map<std::uint64_t, int> seen; // (s, t) -> first slot
         for (int p = begin; p < end; ++p) {
-            const int j0 = ring_start[leaf_start[p]], j1 = ring_start[leaf_start[p + 1]];
-            const size_t size = std::bit_ceil(2 * static_cast<size_t>(j1 - j0) + 1);
-            table.assign(size, {0, -1});
-            for (int j = j0; j < j1; ++j) {
+            seen.clear();
+            for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j) {
                 if (!interior(j, p)) continue;
                 const std::uint64_t st = (static_cast<std::uint64_t>(key[j].a) << 32) |
                                          static_cast<std::uint32_t>(key[j].b);
-                size_t h = static_cast<size_t>((st * 0x9E3779B97F4A7C15ull) >> 32) & (size - 1);
-                while (table[h].second >= 0 && table[h].first != st) h = (h + 1) & (size - 1);
-                if (table[h].second < 0) table[h] = {st, j};
-                first[j] = table[h].second;
+                first[j] = seen.try_emplace(st, j).first->second;
             }
         }
     });
@@ -569,7 +545,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     });
     std::vector<int> fan_node(count + 1);
     int triangles = 0;
-    fan_node[0] = ranges.node_start[np];
+    fan_node[0] = static_cast<int>(out.trees.nodes.size());
     for (size_t i = 0; i < count; ++i) {
         Subpatch& sp = out.subpatches[i];
         sp.first_triangle = triangles;
@@ -578,18 +554,11 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         st.max_depth = std::max(st.max_depth, sp.depth);
         if (!sp.planar) ++st.nonplanar_subpatches;
     }
-    // resize zero-fills the output arrays (about 65 MB at a fine tolerance,
-    // page faults included) and no type of theirs may change: the five at
-    // once, largest first, one per free worker.
-    const std::function<void()> grow[] = {[&] { out.trees.nodes.resize(fan_node[count]); },
-                                          [&] { mesh.corner_normals.resize(triangles); },
-                                          [&] { mesh.corner_uvs.resize(triangles); },
-                                          [&] { mesh.triangles.resize(triangles); },
-                                          [&] { mesh.triangle_surface.resize(triangles); }};
-    pull_blocks(5, 1, options.threads, nullptr, [&](int begin, int end) {
-        for (int k = begin; k < end; ++k) grow[k]();
-    });
-    lay_out_nodes(memo, ranges, options.threads, out.trees);
+    mesh.triangles.resize(triangles);
+    mesh.triangle_surface.resize(triangles);
+    mesh.corner_normals.resize(triangles);
+    mesh.corner_uvs.resize(triangles);
+    out.trees.nodes.resize(fan_node[count]);
     std::vector<int> added(count);
     pull_blocks(static_cast<int>(count), kGrain, options.threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
