@@ -92,7 +92,8 @@ void add_render(CLI::App& app, Action& action) {
         ->check(CLI::Range(0, 1024))
         ->capture_default_str();
     cmd->add_flag("--no-dither", a->no_dither,
-                  "INTRACY splits until one level instead of dithering two (TRAY: no effect)");
+                  "INTRACY paints without dither noise: one level per cluster, or the bilinear "
+                  "form within one level of the truth (TRAY: no effect)");
     cmd->add_option("--stats", a->stats, "write run statistics as JSON to this file");
     cmd->callback([&action, a] {
         action = [a] {

@@ -22,8 +22,11 @@ struct RenderOptions {
     int width = 0, height = 0; // 0: the scene camera's size
     int levels = 0;            // 0: the scene's levels
     int threads = 0;           // 0: every core; 1: sequential. The image is the same either way.
-    bool dither = true;        // step 9 with remark 2; false: split until one level per channel
-    int prepartition = 8;      // remark 4: the screen is prepartitioned into 8 x 8 parts
+    // Step 9 with remark 2 (bilinear form plus dither); false: no dither, B is
+    // painted when its enclosure holds one level per channel, or by the
+    // second-order rule (second_order.h) with every level within one of the truth.
+    bool dither = true;
+    int prepartition = 8; // remark 4: the screen is prepartitioned into 8 x 8 parts
     // INTRACY: a sub-screen of at most this many pixels is solved pixel by
     // pixel (certified Newton) without a cluster attempt; 1: never. 16 was the
     // fastest of 1, 4, 16, 64 on the teapot at 320x240 (docs/results/render.md).
