@@ -36,7 +36,7 @@ inline Interval store(Lanes x) {
 }
 // (hi, -lo): the lanes of -x, exact.
 inline Lanes swap(Lanes x) {
-    return __builtin_shuffle(x, LaneBits{1, 0});
+    return __builtin_shufflevector(x, x, 1, 0);
 }
 // a - b as Interval's operator-: lanes (-a.lo + b.hi, a.hi - b.lo), rounded up
 // (-(a.lo - b.hi) is exactly -a.lo + b.hi: round to nearest is symmetric).
