@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Step (d2) of a tessellation pass: every fan's certified two-way distance to
+// its subpatch (error_bound.h), each on its own, in parallel; a bound of an
+// earlier pass for the same subpatch, centre and ring is reused.
+#pragma once
+
+#include <seamless/spline/bezier_patch.h>
+#include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/subdivision.h>
+#include <seamless/tessellate/subpatch_ring.h>
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace seamless {
+
+// A certified fan bound (error_bound.h) of an earlier pass, with the ring it
+// was computed for: the bound is a function of the subpatch and its ring.
+struct KnownBound {
+    ParamRect rect;
+    std::vector<RingPoint> ring;
+    Vec3 centre;
+    double bound = 0;
+};
+// One patch's known bounds by subpatch_key.
+using KnownBounds = std::unordered_map<std::uint64_t, KnownBound>;
+
+// Subpatch::error_bound of every subpatch, from its ring and centre vertex
+// (rings.vertices[].vertex, rings.centre into `positions`). `known`: per
+// patch, read; with `keep` the fresh bounds are added to it (each patch's map
+// on its own, in parallel) for the next pass. `leaf_start`: where each patch's
+// subpatches start (one more entry: the end). `scale` and `tolerance` as
+// certified_fan_bound's.
+void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
+                  const std::vector<Vec3>& positions, const std::vector<int>& leaf_start,
+                  double scale, double tolerance, int threads, bool keep,
+                  std::vector<KnownBounds>& known, std::vector<Subpatch>& subpatches);
+
+} // namespace seamless

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// What the passes of a tolerance share (tessellation_pass.h), per Bezier patch
+// so that patches can be worked on in parallel: the subdivision criteria's
+// verdicts, the final fans' bounds and the last pass's split of each patch.
+#pragma once
+
+#include <seamless/tessellate/fan_certification.h>
+#include <seamless/tessellate/patch_tree.h>
+#include <seamless/tessellate/subdivision.h>
+
+#include <vector>
+
+namespace seamless {
+
+// One patch's split tree and leaves.
+struct Part {
+    PatchTrees trees;
+    std::vector<Subpatch> subpatches;
+    int root = -1;
+};
+
+struct PassMemo {
+    std::vector<FanMemo> verdicts;
+    std::vector<KnownBounds> bounds;
+    // The last pass's split of each patch, and whether the next pass forces a
+    // split in it (else the same verdicts give the same tree: kept).
+    std::vector<Part> parts;
+    std::vector<char> changed;
+    bool keep = false; // fill them (only a tolerance takes more than one pass)
+    PassMemo(size_t patches, bool keep)
+        : verdicts(patches), bounds(patches), parts(patches), changed(patches, 1), keep(keep) {}
+};
+
+} // namespace seamless

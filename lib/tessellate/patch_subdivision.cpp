@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/base/parallel.h>
+#include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/patch_subdivision.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace seamless {
+
+double patch_cost(const BezierPatch& b, double D) {
+    double mss = 0, mtt = 0;
+    for (int i = 0; i <= b.p; ++i)
+        for (int j = 0; j <= b.q; ++j) {
+            if (i >= 1 && i < b.p)
+                mss = std::max(mss,
+                               norm(b.point(i + 1, j) - 2.0 * b.point(i, j) + b.point(i - 1, j)));
+            if (j >= 1 && j < b.q)
+                mtt = std::max(mtt,
+                               norm(b.point(i, j + 1) - 2.0 * b.point(i, j) + b.point(i, j - 1)));
+        }
+    const double cost =
+        (1 + std::sqrt(b.p * (b.p - 1) * mss / D)) * (1 + std::sqrt(b.q * (b.q - 1) * mtt / D));
+    return std::isfinite(cost) ? cost : 0.0;
+}
+
+PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
+                              const SubdivisionOptions& sub, double D, int threads, PassMemo& memo,
+                              PatchTrees& trees, std::vector<Subpatch>& subpatches) {
+    std::vector<Part>& parts = memo.parts;
+    const int np = static_cast<int>(patches.size());
+    // Patches differ in cost by ten times and more (teapot): dearest first.
+    std::vector<double> cost(np);
+    std::vector<int> order(np);
+    for (int i = 0; i < np; ++i) cost[i] = patch_cost(patches[i], D), order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+    pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            if (!memo.changed[i]) continue;
+            SubdivisionOptions o = sub;
+            o.memo = memo.keep ? &memo.verdicts[i] : nullptr;
+            parts[i] = Part{};
+            parts[i].root = subdivide(patches[i], i, o, parts[i].trees, parts[i].subpatches);
+        }
+    });
+    PatchRanges at{std::vector<int>(np + 1, 0), std::vector<int>(np + 1, 0)};
+    for (int i = 0; i < np; ++i) {
+        at.node_start[i + 1] = at.node_start[i] + static_cast<int>(parts[i].trees.nodes.size());
+        at.leaf_start[i + 1] = at.leaf_start[i] + static_cast<int>(parts[i].subpatches.size());
+        trees.depth = std::max(trees.depth, parts[i].trees.depth);
+    }
+    trees.nodes.resize(at.node_start[np]);
+    subpatches.resize(at.leaf_start[np]);
+    trees.roots.resize(np);
+    parallel_chunks(np, threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const Part& p = parts[i];
+            const int node0 = at.node_start[i], leaf0 = at.leaf_start[i];
+            for (size_t j = 0; j < p.trees.nodes.size(); ++j) {
+                PatchNode n = p.trees.nodes[j];
+                for (int& c : n.child)
+                    if (c >= 0) c += node0;
+                if (n.subpatch >= 0) n.subpatch += leaf0;
+                trees.nodes[node0 + j] = n;
+            }
+            for (size_t j = 0; j < p.subpatches.size(); ++j) {
+                Subpatch sp = p.subpatches[j];
+                sp.node += node0;
+                subpatches[leaf0 + j] = sp;
+            }
+            trees.roots[i] = p.root + node0;
+        }
+    });
+    if (!memo.keep) std::vector<Part>().swap(parts); // one pass: no copy kept
+    return at;
+}
+
+} // namespace seamless

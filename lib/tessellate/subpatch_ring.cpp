@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/subpatch_ring.h>
+
+#include <algorithm>
+#include <span>
+
+namespace seamless {
+
+void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const EdgeGraph& graph,
+                  int patch, const ParamRect& r, bool crack_free, std::vector<int>& scratch,
+                  std::vector<SideVertex>& inside, std::vector<RingVertex>& ring) {
+    ring.clear();
+    const int cs[4] = {r.s0, r.s1, r.s1, r.s0}, ct[4] = {r.t0, r.t0, r.t1, r.t1};
+    for (int k = 0; k < 4; ++k) {
+        ring.push_back({cs[k], ct[k], param_of(cs[k]), param_of(ct[k]), -1, -1});
+        if (!crack_free) continue;
+        const SideOnLine side = side_on_line(reg, match, patch, r, k);
+        scratch.clear();
+        points_inside(reg, side, scratch);
+        inside.clear();
+        for (int x : scratch) inside.push_back({param_of(x), x, -1});
+        if (side.line >= 0 && side.line < reg.boundary_lines) {
+            const std::span<const SeamPoint> seam = seam_points(graph, side.line);
+            if (!seam.empty()) {
+                const double a = param_of(side.a), b = param_of(side.b);
+                const size_t before = inside.size();
+                for (auto it =
+                         std::upper_bound(seam.begin(), seam.end(), a,
+                                          [](double x, const SeamPoint&p) { return x < p.x; });
+                     it != seam.end() && it->x < b; ++it)
+                    inside.push_back({it->x, -1, static_cast<int>(&*it - graph.points.data())});
+                if (inside.size() > before && before > 0)
+                    std::sort(inside.begin(), inside.end(),
+                              [](const SideVertex& p, const SideVertex& q) { return p.x < q.x; });
+            }
+        }
+        if (inside.empty()) continue;
+        for (SideVertex& v : inside)
+            if (side.reversed) v.x = 1 - v.x, v.grid = kParamOne - v.grid;
+        // Sides 0, 1 run with increasing parameter, sides 2, 3 against it.
+        if ((k < 2) == side.reversed) std::reverse(inside.begin(), inside.end());
+        for (const SideVertex& v : inside) {
+            const int g = v.foreign >= 0 ? -1 : v.grid;
+            if (k % 2 == 0)
+                ring.push_back({g, ct[k], v.x, param_of(ct[k]), v.foreign, -1});
+            else
+                ring.push_back({cs[k], g, param_of(cs[k]), v.x, v.foreign, -1});
+        }
+    }
+}
+
+SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
+                            const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
+                            const BoundaryMatch& match, const EdgeGraph& graph, bool crack_free,
+                            int threads) {
+    // Each subpatch's ring and centre point on its own, in parallel.
+    const size_t count = subpatches.size();
+    std::vector<std::vector<RingVertex>> ring_of(count);
+    SubpatchRings out;
+    out.centre_point.resize(count);
+    pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
+        std::vector<int> scratch;
+        std::vector<SideVertex> inside;
+        for (int i = begin; i < end; ++i) {
+            const Subpatch& sp = subpatches[i];
+            const ParamRect& r = sp.rect;
+            collect_ring(reg, match, graph, sp.patch, r, crack_free, scratch, inside, ring_of[i]);
+            const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+            const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+            out.centre_point[i] = evaluate(patches[sp.patch], sc, tc).point;
+        }
+    });
+    // The rings laid end to end by a prefix sum.
+    out.start.assign(count + 1, 0);
+    out.centre.resize(count);
+    for (size_t i = 0; i < count; ++i)
+        out.start[i + 1] = out.start[i] + static_cast<int>(ring_of[i].size());
+    out.vertices.resize(out.start[count]);
+    pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            std::copy(ring_of[i].begin(), ring_of[i].end(), out.vertices.begin() + out.start[i]);
+            std::vector<RingVertex>().swap(ring_of[i]);
+        }
+    });
+    return out;
+}
+
+} // namespace seamless

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// The ring of a planar subpatch (paper section 6, Fig. 3): its boundary,
+// counterclockwise in (s, t) from corner (s0, t0), with the four corners and,
+// crack-free, every vertex a finer neighbour put on a side and every seam
+// vertex of another patch lying on it (edge_graph.h). Its fan runs from the
+// subpatch's centre over this ring.
+#pragma once
+
+#include <seamless/spline/bezier_patch.h>
+#include <seamless/tessellate/edge_graph.h>
+#include <seamless/tessellate/shared_edges.h>
+#include <seamless/tessellate/subdivision.h>
+
+#include <vector>
+
+namespace seamless {
+
+// A ring vertex of a subpatch: its parameters on the subpatch's patch (on the
+// grid, or -1 for the coordinate along the side of a seam vertex of another
+// patch, whose parameter is a projection) and its mesh vertex.
+struct RingVertex {
+    int s = 0, t = 0;
+    double fs = 0, ft = 0;
+    int foreign = -1; // index into EdgeGraph::points
+    int vertex = -1;
+};
+
+// A vertex inside a side, by its line coordinate / kParamOne: a grid point or
+// another line's seam vertex.
+struct SideVertex {
+    double x = 0;
+    int grid = 0, foreign = -1;
+};
+
+// The ring of subpatch `r` of `patch` into `ring`; `scratch` and `inside`
+// are the caller's scratch storage.
+void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const EdgeGraph& graph,
+                  int patch, const ParamRect& r, bool crack_free, std::vector<int>& scratch,
+                  std::vector<SideVertex>& inside, std::vector<RingVertex>& ring);
+
+// Every subpatch's ring, laid end to end in subpatch order, and its centre.
+struct SubpatchRings {
+    std::vector<RingVertex> vertices;
+    std::vector<int> start;         // per subpatch into vertices; one more entry: the end
+    std::vector<Vec3> centre_point; // S at the centre of the subpatch's parameters
+    std::vector<int> centre;        // its mesh vertex (vertex_numbering.h)
+};
+
+// In parallel, the same arrays for any thread count; vertex and centre are
+// left to the numbering.
+SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
+                            const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
+                            const BoundaryMatch& match, const EdgeGraph& graph, bool crack_free,
+                            int threads);
+
+} // namespace seamless

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/tessellate/edge_graph.h>
+#include <seamless/tessellate/fan_certification.h>
+#include <seamless/tessellate/fan_triangles.h>
+#include <seamless/tessellate/patch_subdivision.h>
+#include <seamless/tessellate/phase_clock.h>
+#include <seamless/tessellate/shared_edges.h>
+#include <seamless/tessellate/subpatch_ring.h>
+#include <seamless/tessellate/surface_orientation.h>
+#include <seamless/tessellate/tessellation_pass.h>
+#include <seamless/tessellate/vertex_numbering.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace seamless {
+
+Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
+                             const TessellationOptions& options,
+                             const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
+                             bool last) {
+    const auto start = std::chrono::steady_clock::now();
+    Lap lap;
+    Tessellation out;
+    TessellationStats& st = out.stats;
+    PhaseSeconds& phase = st.phases;
+    const Box3 box = control_box(model);
+    st.d_max = box.max_extent();
+    const PlanarityTolerances paper =
+        options.tolerance > 0 ? PlanarityTolerances{} : paper_tolerances(st.d_max);
+    st.eps1 = options.eps1 >= 0 ? options.eps1 : paper.eps1;
+    st.eps2 = options.eps2 >= 0 ? options.eps2 : paper.eps2;
+    st.tolerance = std::max(options.tolerance, 0.0);
+    st.surfaces = static_cast<int>(model.surfaces.size());
+    st.patches = static_cast<int>(patches.size());
+    const double scale =
+        box.empty() ? 0.0
+                    : std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z),
+                                std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)});
+
+    // (a) Split trees by the planarity test alone (section 6).
+    constexpr double kOff = std::numeric_limits<double>::infinity();
+    SubdivisionOptions sub;
+    sub.eps1 = st.eps1 > 0 || options.eps1 >= 0 ? st.eps1 : kOff;
+    sub.eps2 = st.eps2 > 0 || options.eps2 >= 0 ? st.eps2 : kOff;
+    sub.tolerance = st.tolerance;
+    sub.angle = options.angle;
+    sub.max_depth = options.max_depth;
+    sub.split = &split;
+    const double D = st.tolerance > 0 ? st.tolerance : st.eps1 > 0 ? st.eps1 : 1e-3 * st.d_max;
+    const PatchRanges ranges =
+        subdivide_patches(patches, sub, D, options.threads, memo, out.trees, out.subpatches);
+    phase.subdivision += lap();
+
+    // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
+    // Shared boundaries agree to the seam tolerance, and at least to the
+    // rounding of knot insertion, which scales with the coordinates'
+    // magnitude, not with d_max: a model far from the origin needs the larger.
+    st.seam_tolerance =
+        std::max(options.seam_tolerance >= 0 ? options.seam_tolerance : 1e-9 * st.d_max,
+                 64 * std::numeric_limits<double>::epsilon() * scale);
+    const BoundaryMatch match = match_boundaries(patches, st.seam_tolerance);
+    st.shared_edges = match.shared_edges;
+    st.collapsed_edges = match.collapsed_edges;
+    const EdgeRegistry reg = build_edge_registry(match, out.subpatches, options.threads);
+    // (c') The rest of the boundaries by geometry: one edge graph of the model.
+    const EdgeGraph graph =
+        options.crack_free ? build_edge_graph(patches, match, reg, st.seam_tolerance) : EdgeGraph{};
+    st.seams = graph.seams;
+    st.seam_vertices = graph.seam_vertices;
+    VertexRegistry vr;
+    vr.patches = &patches;
+    vr.match = &match;
+    vr.edges = &reg;
+    vr.alias = &graph.alias;
+    vr.crack_free = options.crack_free;
+    // With a tolerance every vertex is its exact surface point: a corner a
+    // coarser neighbour's straight segment held off the surface by its sagitta
+    // lifted the finer side's bound above the tolerance across patch edges,
+    // where phi may not move it, and halving either side did not end it (the
+    // sides stayed a level apart pass after pass). The fans on both sides run
+    // over every vertex on their sides, by index, so no crack opens.
+    vr.straight_segments = st.tolerance <= 0;
+    phase.boundaries += lap();
+
+    // (d) Fans: each planar subpatch from its centre over its ring.
+    TriangleMesh& mesh = out.mesh;
+    for (const BSplineSurface& s : model.surfaces) mesh.surface_names.push_back(s.name);
+    // (d0) Each subpatch's ring and centre point on its own, in parallel.
+    SubpatchRings rings = collect_rings(patches, out.subpatches, reg, match, graph,
+                                        options.crack_free, options.threads);
+    phase.rings += lap();
+    // (d1) Their vertices, numbered as first met in subpatch order (each ring,
+    // then its centre).
+    number_vertices(out.subpatches, ranges.leaf_start, graph, options.threads, vr, rings);
+    phase.numbering += lap();
+
+    // (d2) Each subpatch's certified bound on its own, in parallel.
+    const bool certify = options.certify || st.tolerance > 0;
+    if (certify) {
+        certify_fans(patches, rings, vr.positions, ranges.leaf_start, scale, st.tolerance,
+                     options.threads, memo.keep, memo.bounds, out.subpatches);
+        for (const Subpatch& sp : out.subpatches) {
+            if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
+            st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
+        }
+    } else {
+        for (Subpatch& sp : out.subpatches)
+            sp.error_bound = std::numeric_limits<double>::quiet_NaN();
+        st.max_error_bound = std::numeric_limits<double>::quiet_NaN();
+    }
+    phase.bounds += lap();
+    // Another pass will follow: the mesh of this one is not needed.
+    if (!last && st.above_tolerance > 0) return out;
+
+    // (d3) Normals at the fans' vertices, in parallel.
+    const FanNormals normals = fan_normals(patches, out.subpatches, rings, options.threads);
+    phase.normals += lap();
+
+    // (d4) Fan triangles in subpatch order, their patch-tree leaves and hulls.
+    write_fans(patches, rings, normals, ranges.node_start, std::move(vr.positions), options.threads,
+               out);
+    phase.fans += lap();
+
+    // At unit scale: the signed volume of a closed component stays finite.
+    if (options.orient_surfaces)
+        st.flipped_surfaces = orient_surfaces(mesh, options.threads).flipped_surfaces;
+    phase.orientation += lap();
+
+    st.subpatches = static_cast<int>(out.subpatches.size());
+    st.triangles = mesh.triangle_count();
+    st.vertices = mesh.vertex_count();
+    st.seconds = seconds_since(start);
+    return out;
+}
+
+} // namespace seamless

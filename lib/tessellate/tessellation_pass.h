@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// One pass of the tessellation (paper section 6): (a) split trees, (b, c)
+// shared boundaries and the subpatch sides on every line, (d0) rings, (d1)
+// vertex numbering, (d2) certified bounds, (d3, d4) normals and fans. With a
+// tolerance, tessellation.cpp repeats it, splitting the subpatches whose final
+// fan bound is above it; the passes share a PassMemo.
+#pragma once
+
+#include <seamless/model/model.h>
+#include <seamless/tessellate/pass_memo.h>
+#include <seamless/tessellate/tessellation.h>
+
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+namespace seamless {
+
+// `split`: subpatches to split whatever the criteria say (subpatch_key).
+// Without `last`, a pass that leaves subpatches above the tolerance returns
+// before building the mesh (another pass follows).
+Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
+                             const TessellationOptions& options,
+                             const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
+                             bool last);
+
+} // namespace seamless

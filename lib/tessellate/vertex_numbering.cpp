@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/vertex_numbering.h>
+
+#include <cstdint>
+#include <unordered_map>
+
+namespace seamless {
+namespace {
+
+// A vertex on a straight segment places the segment's ends first: one by one.
+void number_one_by_one(const std::vector<Subpatch>& subpatches, const EdgeGraph& graph,
+                       VertexRegistry& vr, SubpatchRings& rings) {
+    const size_t count = subpatches.size();
+    // About three vertices per subpatch: reserving avoids the copies of
+    // growing these arrays.
+    vr.positions.reserve(3 * count);
+    vr.placed.reserve(3 * count);
+    vr.index.reserve(2 * count);
+    for (size_t i = 0; i < count; ++i) {
+        const Subpatch& sp = subpatches[i];
+        for (int j = rings.start[i]; j < rings.start[i + 1]; ++j) {
+            RingVertex& v = rings.vertices[j];
+            v.vertex = v.foreign >= 0 ? vertex_of(vr, graph.points[v.foreign].key)
+                                      : vertex_at(vr, sp.patch, v.s, v.t);
+        }
+        rings.centre[i] = static_cast<int>(vr.positions.size());
+        vr.positions.push_back(rings.centre_point[i]);
+        vr.placed.push_back(1);
+    }
+}
+
+// Vertices numbered as first met in subpatch order, each ring then its
+// centre, as vertex_of numbers them one by one, where every vertex is its
+// exact point (no straight segments: no vertex places another). In parallel:
+// the keys; the first uses of each patch's interior points (they belong to
+// that patch alone, and its subpatches are consecutive); the ids by a prefix
+// sum over the subpatches' new vertices; the positions. In one pass: the first
+// uses of the patch-boundary points, a small share of the slots.
+void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
+                        const EdgeGraph& graph, int threads, VertexRegistry& vr,
+                        SubpatchRings& rings) {
+    const int count = static_cast<int>(subpatches.size());
+    const int np = static_cast<int>(leaf_start.size()) - 1;
+    const std::vector<int>& ring_start = rings.start;
+    std::vector<RingVertex>& ring = rings.vertices;
+    std::vector<VertexKey> key(ring.size());
+    std::vector<int> first(ring.size()); // the slot of the key's first use
+    pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) {
+                const RingVertex& v = ring[j];
+                key[j] = canonical_key(
+                    vr, v.foreign >= 0 ? graph.points[v.foreign].key
+                                       : vertex_key(*vr.match, subpatches[i].patch, v.s, v.t));
+            }
+    });
+    const auto interior = [&](int j, int patch) { return key[j].kind == 2 && key[j].id == patch; };
+    pull_blocks(np, 1, threads, nullptr, [&](int begin, int end) {
+        std::unordered_map<std::uint64_t, int> seen; // (s, t) -> first slot
+        for (int p = begin; p < end; ++p) {
+            seen.clear();
+            for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j) {
+                if (!interior(j, p)) continue;
+                const std::uint64_t st = (static_cast<std::uint64_t>(key[j].a) << 32) |
+                                         static_cast<std::uint32_t>(key[j].b);
+                first[j] = seen.try_emplace(st, j).first->second;
+            }
+        }
+    });
+    std::unordered_map<VertexKey, int, VertexKeyHash> shared;
+    for (int p = 0; p < np; ++p)
+        for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j)
+            if (!interior(j, p)) first[j] = shared.try_emplace(key[j], j).first->second;
+    std::vector<int> base(count + 1, 0);
+    pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            int fresh = 1; // the centre
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j) fresh += first[j] == j;
+            base[i + 1] = fresh;
+        }
+    });
+    for (int i = 0; i < count; ++i) base[i + 1] += base[i];
+    vr.positions.resize(base[count]);
+    vr.placed.assign(base[count], 1);
+    pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            int id = base[i];
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                if (first[j] == j) {
+                    ring[j].vertex = id;
+                    vr.positions[id++] = exact_position(*vr.patches, *vr.match, key[j]);
+                }
+            rings.centre[i] = id;
+            vr.positions[id] = rings.centre_point[i];
+        }
+    });
+    pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                if (first[j] != j) ring[j].vertex = ring[first[j]].vertex;
+    });
+}
+
+} // namespace
+
+void number_vertices(const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
+                     const EdgeGraph& graph, int threads, VertexRegistry& vr,
+                     SubpatchRings& rings) {
+    if (vr.crack_free && vr.straight_segments)
+        number_one_by_one(subpatches, graph, vr, rings);
+    else
+        number_in_parallel(subpatches, leaf_start, graph, threads, vr, rings);
+}
+
+} // namespace seamless
