@@ -2,6 +2,7 @@
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/fan_triangles.h>
+#include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/patch_tree.h>
 
 #include <algorithm>
@@ -13,7 +14,10 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
                        const std::vector<Subpatch>& subpatches, const SubpatchRings& rings,
                        int threads) {
     const int count = static_cast<int>(subpatches.size());
-    FanNormals normals{std::vector<Vec3>(rings.vertices.size()), std::vector<Vec3>(count)};
+    FanNormals normals;
+    reserve_huge(normals.ring, rings.vertices.size());
+    normals.ring.resize(rings.vertices.size());
+    normals.centre.resize(count);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             const Subpatch& sp = subpatches[i];
@@ -57,11 +61,15 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
         st.max_depth = std::max(st.max_depth, sp.depth);
         if (!sp.planar) ++st.nonplanar_subpatches;
     }
-    mesh.triangles.resize(triangles);
-    mesh.triangle_surface.resize(triangles);
-    mesh.corner_normals.resize(triangles);
-    mesh.corner_uvs.resize(triangles);
-    out.trees.nodes.resize(fan_node[count]);
+    const auto grow = [](auto& v, size_t n) {
+        reserve_huge(v, n);
+        v.resize(n);
+    };
+    grow(mesh.triangles, triangles);
+    grow(mesh.triangle_surface, triangles);
+    grow(mesh.corner_normals, triangles);
+    grow(mesh.corner_uvs, triangles);
+    grow(out.trees.nodes, fan_node[count]);
     std::vector<int> added(count);
     pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {

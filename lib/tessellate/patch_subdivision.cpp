@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/patch_subdivision.h>
 
 #include <algorithm>
@@ -39,8 +40,13 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
             if (!memo.changed[i]) continue;
             SubdivisionOptions o = sub;
             o.memo = memo.keep ? &memo.verdicts[i] : nullptr;
-            parts[i] = Part{};
-            parts[i].root = subdivide(patches[i], i, o, parts[i].trees, parts[i].subpatches);
+            // Emptied, not freed: a later pass refills the storage this one touched.
+            Part& part = parts[i];
+            part.trees.nodes.clear();
+            part.trees.roots.clear();
+            part.trees.depth = 0;
+            part.subpatches.clear();
+            part.root = subdivide(patches[i], i, o, part.trees, part.subpatches);
         }
     });
     PatchRanges at{std::vector<int>(np + 1, 0), std::vector<int>(np + 1, 0)};
@@ -49,7 +55,9 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
         at.leaf_start[i + 1] = at.leaf_start[i] + static_cast<int>(parts[i].subpatches.size());
         trees.depth = std::max(trees.depth, parts[i].trees.depth);
     }
+    reserve_huge(trees.nodes, at.node_start[np]);
     trees.nodes.resize(at.node_start[np]);
+    reserve_huge(subpatches, at.leaf_start[np]);
     subpatches.resize(at.leaf_start[np]);
     trees.roots.resize(np);
     parallel_chunks(np, threads, [&](int begin, int end) {

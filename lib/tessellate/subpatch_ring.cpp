@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/subpatch_ring.h>
 
 #include <algorithm>
@@ -54,34 +55,38 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
                             const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
                             const BoundaryMatch& match, const EdgeGraph& graph, bool crack_free,
                             int threads) {
-    // Each subpatch's ring and centre point on its own, in parallel.
-    const size_t count = subpatches.size();
-    std::vector<std::vector<RingVertex>> ring_of(count);
+    // Each subpatch's ring and centre point on its own, in parallel; the rings
+    // of a block end to end in one array (not one allocation per subpatch).
+    const int count = static_cast<int>(subpatches.size());
+    std::vector<std::vector<RingVertex>> block_rings((count + kSubpatchBlock - 1) / kSubpatchBlock);
     SubpatchRings out;
     out.centre_point.resize(count);
-    pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
+    out.start.assign(count + 1, 0);
+    out.centre.resize(count);
+    pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         std::vector<int> scratch;
         std::vector<SideVertex> inside;
+        std::vector<RingVertex> ring;
+        std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock];
         for (int i = begin; i < end; ++i) {
             const Subpatch& sp = subpatches[i];
             const ParamRect& r = sp.rect;
-            collect_ring(reg, match, graph, sp.patch, r, crack_free, scratch, inside, ring_of[i]);
+            collect_ring(reg, match, graph, sp.patch, r, crack_free, scratch, inside, ring);
+            block.insert(block.end(), ring.begin(), ring.end());
+            out.start[i + 1] = static_cast<int>(ring.size());
             const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
             const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
             out.centre_point[i] = evaluate(patches[sp.patch], sc, tc).point;
         }
     });
-    // The rings laid end to end by a prefix sum.
-    out.start.assign(count + 1, 0);
-    out.centre.resize(count);
-    for (size_t i = 0; i < count; ++i)
-        out.start[i + 1] = out.start[i] + static_cast<int>(ring_of[i].size());
+    // The blocks laid end to end by a prefix sum.
+    for (int i = 0; i < count; ++i) out.start[i + 1] += out.start[i];
+    reserve_huge(out.vertices, out.start[count]);
     out.vertices.resize(out.start[count]);
-    pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
-        for (int i = begin; i < end; ++i) {
-            std::copy(ring_of[i].begin(), ring_of[i].end(), out.vertices.begin() + out.start[i]);
-            std::vector<RingVertex>().swap(ring_of[i]);
-        }
+    pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int) {
+        std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock];
+        std::copy(block.begin(), block.end(), out.vertices.begin() + out.start[begin]);
+        std::vector<RingVertex>().swap(block);
     });
     return out;
 }

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// Large output arrays backed by 2 MB pages where the system offers them
+// (Linux transparent huge pages in "madvise" mode). A tessellation's arrays
+// are written once, front to back; on 4 KB pages their first touch costs one
+// page fault per 4 KB (teapot at D = 0.001: about 20,000 faults, a third of
+// the run's CPU time in the kernel; docs/results/tessellation.md, sixth
+// session i11h). Only the storage changes: the arrays, their values and the
+// output are the same.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace seamless {
+
+// Asks for 2 MB pages on the whole 2 MB pages inside [p, p + bytes) (nothing
+// where the system has none, or the range holds none).
+void advise_huge_pages(void* p, std::size_t bytes);
+
+// v.reserve(n) with the new storage advised for 2 MB pages before anything
+// is written to it (v's elements are copied in after the advice); a resize to
+// at most n then touches it.
+template <class T> void reserve_huge(std::vector<T>& v, std::size_t n) {
+    if (n <= v.capacity()) return;
+    std::vector<T> w;
+    w.reserve(n);
+    advise_huge_pages(w.data(), w.capacity() * sizeof(T));
+    w.insert(w.end(), v.begin(), v.end());
+    v.swap(w);
+}
+
+} // namespace seamless
