@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/bezier_patch.h>
+#include <seamless/spline/fixed_degree.h>
 
 #include <algorithm>
 #include <cassert>
@@ -109,6 +110,8 @@ Vec3 evaluate_point(const BezierPatch& b, double s, double t) {
 }
 
 SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
+    // Bicubic: the same operations as below, unrolled (fixed_degree.h).
+    if (b.p == 3 && b.q == 3) return evaluate_fixed<3, 3, true>(b, s, t);
     HPoint X, Xu, Xv;
     homogeneous_derivatives(b, s, t, X, Xu, Xv);
     // Quotient rule: P = X/W, P_s = (X_s - P W_s) / W.

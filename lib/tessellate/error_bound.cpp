@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/spline/fixed_degree.h>
 #include <seamless/tessellate/error_bound.h>
 #include <seamless/tessellate/net_bounds.h>
 #include <seamless/tessellate/planarity.h>
@@ -10,7 +11,6 @@
 #include <cstring>
 #include <limits>
 #include <optional>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -22,71 +22,6 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 struct Param {
     double s = 0, t = 0;
 };
-
-// evaluate() (bezier_patch.h) with the degrees known at compile time: the
-// same operations in the same order (so the same values), the loops unrolled.
-// The bound's foot projections evaluate the surface millions of times
-// (docs/results/tessellation.md, profile), nearly always a bicubic patch.
-template <int N> void bernstein_fixed(double s, double* B, double* dB) {
-    double tmp[N + 1];
-    tmp[0] = 1.0;
-    const double r = 1.0 - s;
-    for (int d = 1; d < N; ++d) {
-        double prev = 0.0;
-        for (int i = 0; i < d; ++i) {
-            const double x = tmp[i];
-            tmp[i] = prev + r * x;
-            prev = s * x;
-        }
-        tmp[d] = prev;
-    }
-    for (int i = 0; i <= N; ++i) {
-        const double a = i >= 1 ? tmp[i - 1] : 0.0;
-        const double b = i <= N - 1 ? tmp[i] : 0.0;
-        B[i] = s * a + r * b;
-        dB[i] = N * (a - b);
-    }
-}
-
-// Rational: in homogeneous coordinates and the quotient rule, as evaluate().
-// Polynomial (every weight 1): no weight sums and no quotient (W = 1 up to the
-// rounding of the Bernstein sums, which the rounding allowance counts).
-template <int P, int Q, bool Rational>
-SurfacePoint evaluate_fixed(const BezierPatch& b, double s, double t) {
-    using Point = std::conditional_t<Rational, HPoint, Vec3>;
-    auto point = [&b](int i, int j) {
-        const HPoint& h = b.at(i, j);
-        if constexpr (Rational)
-            return h;
-        else
-            return Vec3{h.x, h.y, h.z};
-    };
-    double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
-    bernstein_fixed<P>(s, Bu, dBu);
-    bernstein_fixed<Q>(t, Bv, dBv);
-    Point X{}, Xu{}, Xv{};
-    if constexpr (Rational) X.w = Xu.w = Xv.w = 0;
-    for (int i = 0; i <= P; ++i) {
-        Point row{}, rowv{};
-        if constexpr (Rational) row.w = rowv.w = 0;
-        for (int j = 0; j <= Q; ++j) {
-            row = row + Bv[j] * point(i, j);
-            rowv = rowv + dBv[j] * point(i, j);
-        }
-        X = X + Bu[i] * row;
-        Xu = Xu + dBu[i] * row;
-        Xv = Xv + Bu[i] * rowv;
-    }
-    if constexpr (!Rational) {
-        return {X, Xu, Xv};
-    } else {
-        SurfacePoint r;
-        r.point = X.xyz() / X.w;
-        r.du = (Xu.xyz() - Xu.w * r.point) / X.w;
-        r.dv = (Xv.xyz() - Xv.w * r.point) / X.w;
-        return r;
-    }
-}
 
 SurfacePoint surface_point(const BezierPatch& b, double s, double t) {
     if (b.p == 3 && b.q == 3)

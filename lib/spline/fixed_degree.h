@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// evaluate() (bezier_patch.h) with the degrees known at compile time: the
+// same operations in the same order (so the same values), the loops unrolled.
+// The error bounds' foot projections and the tessellation's normals, centres
+// and vertices evaluate the surface millions of times, nearly always on a
+// bicubic patch (docs/results/tessellation.md, profile).
+#pragma once
+
+#include <seamless/spline/bezier_patch.h>
+
+namespace seamless {
+
+// B_i^N(s) and d/ds B_i^N(s), i = 0..N, as bezier_patch.cpp's bernstein().
+template <int N> void bernstein_fixed(double s, double* B, double* dB) {
+    double tmp[N + 1];
+    tmp[0] = 1.0;
+    const double r = 1.0 - s;
+    for (int d = 1; d < N; ++d) {
+        double prev = 0.0;
+        for (int i = 0; i < d; ++i) {
+            const double x = tmp[i];
+            tmp[i] = prev + r * x;
+            prev = s * x;
+        }
+        tmp[d] = prev;
+    }
+    for (int i = 0; i <= N; ++i) {
+        const double a = i >= 1 ? tmp[i - 1] : 0.0;
+        const double b = i <= N - 1 ? tmp[i] : 0.0;
+        B[i] = s * a + r * b;
+        dB[i] = N * (a - b);
+    }
+}
+
+// Rational: in homogeneous coordinates and the quotient rule, as evaluate()
+// (for any patch of these degrees, rational or not: evaluate()'s values), two
+// lanes at a time (x, y) and (z, w) (SSE2; GCC/Clang vector extension), each
+// lane doing the scalar form's operations in its order. Polynomial (every
+// weight 1): no weight sums and no quotient (W = 1 up to the rounding of the
+// Bernstein sums, which the error bounds' rounding allowance counts).
+template <int P, int Q, bool Rational>
+SurfacePoint evaluate_fixed(const BezierPatch& b, double s, double t) {
+    double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
+    bernstein_fixed<P>(s, Bu, dBu);
+    bernstein_fixed<Q>(t, Bv, dBv);
+    if constexpr (Rational) {
+        using Lanes = double __attribute__((vector_size(16)));
+        Lanes X[2] = {}, Xu[2] = {}, Xv[2] = {};
+        for (int i = 0; i <= P; ++i) {
+            Lanes row[2] = {}, rowv[2] = {};
+            for (int j = 0; j <= Q; ++j) {
+                const HPoint& h = b.at(i, j);
+                const Lanes c[2] = {{h.x, h.y}, {h.z, h.w}};
+                for (int k = 0; k < 2; ++k) {
+                    row[k] = row[k] + Bv[j] * c[k];
+                    rowv[k] = rowv[k] + dBv[j] * c[k];
+                }
+            }
+            for (int k = 0; k < 2; ++k) {
+                X[k] = X[k] + Bu[i] * row[k];
+                Xu[k] = Xu[k] + dBu[i] * row[k];
+                Xv[k] = Xv[k] + Bu[i] * rowv[k];
+            }
+        }
+        // Quotient rule: P = X/W, P_s = (X_s - P W_s) / W.
+        SurfacePoint r;
+        const double w = X[1][1];
+        r.point = Vec3{X[0][0], X[0][1], X[1][0]} / w;
+        r.du = (Vec3{Xu[0][0], Xu[0][1], Xu[1][0]} - Xu[1][1] * r.point) / w;
+        r.dv = (Vec3{Xv[0][0], Xv[0][1], Xv[1][0]} - Xv[1][1] * r.point) / w;
+        return r;
+    } else {
+        Vec3 X{}, Xu{}, Xv{};
+        for (int i = 0; i <= P; ++i) {
+            Vec3 row{}, rowv{};
+            for (int j = 0; j <= Q; ++j) {
+                const HPoint& h = b.at(i, j);
+                const Vec3 c{h.x, h.y, h.z};
+                row = row + Bv[j] * c;
+                rowv = rowv + dBv[j] * c;
+            }
+            X = X + Bu[i] * row;
+            Xu = Xu + dBu[i] * row;
+            Xv = Xv + Bu[i] * rowv;
+        }
+        return {X, Xu, Xv};
+    }
+}
+
+} // namespace seamless
