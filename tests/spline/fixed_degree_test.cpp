@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// evaluate() of a bicubic patch runs the fixed-degree path (fixed_degree.h):
+// the same values as the generic Bernstein sums, bit for bit.
+#include <seamless/spline/bezier_patch.h>
+#include <seamless/spline/fixed_degree.h>
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace seamless;
+
+namespace {
+
+BezierPatch random_bicubic(std::mt19937& rng, bool rational) {
+    std::uniform_real_distribution<double> P(-3.0, 3.0), W(0.2, 5.0);
+    BezierPatch b;
+    b.rational = rational;
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 3; ++j)
+            b.at(i, j) = HPoint::from({P(rng), P(rng), P(rng)}, rational ? W(rng) : 1.0);
+    return b;
+}
+
+} // namespace
+
+TEST_CASE("evaluate() of a bicubic patch gives the generic sums' point, bit for bit",
+          "[spline][fixed_degree]") {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    for (int n = 0; n < 200; ++n) {
+        const BezierPatch b = random_bicubic(rng, n % 2 == 1);
+        for (int k = 0; k < 20; ++k) {
+            const double s = k == 0 ? 0.0 : k == 1 ? 1.0 : U(rng), t = k == 0 ? 1.0 : U(rng);
+            // evaluate_homogeneous runs the generic loops of any degree.
+            const HPoint X = evaluate_homogeneous(b, s, t);
+            const Vec3 p = X.xyz() / X.w;
+            const SurfacePoint sp = evaluate(b, s, t);
+            CHECK(sp.point.x == p.x);
+            CHECK(sp.point.y == p.y);
+            CHECK(sp.point.z == p.z);
+            // The polynomial path (no quotient) is within rounding of it.
+            if (!b.rational) {
+                const SurfacePoint q = evaluate_fixed<3, 3, false>(b, s, t);
+                CHECK(norm(q.point - sp.point) <= 1e-13);
+                CHECK(norm(q.du - sp.du) <= 1e-12);
+                CHECK(norm(q.dv - sp.dv) <= 1e-12);
+            }
+        }
+    }
+}
