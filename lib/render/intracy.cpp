@@ -345,7 +345,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     const int H = opt.height > 0 ? opt.height : scene.camera.height;
     const int L = opt.levels > 0 ? opt.levels : scene.levels;
     const auto t0 = std::chrono::steady_clock::now();
-    const ProjectedScene ps = project_scene(scene, W, H); // step 1
+    const ProjectedScene ps = project_scene(scene, W, H, opt.threads); // step 1
     // Secondary rays (SHADE steps 2-4) need the triangles and patch trees; a
     // scene without lit diffuse or specular surfaces and without mirrors or
     // glass needs none, and gets none.

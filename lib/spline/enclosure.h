@@ -35,6 +35,8 @@ struct PatchForms {
     IVec3 control_hull;   // hull of the projected control points, outward rounded
 };
 PatchForms patch_forms(const BezierPatch& b);
+// The same into f (38 KB: no temporary copy of the whole set).
+void patch_forms(const BezierPatch& b, PatchForms& f);
 
 struct PatchEnclosure {
     IVec3 point, ds, dt, normal; // over the box; derivatives in local (s, t)
