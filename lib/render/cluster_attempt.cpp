@@ -136,13 +136,15 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
             box.t = hull(box.t, marks[k].box.t);
         }
     const ProjectedPatch& pp = ps_.patches[best_patch];
+    IVec3 point; // step 7's enclosure of the hits, SHADE's too
     {
         const StepClock clock(st.certify_seconds);
         const Interval a = screen_a(ps_, B.x0, B.x1), b = screen_b(ps_, B.y0, B.y1);
         cluster_system(pp.forms, a, b, sys_);
         if (!certify_cluster(sys_, box, &st.hs_steps))
             return {certificate_cause(marks, n), levels_over};
-        const Interval qbest = enclose_point(pp.forms, box)[2];
+        point = enclose_point(pp.forms, box);
+        const Interval qbest = point[2];
         if (!(qbest.lo() > 0)) return {certificate_cause(marks, n), levels_over};
         // Nearest: every other mark q-separated from it, or, where depths
         // overlap, beyond a plane that the best patch's marks lie before.
@@ -168,7 +170,7 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
     const StepClock shading(st.shade_seconds);
     const Mark m{best_patch, box, {}};
     // Step 8: SHADE (cluster_shade.h).
-    const ClusterShading cs = shader_.enclose_intensity(best_patch, box, st);
+    const ClusterShading cs = shader_.enclose_intensity(best_patch, box, point, st);
     if (!cs.decided) return {RenderStats::light, levels_over};
     const auto& I = cs.I;
     const bool secondary = cs.secondary, shadowed = cs.shadowed;

@@ -225,8 +225,12 @@ IVec3 enclose_point(const PatchForms& f, ParamBox box) {
 }
 
 PatchEnclosure enclose(const PatchForms& f, ParamBox box) {
+    return enclose(f, box, enclose_point(f, box));
+}
+
+PatchEnclosure enclose(const PatchForms& f, ParamBox box, const IVec3& point) {
     PatchEnclosure e;
-    e.point = enclose_point(f, box);
+    e.point = point;
     IVec3 Xs, Xt;
     for (int c = 0; c < 3; ++c) {
         Xs[c] = enclose(f.Xs, f.Xss, f.Xst, c, box);

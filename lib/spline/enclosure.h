@@ -54,6 +54,8 @@ Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, i
 
 IVec3 enclose_point(const PatchForms& f, ParamBox box);
 PatchEnclosure enclose(const PatchForms& f, ParamBox box);
+// The same with point = enclose_point(f, box) already known (the same result).
+PatchEnclosure enclose(const PatchForms& f, ParamBox box, const IVec3& point);
 
 // The second partial derivatives of the point over a box: P_ss, P_st, P_tt
 // (Horner on the power forms; rational patches by differentiating X = P W twice:
