@@ -85,7 +85,7 @@ bool share_corner(const BezierPatch& p, const BezierPatch& q) {
 ClusterAttempt::ClusterAttempt(const ProjectedScene& ps, const Scene& scene,
                                const TriangleScene* ts, const std::vector<int>* neighbours,
                                const RenderOptions& opt, Image& image, int levels)
-    : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels),
+    : ps_(ps), scene_(scene), ts_(ts), dither_(opt.dither), image_(image), levels_(levels),
       shader_(ps, scene, ts, neighbours, levels, opt.dither) {}
 
 // Why the certificate failed on B's marks (RenderStats::SplitCause).
@@ -184,7 +184,7 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
     }
     bool span = false;
     for (int c = 0; c < 3; ++c) {
-        span |= hi[c] - lo[c] > (opt_.dither ? 1 : 0);
+        span |= hi[c] - lo[c] > (dither_ ? 1 : 0);
         two |= hi[c] > lo[c];
     }
     // Step 9 with a second-order criterion (second_order.h) where the
@@ -199,10 +199,10 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
         const double cb[2] = {ps_.frame.screen_b(B.y0 + 0.5), ps_.frame.screen_b(B.y1 + 0.5)};
         const SecondOrder so =
             second_order(pp, *cs.lighting, ps_.lighting.materials[pp.material], box, cs.e, sys_, ca,
-                         cb, levels_, opt_.dither, pixel.sys, st);
+                         cb, levels_, dither_, pixel.sys, st);
         if (!so.paint) {
             // Halving B quarters the bound: children may pass where B failed.
-            if (so.error_levels < 4 * (opt_.dither ? 0.5 : 1.0)) levels_over = 0;
+            if (so.error_levels < 4 * (dither_ ? 0.5 : 1.0)) levels_over = 0;
             return {RenderStats::span, levels_over};
         }
         ++st.second_order_painted;
@@ -246,7 +246,7 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
             image_.surface_at(x, y) = 1;
             for (int c = 0; c < 3; ++c)
                 image_.at(x, y, c) = static_cast<std::uint16_t>(bilinear_level(
-                    corner, c, fx, fy, opt_.dither ? dither(x, y, c) : 0.0, levels_, lo[c], hi[c]));
+                    corner, c, fx, fy, dither_ ? dither(x, y, c) : 0.0, levels_, lo[c], hi[c]));
         }
     }
     ++st.subscreens_by_size[pixel_count(B)];

@@ -74,7 +74,7 @@ class ClusterAttempt {
     const ProjectedScene& ps_;
     const Scene& scene_;
     const TriangleScene* ts_; // null: no secondary rays in play
-    const RenderOptions& opt_;
+    bool dither_;             // RenderOptions::dither
     Image& image_;
     int levels_;
     ClusterShader shader_;
