@@ -224,11 +224,12 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
     return r;
 }
 
-ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, RenderStats& st) {
+ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, const IVec3& point,
+                                                RenderStats& st) {
     ClusterShading r;
     const ProjectedPatch& pp = ps_.patches[patch];
     // Step 8: SHADE over the hulls of the intersection points and normals.
-    const PatchEnclosure e = enclose(pp.forms, box);
+    const PatchEnclosure e = enclose(pp.forms, box, point);
     const V3<Interval> P = v3(e.point), N = v3(e.normal);
     const Material& mat = ps_.lighting.materials[pp.material];
     // The points in world coordinates: the rotated camera box, cut down to

@@ -53,8 +53,11 @@ class ClusterShader {
                   const std::vector<int>* neighbours, int levels, bool dither);
 
     // SHADE for every ray of B hitting patch `patch` within `box` (camera
-    // coordinates). Secondary clusters' CPU seconds go to st.secondary_seconds.
-    ClusterShading enclose_intensity(int patch, const ParamBox& box, RenderStats& st);
+    // coordinates); point: enclose_point(patch's forms, box), which step 7
+    // has already computed. Secondary clusters' CPU seconds go to
+    // st.secondary_seconds.
+    ClusterShading enclose_intensity(int patch, const ParamBox& box, const IVec3& point,
+                                     RenderStats& st);
 
     // Step 2 at the world-space hull Pw of a cluster's points on `patch`:
     // fills `visible` with the lights that reach every point.

@@ -7,6 +7,7 @@
 #include <stb/stb_image_write.h> // implementation in Debian's libstb
 
 #include <cmath>
+#include <mutex>
 
 namespace seamless {
 
@@ -15,6 +16,12 @@ std::uint8_t level_to_byte(int k, int levels) {
 }
 
 void write_png(const std::filesystem::path& path, const Image& im) {
+    // Every row with PNG's Sub filter instead of stb's default trial of all
+    // five per row: the images are regions of equal level, which Sub turns
+    // into runs of zeros. Teapot 640x480: 0.044 -> 0.027 s and 145 -> 131 KB;
+    // scenes 1 and 3: 10% smaller and 12-22% faster. The pixels are the same.
+    static std::once_flag sub_filter;
+    std::call_once(sub_filter, [] { stbi_write_force_png_filter = 1; });
     std::vector<std::uint8_t> rgb(im.level.size());
     for (size_t k = 0; k < rgb.size(); ++k) rgb[k] = level_to_byte(im.level[k], im.levels);
     write_atomically(path, [&](const std::filesystem::path& tmp) {

@@ -18,25 +18,14 @@
 //          (remark 1), by certified Newton with the covering method as the
 //          fallback (pixel_solve.h); so is every pixel of a B of at most
 //          RenderOptions::pixel_subscreen pixels, without a cluster attempt;
-//  step 7: otherwise, if the nearest marked patch is q-separated from all the
-//          others (a nearest q-connected set, Theorem 10 remark 4), and the
-//          Hansen-Sengupta operator over the whole cluster maps its box into
-//          its interior (Theorem 6 iii for every ray of B at once: each ray
-//          hits it, exactly once in the box), then every ray of B sees that
-//          patch and nothing else;
-//  step 8: SHADE encloses the intensity of B over the hulls of point and normal
-//          (cluster_shade.h);
-//  step 9: if every channel's enclosure holds at most two levels, B is painted
-//          with the bilinear form of its four corner intensities (corner rays by
-//          Hansen-Sengupta, remark 2) plus dither in [-0.5, 0.5], kept within
-//          the enclosure's levels; without dithering B must hold one level;
+//  steps 7-9: otherwise the cluster attempt (cluster_attempt.h): a nearest
+//          patch certified to cover B (Theorem 6 iii for every ray of B at
+//          once), SHADE's intensity enclosure, and B painted where it holds at
+//          most two levels (bilinear form of the corner intensities, remark 2);
 //  step 10: otherwise B is split into four (remark 3), or two, and pushed;
 //          children of a B whose step 9 failed by far skip steps 7-9.
-// Step 7's certificate replaces the paper's conditions a)-c) of remark 4 with a
-// proof: a pixel painted from a cluster is never wrong by more than one level
-// (the enclosure holds the true intensity), and background is never painted
-// where a patch is hit.
-#include <seamless/render/cluster_shade.h>
+// Background is never painted where a patch is hit.
+#include <seamless/render/cluster_attempt.h>
 #include <seamless/render/mark.h>
 #include <seamless/render/parallel.h>
 #include <seamless/render/pixel_solve.h>
@@ -44,7 +33,6 @@
 #include <seamless/render/projection.h>
 #include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
-#include <seamless/render/second_order.h>
 #include <seamless/render/shading.h>
 #include <seamless/render/step_clock.h>
 #include <seamless/render/trace.h>
@@ -69,42 +57,13 @@ struct SubScreen {
     int cause;            // why its nearest attempting ancestor split (RenderStats::SplitCause)
 };
 
-// SHADE for one ray at an exact hit (steps 6 and 7's corner rays). With
-// secondary rays in play (a triangle scene), shadows, reflection and refraction
-// are traced against the triangles (section 7, SHADE); the local illumination
-// model is the same either way.
-std::array<double, 3> shade_hit(const ProjectedScene& ps, const Scene& scene,
-                                const TriangleScene* ts, const PixelHit& h) {
-    Vec3 P, N;
-    const ProjectedPatch& pp = ps.patches[h.patch];
-    surface_frame(pp.patch, h.s, h.t, P, N);
-    if (!ts)
-        return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N),
-                             Vec3{});
-    const Vec3 Pw = ps.frame.to_world(P);
-    return shade_ray(scene, *ts, Pw, normalize(ps.frame.to_world_direction(N)), pp.material,
-                     h.patch, normalize(ps.frame.eye - Pw), 0);
-}
-
-// Deterministic dither in [-0.5, 0.5) per pixel and channel (remark 2), so
-// that sequential and parallel runs paint the same image.
-double dither(int x, int y, int c) {
-    std::uint64_t z = (static_cast<std::uint64_t>(x) << 40) ^
-                      (static_cast<std::uint64_t>(y) << 16) ^ static_cast<std::uint64_t>(c) ^
-                      0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0) - 0.5;
-}
-
 class PartRenderer {
   public:
     PartRenderer(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
                  const std::vector<int>* neighbours, const RenderOptions& opt, Image& image,
                  int levels)
         : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels),
-          shader_(ps, scene, ts, neighbours, levels, opt.dither) {
+          attempt_(ps, scene, ts, neighbours, opt, image, levels) {
         const Vec3 bg = ps.lighting.background;
         for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
     }
@@ -230,17 +189,20 @@ class PartRenderer {
         }
         // Step 5: B shrinks to the hull of the projections of the marked patches.
         if (improve(B, first, nmarks, st)) return;
-        // Step 7: a nearest q-separated patch that certainly covers B.
-        levels_over_ = 0;
+        // Steps 7 to 9: the cluster attempt (cluster_attempt.h).
+        int levels_over = 0;
         int cause = B.cause;
         if (B.attempt) {
-            cause = try_paint(B, first, nmarks, st);
-            if (cause < 0) return;
+            const ClusterAttemptResult r = attempt_.try_paint(
+                {B.x0, B.y0, B.x1, B.y1}, &arena_[first], nmarks, coefs_, pixel_, st);
+            if (r.cause < 0) return;
+            cause = r.cause;
+            levels_over = r.levels_over;
             ++st.attempts_failed[cause];
         }
         // Step 9 failed by far: the children's enclosures (about half as wide)
         // would fail too; they split at once and their children try again.
-        const bool kids_attempt = levels_over_ <= 2 * ((opt_.dither ? 1 : 0) + 1);
+        const bool kids_attempt = levels_over <= 2 * ((opt_.dither ? 1 : 0) + 1);
         // Step 10: split into four while possible (remark 3), else two.
         const int w = B.x1 - B.x0 + 1, h = B.y1 - B.y0 + 1;
         const int xm = B.x0 + w / 2 - 1, ym = B.y0 + h / 2 - 1;
@@ -360,193 +322,6 @@ class PartRenderer {
         return false;
     }
 
-    // The normal of the best patch at the middle of its box, turned so that
-    // every ray of B crosses planes with that normal forward: a point X = Z d of
-    // a ray d = (a, b, 1) then has n . X = Z (n . d), growing with the depth Z.
-    // So where all points of one patch satisfy n . X < c and all of another
-    // n . X > c, the first is nearer on every ray of B that meets both (a plane
-    // separating them, with the eye on the first one's side along the rays).
-    // false when n . d may vanish on B.
-    static bool separating_normal(const ProjectedPatch& pp, const ParamBox& box, Interval a,
-                                  Interval b, Vec3& n) {
-        Vec3 P;
-        surface_frame(pp.patch, box.s.mid(), box.t.mid(), P, n);
-        const Interval nd = Interval(n.x) * a + Interval(n.y) * b + Interval(n.z);
-        if (nd.hi() < 0) n = -1.0 * n;
-        return nd.lo() > 0 || nd.hi() < 0;
-    }
-
-    // Why the certificate failed on marks first..first+n (RenderStats::SplitCause).
-    int certificate_cause(size_t first, size_t n) const {
-        const int p0 = arena_[first].patch;
-        bool one_surface = true, one_patch = true;
-        for (size_t k = first; k < first + n; ++k) {
-            const int p = arena_[k].patch;
-            one_patch &= p == p0;
-            one_surface &= ps_.patches[p].patch.surface == ps_.patches[p0].patch.surface;
-        }
-        if (one_patch) return RenderStats::one_patch;
-        if (one_surface) return RenderStats::seam;
-        // A seam between surfaces: every marked patch meets another at a corner.
-        for (size_t k = first; k < first + n; ++k) {
-            bool meets = false;
-            for (size_t j = first; j < first + n && !meets; ++j)
-                meets = arena_[j].patch != arena_[k].patch &&
-                        share_corner(ps_.patches[arena_[k].patch].patch,
-                                     ps_.patches[arena_[j].patch].patch);
-            if (!meets) return RenderStats::surfaces;
-        }
-        return RenderStats::surface_seam;
-    }
-    static bool share_corner(const BezierPatch& p, const BezierPatch& q) {
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j) {
-                const Vec3 d = p.corner(i) - q.corner(j);
-                const double scale = 1e-9 * (1 + norm(p.corner(i)));
-                if (std::abs(d.x) <= scale && std::abs(d.y) <= scale && std::abs(d.z) <= scale)
-                    return true;
-            }
-        return false;
-    }
-
-    // Steps 7 to 9. Returns -1 if B was painted, else why not (RenderStats::SplitCause).
-    int try_paint(const SubScreen& B, size_t first, size_t n, RenderStats& st) {
-        // Depth (q) intervals. The marks of one patch (halves of bisections,
-        // separated pieces) are taken together: their hull box holds every hit
-        // of that patch in B. The nearest patch must be q-separated from all
-        // other marks (a nearest q-connected set of one patch).
-        int best_patch = -1;
-        double best_lo = std::numeric_limits<double>::infinity();
-        for (size_t k = first; k < first + n; ++k) {
-            const Interval q = arena_[k].hull[2];
-            if (q.lo() < best_lo) {
-                best_lo = q.lo();
-                best_patch = arena_[k].patch;
-            }
-        }
-        if (best_patch < 0) return RenderStats::none;
-        ParamBox box{Interval::empty(), Interval::empty()};
-        for (size_t k = first; k < first + n; ++k)
-            if (arena_[k].patch == best_patch) {
-                box.s = hull(box.s, arena_[k].box.s);
-                box.t = hull(box.t, arena_[k].box.t);
-            }
-        const ProjectedPatch& pp = ps_.patches[best_patch];
-        {
-            const StepClock clock(st.certify_seconds);
-            const Interval a = screen_a(B.x0, B.x1), b = screen_b(B.y0, B.y1);
-            cluster_system(pp.forms, a, b, sys_);
-            if (!certify_cluster(sys_, box, &st.hs_steps)) return certificate_cause(first, n);
-            const Interval qbest = enclose_point(pp.forms, box)[2];
-            if (!(qbest.lo() > 0)) return certificate_cause(first, n);
-            // Nearest: every other mark q-separated from it, or, where depths
-            // overlap, beyond a plane that the best patch's marks lie before.
-            Interval best_range = Interval::empty();
-            Vec3 normal{};
-            for (size_t k = first; k < first + n; ++k) {
-                if (arena_[k].patch == best_patch) continue;
-                if (arena_[k].hull[2].lo() > qbest.hi()) continue;
-                if (best_range.is_empty()) {
-                    if (!separating_normal(pp, box, a, b, normal)) return RenderStats::not_nearest;
-                    for (size_t j = first; j < first + n; ++j)
-                        if (arena_[j].patch == best_patch)
-                            best_range =
-                                hull(best_range, plane_range(coefs_, pp.shape, arena_[j], normal));
-                }
-                const Interval r =
-                    plane_range(coefs_, ps_.patches[arena_[k].patch].shape, arena_[k], normal);
-                if (!(r.lo() > best_range.hi())) return RenderStats::not_nearest;
-            }
-            st.nearest_by_plane += !best_range.is_empty();
-        }
-        const StepClock shading(st.shade_seconds);
-        const Mark m{best_patch, box, {}};
-        // Step 8: SHADE (cluster_shade.h).
-        const ClusterShading cs = shader_.enclose_intensity(best_patch, box, st);
-        if (!cs.decided) return RenderStats::light;
-        const auto& I = cs.I;
-        const bool secondary = cs.secondary, shadowed = cs.shadowed;
-        int lo[3], hi[3];
-        bool two = false;
-        for (int c = 0; c < 3; ++c) {
-            if (!I[c].is_finite()) return RenderStats::span;
-            lo[c] = quantise(I[c].lo(), levels_);
-            hi[c] = quantise(I[c].hi(), levels_);
-            levels_over_ = std::max(levels_over_, hi[c] - lo[c]);
-        }
-        bool span = false;
-        for (int c = 0; c < 3; ++c) {
-            span |= hi[c] - lo[c] > (opt_.dither ? 1 : 0);
-            two |= hi[c] > lo[c];
-        }
-        // Step 9 with a second-order criterion (second_order.h) where the
-        // enclosure spans too many levels: primary clusters only (reflected
-        // and refracted light keeps the plain rule), B not tiny.
-        std::array<double, 3> corner[4];
-        if (span) {
-            const long long area = static_cast<long long>(B.x1 - B.x0 + 1) * (B.y1 - B.y0 + 1);
-            if (secondary || area < kSecondOrderArea) return RenderStats::span;
-            ++st.second_order_attempts;
-            const double ca[2] = {ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_a(B.x1 + 0.5)};
-            const double cb[2] = {ps_.frame.screen_b(B.y0 + 0.5), ps_.frame.screen_b(B.y1 + 0.5)};
-            const SecondOrder so =
-                second_order(pp, *cs.lighting, ps_.lighting.materials[pp.material], box, cs.e, sys_,
-                             ca, cb, levels_, opt_.dither, pixel_.sys, st);
-            if (!so.paint) {
-                // Halving B quarters the bound: children may pass where B failed.
-                if (so.error_levels < 4 * (opt_.dither ? 0.5 : 1.0)) levels_over_ = 0;
-                return RenderStats::span;
-            }
-            ++st.second_order_painted;
-            st.second_order_pixels += area;
-            for (int k = 0; k < 4; ++k) corner[k] = so.corner[k];
-        }
-        st.secondary_clusters += secondary;
-        st.shadowed_clusters += shadowed;
-        if (!two) {
-            for (int y = B.y0; y <= B.y1; ++y)
-                for (int x = B.x0; x <= B.x1; ++x) {
-                    for (int c = 0; c < 3; ++c)
-                        image_.at(x, y, c) = static_cast<std::uint16_t>(lo[c]);
-                    image_.surface_at(x, y) = 1;
-                }
-            count(B, st);
-            return -1;
-        }
-        // Step 9 with remark 2: corner rays, bilinear form, dither.
-        const int cx[4] = {B.x0, B.x1, B.x0, B.x1}, cy[4] = {B.y0, B.y0, B.y1, B.y1};
-        const Mark only{m.patch, box, {}};
-        for (int k = 0; k < 4 && !span; ++k) {
-            double cs, ct;
-            const double ca = ps_.frame.screen_a(cx[k] + 0.5), cb = ps_.frame.screen_b(cy[k] + 0.5);
-            if (newton_corner(pp.patch, ca, cb, box, cs, ct)) {
-                ++st.primary_rays;
-                corner[k] = shade_hit(ps_, scene_, ts_, PixelHit{m.patch, cs, ct, 0});
-                continue;
-            }
-            const PixelHit h = solve_pixel(ps_, ca, cb, &only, 1, pixel_, st);
-            if (h.patch < 0) {
-                for (int c = 0; c < 3; ++c) corner[k][c] = I[c].mid();
-            } else {
-                corner[k] = shade_hit(ps_, scene_, ts_, h);
-            }
-        }
-        const double wx = std::max(1, B.x1 - B.x0), wy = std::max(1, B.y1 - B.y0);
-        for (int y = B.y0; y <= B.y1; ++y) {
-            const double fy = (y - B.y0) / wy;
-            for (int x = B.x0; x <= B.x1; ++x) {
-                const double fx = (x - B.x0) / wx;
-                image_.surface_at(x, y) = 1;
-                for (int c = 0; c < 3; ++c)
-                    image_.at(x, y, c) = static_cast<std::uint16_t>(
-                        bilinear_level(corner, c, fx, fy, opt_.dither ? dither(x, y, c) : 0.0,
-                                       levels_, lo[c], hi[c]));
-            }
-        }
-        count(B, st);
-        return -1;
-    }
-
     const ProjectedScene& ps_;
     const Scene& scene_;
     const TriangleScene* ts_; // null: no secondary rays in play
@@ -554,16 +329,13 @@ class PartRenderer {
     Image& image_;
     int levels_;
     std::uint16_t bg_[3];
-    int levels_over_ = 0; // the last step 9's widest enclosure in levels (0: not reached)
-    static constexpr int kMaxBisections = 64;         // per marked patch and sub-screen
-    static constexpr long long kSecondOrderArea = 32; // smallest B for step 9's second order
+    static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     std::vector<Mark> arena_, work_;
     SubpatchArena coefs_; // the marks' subpatches
     std::vector<SubScreen> stack_;
     PixelScratch pixel_;
-    SharedMarks shared_; // paint_pixels: the marks of a small B
-    ClusterShader shader_;
-    ClusterSystem sys_;
+    SharedMarks shared_;     // paint_pixels: the marks of a small B
+    ClusterAttempt attempt_; // steps 7 to 9
 };
 
 } // namespace
@@ -573,7 +345,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     const int H = opt.height > 0 ? opt.height : scene.camera.height;
     const int L = opt.levels > 0 ? opt.levels : scene.levels;
     const auto t0 = std::chrono::steady_clock::now();
-    const ProjectedScene ps = project_scene(scene, W, H); // step 1
+    const ProjectedScene ps = project_scene(scene, W, H, opt.threads); // step 1
     // Secondary rays (SHADE steps 2-4) need the triangles and patch trees; a
     // scene without lit diffuse or specular surfaces and without mirrors or
     // glass needs none, and gets none.

@@ -85,6 +85,11 @@ bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b,
         Interval u, v;
         if (!clip_cluster(&arena[m.coef], sh, a, b, u, v, D)) return false;
         if (u.lo() == 0 && u.hi() == 1 && v.lo() == 0 && v.hi() == 1) return true;
+        // A clip that keeps more than four fifths of the box is not worth a
+        // restriction (two de Casteljau passes per row and direction): the
+        // mark keeps its box and subpatch, which hold every hit all the same
+        // (teapot 640x480x16: restrict_subpatch 620 M -> 428 M instructions).
+        if (u.width() * v.width() > 0.8) return true;
         const double before = area(m.box);
         size_t out;
         const ParamBox got = restrict_copy(

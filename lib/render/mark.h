@@ -53,7 +53,8 @@ Mark whole_patch_mark(int patch, const BezierPatch& b, SubpatchShape sh, const I
 // Narrows m for the cluster of primary rays through [a] x [b] (Theorem 10 by
 // Bezier clipping on the subpatch, clip_cluster of primary_cluster.h): up to
 // three passes, each clipping and restricting the subpatch (appended to the
-// arena), while the box shrinks by a fifth. Returns false when no ray of the
+// arena), while the clip shrinks the box by a fifth (a smaller shrink is not
+// restricted: m keeps its box). Returns false when no ray of the
 // cluster meets the patch in m.box. D: the derivative ranges of the last clip
 // (over a subpatch holding the final box), for the silhouette test.
 bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, Mark& m,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/projection.h>
 
+#include <seamless/render/parallel.h>
 #include <seamless/render/trace.h>
 #include <seamless/spline/knot_insertion.h>
 
@@ -20,7 +21,7 @@ double coefficient_magnitude(const PowerForm& f, int c) {
 
 void set_camera_patch(ProjectedPatch& pp, const BezierPatch& b) {
     pp.patch = b;
-    pp.forms = patch_forms(b);
+    patch_forms(b, pp.forms);
     pp.hull = enclose_point(pp.forms, ParamBox{});
     for (int c = 0; c < 4; ++c) pp.slope_s[c] = pp.slope_t[c] = 0;
     for (int c = 0; c < (pp.forms.rational ? 4 : 3); ++c) {
@@ -30,7 +31,7 @@ void set_camera_patch(ProjectedPatch& pp, const BezierPatch& b) {
     pp.shape = subpatch_shape(b);
 }
 
-ProjectedScene project_scene(const Scene& scene, int width, int height) {
+ProjectedScene project_scene(const Scene& scene, int width, int height, int threads) {
     Camera cam = scene.camera;
     cam.width = width;
     cam.height = height;
@@ -43,20 +44,28 @@ ProjectedScene project_scene(const Scene& scene, int width, int height) {
         if (l.on()) ps.lighting.lights.push_back({ps.frame.to_camera(l.position), l.color});
     // World-space forms only for SHADE's light and secondary clusters.
     const bool world = needs_secondary_rays(scene);
-    for (size_t k = 0; k < scene.model.surfaces.size(); ++k) {
-        for (BezierPatch b : bezier_patches(scene.model.surfaces[k], static_cast<int>(k))) {
-            ProjectedPatch pp;
-            if (world) {
-                pp.world = patch_forms(b);
-                pp.has_world = true;
-            }
-            for (int i = 0; i <= b.p; ++i)
-                for (int j = 0; j <= b.q; ++j) b.at(i, j) = ps.frame.to_camera(b.at(i, j));
-            set_camera_patch(pp, b);
-            pp.material = scene.surface_material[k];
-            ps.patches.push_back(std::move(pp));
+    std::vector<BezierPatch> patches;
+    std::vector<int> surface;
+    for (size_t k = 0; k < scene.model.surfaces.size(); ++k)
+        for (const BezierPatch& b : bezier_patches(scene.model.surfaces[k], static_cast<int>(k))) {
+            patches.push_back(b);
+            surface.push_back(static_cast<int>(k));
         }
-    }
+    // A ProjectedPatch is large (its power forms are sized for the highest
+    // degree): built in place, once, in parallel; never copied or moved.
+    ps.patches.resize(patches.size());
+    for_each_item(static_cast<int>(patches.size()), threads, [&](int i) {
+        ProjectedPatch& pp = ps.patches[i];
+        BezierPatch& b = patches[i];
+        if (world) {
+            patch_forms(b, pp.world);
+            pp.has_world = true;
+        }
+        for (int u = 0; u <= b.p; ++u)
+            for (int v = 0; v <= b.q; ++v) b.at(u, v) = ps.frame.to_camera(b.at(u, v));
+        set_camera_patch(pp, b);
+        pp.material = scene.surface_material[surface[i]];
+    });
     return ps;
 }
 

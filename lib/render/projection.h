@@ -45,8 +45,10 @@ struct ProjectedScene {
 // forms, hull, slope bounds, subpatch shape.
 void set_camera_patch(ProjectedPatch& pp, const BezierPatch& b);
 
-// Builds the projected scene for an image of width x height pixels.
-ProjectedScene project_scene(const Scene& scene, int width, int height);
+// Builds the projected scene for an image of width x height pixels, its
+// patches in parallel on `threads` (RenderOptions::threads; the same result
+// for any count).
+ProjectedScene project_scene(const Scene& scene, int width, int height, int threads = 1);
 
 // Surface point and normal of a patch at local (s, t), in camera coordinates,
 // for shading; at a pole (vanishing normal) the normal is taken slightly inside.

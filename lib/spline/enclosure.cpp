@@ -159,6 +159,11 @@ Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, i
 
 PatchForms patch_forms(const BezierPatch& b) {
     PatchForms f;
+    patch_forms(b, f);
+    return f;
+}
+
+void patch_forms(const BezierPatch& b, PatchForms& f) {
     f.X = power_form(b);
     f.Xs = derivative_s(f.X);
     f.Xt = derivative_t(f.X);
@@ -181,7 +186,6 @@ PatchForms patch_forms(const BezierPatch& b) {
     if (!f.rational && (wlo != 1 || whi != 1)) f.rational = true;
     f.w_hull = {wlo, whi};
     f.control_hull = hull3;
-    return f;
 }
 
 IVec3 cross(const IVec3& a, const IVec3& b) {
@@ -221,8 +225,12 @@ IVec3 enclose_point(const PatchForms& f, ParamBox box) {
 }
 
 PatchEnclosure enclose(const PatchForms& f, ParamBox box) {
+    return enclose(f, box, enclose_point(f, box));
+}
+
+PatchEnclosure enclose(const PatchForms& f, ParamBox box, const IVec3& point) {
     PatchEnclosure e;
-    e.point = enclose_point(f, box);
+    e.point = point;
     IVec3 Xs, Xt;
     for (int c = 0; c < 3; ++c) {
         Xs[c] = enclose(f.Xs, f.Xss, f.Xst, c, box);

@@ -35,6 +35,8 @@ struct PatchForms {
     IVec3 control_hull;   // hull of the projected control points, outward rounded
 };
 PatchForms patch_forms(const BezierPatch& b);
+// The same into f (38 KB: no temporary copy of the whole set).
+void patch_forms(const BezierPatch& b, PatchForms& f);
 
 struct PatchEnclosure {
     IVec3 point, ds, dt, normal; // over the box; derivatives in local (s, t)
@@ -52,6 +54,8 @@ Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, i
 
 IVec3 enclose_point(const PatchForms& f, ParamBox box);
 PatchEnclosure enclose(const PatchForms& f, ParamBox box);
+// The same with point = enclose_point(f, box) already known (the same result).
+PatchEnclosure enclose(const PatchForms& f, ParamBox box, const IVec3& point);
 
 // The second partial derivatives of the point over a box: P_ss, P_st, P_tt
 // (Horner on the power forms; rational patches by differentiating X = P W twice:
