@@ -237,8 +237,9 @@ class PartRenderer {
     // A small B is solved pixel by pixel from its marks (those of its parent),
     // without a cluster attempt: a few certified Newton solves cost less than
     // narrowing, certificate and SHADE for a cluster of a handful of pixels.
-    // The pixels share the marks' Jacobians and Newton's starting points
-    // (SharedMarks of pixel_solve.h).
+    // The pixels share the marks' Jacobians, Newton's starting points and the
+    // bisections of marks a silhouette crosses (SharedMarks of pixel_solve.h,
+    // appended to coefs_ past B.coef_end).
     void paint_pixels(const SubScreen& B, RenderStats& st) {
         const StepClock clock(st.single_pixel_seconds);
         shared_.reset(ps_, coefs_, &arena_[B.offset], B.count, screen_a(B.x0, B.x1),

@@ -105,8 +105,12 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
         s = std::clamp(start[0], box.s.lo(), box.s.hi());
         t = std::clamp(start[1], box.t.lo(), box.t.hi());
     }
+    // It stops once a step is below 1e-10: by quadratic convergence the point
+    // is then far closer to the zero than the inflation's 1e-9 (no certificate
+    // rests on this: where it is not, the step below fails and the ray goes on
+    // to the clip).
     int outside = 0;
-    for (int it = 0; it < 16 && step > 1e-13 && outside < 3; ++it) {
+    for (int it = 0; it < 16 && step > 1e-10 && outside < 3; ++it) {
         if (!newton_step(pp.patch, a, b, s, t, step)) break;
         const double cs = std::clamp(s, box.s.lo(), box.s.hi());
         const double ct = std::clamp(t, box.t.lo(), box.t.hi());
@@ -156,18 +160,18 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
     return NewtonOutcome::undecided;
 }
 
-void SharedMarks::reset(const ProjectedScene& ps, const SubpatchArena& coefs, const Mark* marks,
-                        size_t n, Interval a, Interval b) {
+void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
+                        Interval a, Interval b) {
     ps_ = &ps;
     coefs_ = &coefs;
-    marks_ = marks;
-    n_ = n;
+    marks_.assign(marks, marks + n);
     a_ = a;
     b_ = b;
     jacobians_.resize(n);
     start_.resize(n);
     known_.assign(n, 0);
     started_.assign(n, 0);
+    depth_.assign(n, 0);
 }
 
 const MarkJacobian& SharedMarks::jacobian(size_t k) {
@@ -180,6 +184,32 @@ const MarkJacobian& SharedMarks::jacobian(size_t k) {
         known_[k] = 1;
     }
     return jacobians_[k];
+}
+
+bool SharedMarks::refine(size_t k) {
+    if (jacobian(k).regular || depth_[k] >= kMaxDepth) return false;
+    const Mark m = marks_[k];
+    const int dir = m.box.s.width() >= m.box.t.width() ? 0 : 1;
+    if (!((dir == 0 ? m.box.s : m.box.t).width() > 1e-9)) return false;
+    const SubpatchShape sh = ps_->patches[m.patch].shape;
+    Mark half[2];
+    bisect_mark(*coefs_, sh, m, dir, half);
+    for (Mark& h : half) {
+        // The halves' subpatches enclose them (convex hull property); the
+        // parent's hull still holds them too.
+        update_enclosures(*coefs_, sh, h);
+        for (int c = 0; c < 3; ++c) h.hull[c] = intersect(h.hull[c], m.hull[c]);
+    }
+    marks_[k] = half[0];
+    marks_.push_back(half[1]);
+    known_[k] = 0;
+    known_.push_back(0);
+    jacobians_.emplace_back();
+    start_.push_back(start_[k]);
+    started_.push_back(started_[k]);
+    depth_[k] = static_cast<char>(depth_[k] + 1);
+    depth_.push_back(depth_[k]);
+    return true;
 }
 
 namespace {
@@ -272,6 +302,18 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
 // Hansen-Sengupta steps, but 8% more instructions for the whole render.)
 void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks& shared, size_t k,
                        PixelScratch& scratch, RenderStats& st, Nearest& near) {
+    if (shared.refine(k)) {
+        // Mark k is now one half, the last mark the other (for the later
+        // pixels of B too): this ray is solved on each that it may meet and
+        // that is not beyond a hit found already.
+        const size_t halves[2] = {k, shared.size() - 1};
+        for (const size_t j : halves) {
+            const Mark& h = shared.marks()[j];
+            if (may_meet(h, Interval(a), Interval(b)) && !(h.hull[2].lo() > near.best_q))
+                solve_shared_mark(ps, a, b, shared, j, scratch, st, near);
+        }
+        return;
+    }
     const Mark& mark = shared.marks()[k];
     const ProjectedPatch& pp = ps.patches[mark.patch];
     const MarkJacobian& J = shared.jacobian(k);

@@ -101,32 +101,43 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
 // step 6 for every pixel of a B of at most RenderOptions::pixel_subscreen
 // pixels): per mark, the Jacobian of G over its box for every ray of B
 // (subpatch_jacobian of primary_cluster.h, computed on first need) and the
-// (s, t) of the last hit on it, where the next pixel's Newton starts.
+// (s, t) of the last hit on it, where the next pixel's Newton starts. A mark
+// whose Jacobian is not regular (a silhouette may cross its box) is bisected
+// for all of B's pixels at once (covering method, section 5 remark 2): the
+// halves together hold every hit of the mark, each with its own hull and
+// Jacobian, so the rays beside a silhouette are mostly decided by hull or by
+// one Newton solve instead of each halving the box for itself.
 class SharedMarks {
   public:
-    // B's marks (n of them, subpatches in `coefs`), for the rays through [a] x [b].
-    void reset(const ProjectedScene& ps, const SubpatchArena& coefs, const Mark* marks, size_t n,
+    // B's marks (n of them, subpatches in `coefs`), for the rays through [a] x
+    // [b]. The halves of bisected marks are appended to `coefs` (the caller
+    // truncates it after B).
+    void reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
                Interval a, Interval b);
-    const Mark* marks() const { return marks_; }
+    const Mark* marks() const { return marks_.data(); }
     const SubpatchArena& coefs() const { return *coefs_; }
-    size_t size() const { return n_; }
+    size_t size() const { return marks_.size(); }
     const MarkJacobian& jacobian(size_t k);
+    // Mark k bisected when its Jacobian is not regular: k becomes one half,
+    // the new last mark the other. false when k is left as it is (regular,
+    // bisected kMaxDepth times already, or its box too small).
+    bool refine(size_t k);
     // Where Newton starts on mark k: the last hit on it, or null.
     const double* start(size_t k) const { return started_[k] ? start_[k].data() : nullptr; }
     void hit(size_t k, double s, double t) {
         start_[k] = {s, t};
         started_[k] = 1;
     }
+    static constexpr int kMaxDepth = 3; // bisections of one mark of B
 
   private:
     const ProjectedScene* ps_ = nullptr;
-    const SubpatchArena* coefs_ = nullptr;
-    const Mark* marks_ = nullptr;
-    size_t n_ = 0;
+    SubpatchArena* coefs_ = nullptr;
+    std::vector<Mark> marks_;
     Interval a_, b_;
     std::vector<MarkJacobian> jacobians_;
     std::vector<std::array<double, 2>> start_;
-    std::vector<char> known_, started_;
+    std::vector<char> known_, started_, depth_;
 };
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)

@@ -28,9 +28,11 @@ struct RenderOptions {
     bool dither = true;
     int prepartition = 8; // remark 4: the screen is prepartitioned into 8 x 8 parts
     // INTRACY: a sub-screen of at most this many pixels is solved pixel by
-    // pixel (certified Newton) without a cluster attempt; 1: never. 16 was the
-    // fastest of 1, 4, 16, 64 on the teapot at 320x240 (docs/results/render.md).
-    int pixel_subscreen = 16;
+    // pixel (certified Newton) without a cluster attempt; 1: never. 20 (the
+    // 5 x 4 sub-screens of 640 x 480's quadtree) took the fewest instructions of
+    // 8, 16, 20, 80, 300 on the teapot and scene 3 at 640x480x16
+    // (bench/render/render_assessment.md, sixth round).
+    int pixel_subscreen = 20;
     // Called with the fraction done (0..1), from any thread, at most a few hundred times.
     std::function<void(double)> progress;
 };

@@ -177,6 +177,7 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     // previous pixel's hit, the ray's clip only where that fails, one Jacobian
     // per mark for the sub-screen) against every mark solved for the pixel on
     // its own (no clip, no shared Jacobian): the same surface, or background.
+    // Whole patches as marks: many hold a silhouette, so SharedMarks bisects them.
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
     const int W = 160, H = 120;
     const ProjectedScene ps = project_scene(scene, W, H);
@@ -191,7 +192,7 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     PixelScratch scratch;
     SharedMarks shared;
     RenderStats st;
-    int surface = 0, background = 0;
+    int surface = 0, background = 0, bisected = 0;
     for (int n = 0; n < 120; ++n) {
         const int x0 = X(rng), y0 = Y(rng), x1 = x0 + 2, y1 = y0 + 2;
         const Interval aB(ps.frame.screen_a(x0 + 0.5), ps.frame.screen_a(x1 + 0.5));
@@ -218,7 +219,9 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
                 surface_frame(ps.patches[ref.patch].patch, ref.s, ref.t, Pr, Nr);
                 CHECK(norm(P - Pr) < 1e-6 * norm(Pr));
             }
+        bisected += shared.size() > marks.size(); // a silhouette's mark bisected for B
     }
     CHECK(surface > 200);
+    CHECK(bisected > 10);
     CHECK(background > 50);
 }
