@@ -140,8 +140,29 @@ JetTally check_jets(const ProjectedScene& ps, const Scene& lighting, int w, int 
     return tally;
 }
 
-ProjectedScene teapot(int w, int h) {
-    return project_scene(load_scene(test::data_dir() / "scenes" / "teapot.json"), w, h);
+// The teapot at 320 x 240 in 8 x 8 clusters, under its own light (light
+// 0), one light at `position` (1), or none (2).
+JetTally teapot_jets(int light, Vec3 position = {}) {
+    const ProjectedScene ps =
+        project_scene(load_scene(test::data_dir() / "scenes" / "teapot.json"), 320, 240);
+    Scene lit = ps.lighting;
+    if (light == 1) {
+        lit.lights.resize(1);
+        lit.lights[0].position = position;
+    } else if (light == 2) {
+        lit.lights.clear();
+    }
+    return check_jets(ps, lit, 320, 240, 8);
+}
+
+// What every scene must show: no miss, and single rays checked.
+void check_common(const JetTally& t) {
+    INFO("clusters " << t.clusters << ", samples " << t.samples << ", second partials checked "
+                     << t.checked_second << " (single rays " << t.point_checked << "), kinks "
+                     << t.kinks << ", highlights " << t.highlights);
+    CHECK(t.misses == 0);
+    CHECK(t.point_misses == 0);
+    CHECK(t.point_checked > 100);
 }
 
 std::string read_text(const std::filesystem::path& p) {
@@ -155,59 +176,32 @@ std::string read_text(const std::filesystem::path& p) {
 
 TEST_CASE("Intensity jets hold the sampled partials: teapot under its own light",
           "[second_order]") {
-    const ProjectedScene ps = teapot(320, 240);
-    const JetTally t = check_jets(ps, ps.lighting, 320, 240, 8);
-    INFO("clusters " << t.clusters << ", samples " << t.samples << ", second partials checked "
-                     << t.checked_second << ", kinks " << t.kinks);
-    CHECK(t.misses == 0);
-    CHECK(t.point_misses == 0);
-    CHECK(t.point_checked > 100);
+    const JetTally t = teapot_jets(0);
+    check_common(t);
     CHECK(t.checked_second > 5000);
 }
 
 TEST_CASE("Intensity jets hold the sampled partials: highlights", "[second_order]") {
-    const ProjectedScene ps = teapot(320, 240);
-    Scene lit = ps.lighting;
-    lit.lights.resize(1);
-    lit.lights[0].position = {0.05, -0.05, 0.0}; // beside the eye: highlights face the viewer
-    const JetTally t = check_jets(ps, lit, 320, 240, 8);
-    INFO("clusters " << t.clusters << ", samples " << t.samples << ", highlights " << t.highlights
-                     << ", second partials checked " << t.checked_second << " (single rays "
-                     << t.point_checked << ")");
-    CHECK(t.misses == 0);
-    CHECK(t.point_misses == 0);
-    CHECK(t.point_checked > 100);
+    // A light beside the eye: highlights face the viewer.
+    const JetTally t = teapot_jets(1, {0.05, -0.05, 0.0});
+    check_common(t);
     CHECK(t.highlights > 20);
     CHECK(t.checked_second > 5000);
 }
 
 TEST_CASE("Intensity jets hold the sampled partials: grazing light", "[second_order]") {
-    const ProjectedScene ps = teapot(320, 240);
-    Scene lit = ps.lighting;
-    lit.lights.resize(1);
-    // Far to the side at the teapot's depth: the terminator of the diffuse
-    // term runs down the middle of the teapot's visible side.
-    const double depth = ps.patches.front().forms.control_hull[2].mid();
-    lit.lights[0].position = {1000.0, 0.0, depth};
-    const JetTally t = check_jets(ps, lit, 320, 240, 8);
-    INFO("clusters " << t.clusters << ", samples " << t.samples << ", kinks " << t.kinks
-                     << ", second partials checked " << t.checked_second << " (single rays "
-                     << t.point_checked << ")");
-    CHECK(t.misses == 0);
-    CHECK(t.point_misses == 0);
-    CHECK(t.point_checked > 100);
+    // Far to the side at the teapot's depth (about 9 in camera coordinates):
+    // the diffuse term's terminator runs down the teapot's visible side.
+    const JetTally t = teapot_jets(1, {1000.0, 0.0, 9.0});
+    check_common(t);
     CHECK(t.kinks > 0);
     CHECK(t.checked_second > 2000);
 }
 
 TEST_CASE("Intensity jets of a shadowed cluster are constant", "[second_order]") {
-    const ProjectedScene ps = teapot(320, 240);
-    Scene dark = ps.lighting;
-    dark.lights.clear(); // what SHADE passes when no light reaches the cluster
-    const JetTally t = check_jets(ps, dark, 320, 240, 8);
-    CHECK(t.misses == 0);
-    CHECK(t.point_misses == 0);
-    CHECK(t.point_checked > 100);
+    // No light: what SHADE passes when no light reaches the cluster.
+    const JetTally t = teapot_jets(2);
+    check_common(t);
     CHECK(t.kinks == 0);
     CHECK(t.checked_second > 1000);
 }
@@ -224,10 +218,6 @@ TEST_CASE("Intensity jets hold the sampled partials: a rational cylinder", "[sec
     lit.materials[0].diffuse = 0.6;
     lit.materials[0].specular = 0.2;
     const JetTally t = check_jets(ps, lit, 256, 192, 8);
-    INFO("clusters " << t.clusters << ", second partials checked " << t.checked_second
-                     << " (single rays " << t.point_checked << ")");
-    CHECK(t.misses == 0);
-    CHECK(t.point_misses == 0);
-    CHECK(t.point_checked > 100);
+    check_common(t);
     CHECK(t.checked_second > 5000);
 }
