@@ -6,8 +6,10 @@
 // partials enclose the true gradient at every point of B where the function is
 // differentiable.
 //
-// Used for step 9's second-order criterion (second_order.h), which integrates
-// the gradient along segments inside B. Functions that are only Lipschitz (a
+// Used for the depth's second partials in surface_jets.h (the partials of
+// Z_a = -Z N_x / (N . d)); step 9's second-order criterion (second_order.h)
+// uses the second-order jets of interval_jet2.h, whose first partials follow
+// the same rules. Functions that are only Lipschitz (a
 // clamp max(0, f)) are allowed: along a segment their derivative is, almost
 // everywhere, that of one of the pieces, so the hull of the pieces' partials
 // still bounds every difference quotient. A jump (a specular term cut off when

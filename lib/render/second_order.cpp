@@ -2,6 +2,7 @@
 #include <seamless/render/second_order.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace seamless {
 namespace {
@@ -9,50 +10,22 @@ namespace {
 V3<Interval> v3(const IVec3& a) {
     return {a[0], a[1], a[2]};
 }
-// a x b for interval vectors held as V3.
-V3<Interval> cross3(const V3<Interval>& a, const V3<Interval>& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-// u s_x + w t_x: a derivative along the screen from those along s and t.
-V3<Interval> along(const V3<Interval>& u, Interval s_x, const V3<Interval>& w, Interval t_x) {
-    return {u.x * s_x + w.x * t_x, u.y * s_x + w.y * t_x, u.z * s_x + w.z * t_x};
+
+// min(r W / 2, M W^2 / 8) of second_order.h for one direction, rounded up; d,
+// dd: the jet's first and second partial along it.
+double direction_error(Interval d, Interval dd, double w) {
+    const Interval W(w);
+    const double first = (Interval(d.rad()) * W * Interval(0.5)).hi();
+    const double second = (Interval(dd.mag()) * sqr(W) * Interval(0.125)).hi();
+    return std::min(first, second); // NaN-free: rad and mag of finite or entire intervals
 }
 
 } // namespace
 
-bool surface_jets(const PatchForms& f, const ParamBox& box, const PatchEnclosure& e,
-                  const IMat<2>& A, Interval a, Interval b, V3<IntervalJet>& P,
-                  V3<IntervalJet>& N) {
-    const Interval det = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
-    if (det.contains(0.0)) return false;
-    // Homogeneous depth: G_a = (-Z, 0), G_b = (0, -Z) with Z = X_2 (times W).
-    const Interval Zd = horner(f.X, 2, box) / det;
-    const Interval s_a = A(1, 1) * Zd, t_a = -(A(1, 0) * Zd);
-    const Interval s_b = -(A(0, 1) * Zd), t_b = A(0, 0) * Zd;
-    const PatchSecondDerivatives d2 = enclose_second(f, box, e);
-    const V3<Interval> Ps = v3(e.ds), Pt = v3(e.dt);
-    // N = P_s x P_t: N_s = P_ss x P_t + P_s x P_st, N_t = P_st x P_t + P_s x P_tt.
-    const V3<Interval> Ns = cross3(v3(d2.ss), Pt) + cross3(Ps, v3(d2.st));
-    const V3<Interval> Nt = cross3(v3(d2.st), Pt) + cross3(Ps, v3(d2.tt));
-    // The point moves along its ray d = (a, b, 1): P = Z d, and P_a, P_b are
-    // tangent (N . P_a = 0), so Z_a = -Z N_x / (N . d), Z_b = -Z N_y / (N . d):
-    // far tighter than P_s s_a + P_t t_a, whose terms cancel.
-    const Interval Z = e.point[2];
-    const V3<Interval> Nv = v3(e.normal);
-    const Interval Zn = -Z / (Nv.x * a + Nv.y * b + Nv.z);
-    const Interval Z_a = Zn * Nv.x, Z_b = Zn * Nv.y;
-    const V3<Interval> Pa{Z + a * Z_a, b * Z_a, Z_a}, Pb{a * Z_b, Z + b * Z_b, Z_b};
-    const V3<Interval> Na = along(Ns, s_a, Nt, t_a), Nb = along(Ns, s_b, Nt, t_b);
-    P = {{e.point[0], Pa.x, Pb.x}, {e.point[1], Pa.y, Pb.y}, {e.point[2], Pa.z, Pb.z}};
-    N = {{e.normal[0], Na.x, Nb.x}, {e.normal[1], Na.y, Nb.y}, {e.normal[2], Na.z, Nb.z}};
-    return true;
-}
-
-double bilinear_error(const IntervalJet& I, double wa, double wb) {
+double bilinear_error(const IntervalJet2& I, double wa, double wb) {
     if (!I.da.is_finite() || !I.db.is_finite()) return std::numeric_limits<double>::infinity();
-    const Interval b =
-        (Interval(I.da.rad()) * Interval(wa) + Interval(I.db.rad()) * Interval(wb)) * Interval(0.5);
-    return b.hi();
+    return (Interval(direction_error(I.da, I.daa, wa)) + Interval(direction_error(I.db, I.dbb, wb)))
+        .hi();
 }
 
 bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
@@ -68,16 +41,16 @@ bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Mat
     return I[0].is_finite() && I[1].is_finite() && I[2].is_finite();
 }
 
-std::array<IntervalJet, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
-                                          const Material& mat, const ParamBox& box,
-                                          const PatchEnclosure& e, const IMat<2>& A, Interval a,
-                                          Interval b) {
-    V3<IntervalJet> P, N;
-    if (!surface_jets(pp.forms, box, e, A, a, b, P, N)) {
-        const IntervalJet any{Interval(0.0, 1.0), Interval::entire(), Interval::entire()};
+std::array<IntervalJet2, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
+                                           const Material& mat, const ClusterSystem& sys,
+                                           const ParamBox& box, const PatchEnclosure& e,
+                                           const IMat<2>& A, Interval a, Interval b) {
+    V3<IntervalJet2> P, N;
+    if (!surface_jets(pp.forms, sys, box, e, A, a, b, P, N)) {
+        const IntervalJet2 any = unit_range(IntervalJet2());
         return {any, any, any};
     }
-    return shade<IntervalJet>(lighting, mat, P, N, Vec3{});
+    return shade<IntervalJet2>(lighting, mat, P, N, Vec3{});
 }
 
 SecondOrder second_order(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
@@ -87,7 +60,7 @@ SecondOrder second_order(const ProjectedPatch& pp, const Scene& lighting, const 
     SecondOrder r;
     const Interval a = Interval::hull(ca[0], ca[1]), b = Interval::hull(cb[0], cb[1]);
     const MarkJacobian J = mark_jacobian(sys, box);
-    const std::array<IntervalJet, 3> I = intensity_jets(pp, lighting, mat, box, e, J.A, a, b);
+    const std::array<IntervalJet2, 3> I = intensity_jets(pp, lighting, mat, sys, box, e, J.A, a, b);
     const double wa = (Interval(ca[1]) - Interval(ca[0])).mag();
     const double wb = (Interval(cb[1]) - Interval(cb[0])).mag();
     const double limit = dither ? 0.5 : 1.0;

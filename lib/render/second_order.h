@@ -7,17 +7,31 @@
 // fits it closely. This criterion bounds |I - L| over B instead.
 //
 // The bound. Let c_k be the screen points of B's corner pixels, W_a, W_b the
-// width and height of the rectangle they span, and x a pixel of B with
-// bilinear weights w_k(x) >= 0, sum w_k = 1, sum w_k c_k = x (bilinear
-// interpolation reproduces affine functions). If the gradient of I over B lies
-// in the box g0 + [-r_a, r_a] x [-r_b, r_b] (interval_jet.h; I need only be
-// Lipschitz), then along each segment from c_k to x
-//   I(x) - I(c_k) = (g0 + delta_k) . (x - c_k),  |delta_k,i| <= r_i,
-// and since sum w_k g0 . (x - c_k) = g0 . (x - sum w_k c_k) = 0,
-//   |I(x) - L(x)| <= sum_k w_k (r_a |x_a - c_k,a| + r_b |x_b - c_k,b|)
-//                  = 2 u (1 - u) r_a W_a + 2 v (1 - v) r_b W_b
-//                 <= (r_a W_a + r_b W_b) / 2,
-// where (u, v) in [0,1]^2 are x's fractions between the corner columns and rows.
+// width and height of the rectangle R they span, and x = (x_a, x_b) a pixel
+// of B at fractions (u, v) in [0,1]^2 between the corner columns and rows. L
+// interpolates linearly along a and then along b, so with P_a f the linear
+// interpolant of f along a at fixed b (P_b alike),
+//   I - L = (I - P_a I) + P_a (I - P_b I),
+// where (I - P_a I)(x) is the error of linear interpolation along the row
+// through x, and P_a (I - P_b I)(x) = (1 - u) E(c_a0) + u E(c_a1) is a convex
+// combination of such errors along B's first and last columns (E: the
+// interpolation error along b at x_b). The mixed partial I_ab never enters.
+// One dimension, f on [x0, x1] of width W at fraction u, l its interpolant:
+//  (first order) if f is Lipschitz with f' in g0 + [-r, r] a.e., then
+//    f(x) - l(x) = (1 - u) (f(x) - f(x0)) + u (f(x) - f(x1)), and the g0 parts
+//    (1 - u) u W g0 - u (1 - u) W g0 cancel: |f - l| <= 2 u (1 - u) W r;
+//  (second order) if f' is Lipschitz with |f''| <= M a.e., then
+//    |f - l| <= u (1 - u) W^2 M / 2 (Peano kernel of linear interpolation,
+//    which is <= 0 and integrates to -u (1 - u) W^2 / 2).
+// Both hold for each of the two terms, and u (1 - u) <= 1 / 4, so with the
+// gradient of I over R in g0 + [-r_a, r_a] x [-r_b, r_b] and |I_aa| <= M_a,
+// |I_bb| <= M_b over R where I is C^2 there (interval_jet2.h; the second-order
+// parts are entire otherwise),
+//   |I(x) - L(x)| <= min(r_a W_a / 2, M_a W_a^2 / 8)
+//                  + min(r_b W_b / 2, M_b W_b^2 / 8).
+// The second-order parts converge to |I_aa| and |I_bb| as B shrinks, while
+// interval arithmetic overestimates r by the width of the gradient's enclosure
+// (6 to 100 times the sampled variation on the teapot: render.md, fifth round).
 //
 // The painted level. With n levels, I' = I (n - 1), the painted value is
 // V = L~ (n - 1) from corner values L~ that enclose the true corner
@@ -34,34 +48,22 @@
 #pragma once
 
 #include <seamless/interval/interval_matrix.h>
-#include <seamless/render/interval_jet.h>
+#include <seamless/render/interval_jet2.h>
 #include <seamless/render/pixel_solve.h>
 #include <seamless/render/primary_cluster.h>
 #include <seamless/render/projection.h>
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
+#include <seamless/render/surface_jets.h>
 
 #include <array>
 #include <cmath>
 
 namespace seamless {
 
-// The camera-space point and (unnormalised) normal P_s x P_t of the hits of
-// the rays of a certified cluster, as functions of the screen point (a, b):
-// values and partials over B. By the implicit function theorem on the
-// homogeneous system G = (X - a Z, Y - b Z) = 0: d(s, t)/da = A^-1 (Z, 0),
-// d(s, t)/db = A^-1 (0, Z), A = dG/d(s, t) over the cluster (regular by step
-// 7's certificate); then the chain rule through the normal and P's second
-// derivatives. The point itself moves along its ray (second_order.cpp).
-// A: the interval Jacobian of G over `box` for every ray of B; e: enclose(f,
-// box); a, b: B's screen coordinates (the hull of its pixels' centres). false
-// when A's enclosed determinant may vanish.
-bool surface_jets(const PatchForms& f, const ParamBox& box, const PatchEnclosure& e,
-                  const IMat<2>& A, Interval a, Interval b, V3<IntervalJet>& P, V3<IntervalJet>& N);
-
-// (r_a W_a + r_b W_b) / 2 of the comment above, rounded up: the bound on
-// |I - L| over B for the intensity jet I; wa, wb: W_a, W_b.
-double bilinear_error(const IntervalJet& I, double wa, double wb);
+// The bound of the comment above, rounded up: |I - L| over B for the
+// intensity jet I; wa, wb: W_a, W_b.
+double bilinear_error(const IntervalJet2& I, double wa, double wb);
 
 // The certified intensity of one corner ray of a cluster (the ray through
 // screen point (a, b), hitting patch pp exactly once in `box`): the hit
@@ -71,15 +73,16 @@ bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Mat
                       double a, double b, const ParamBox& box, const MarkJacobian& J,
                       ClusterSystem& scratch, RenderStats& st, std::array<Interval, 3>& I);
 
-// The intensity of the rays of a cluster as jets over B: shade<IntervalJet>
-// (shading.h) at the jets of surface_jets; [0, 1] with entire partials where
-// those are undecided. (Splitting `box` into 3 x 3 parts and taking the hull of
-// their jets narrowed the bound a little but cost more than it saved:
+// The intensity of the rays of a cluster as second-order jets over B:
+// shade<IntervalJet2> (shading.h) at the jets of surface_jets.h; [0, 1] with
+// entire partials where those are undecided. sys: B's cluster system.
+// (Splitting `box` into 3 x 3 parts and taking the hull of their first-order
+// jets narrowed the first-order bound a little but cost more than it saved:
 // docs/results/render.md, fifth round.)
-std::array<IntervalJet, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
-                                          const Material& mat, const ParamBox& box,
-                                          const PatchEnclosure& e, const IMat<2>& A, Interval a,
-                                          Interval b);
+std::array<IntervalJet2, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
+                                           const Material& mat, const ClusterSystem& sys,
+                                           const ParamBox& box, const PatchEnclosure& e,
+                                           const IMat<2>& A, Interval a, Interval b);
 
 // The second-order test of a cluster whose plain step 9 failed on span.
 struct SecondOrder {

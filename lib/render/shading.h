@@ -102,8 +102,9 @@ inline Interval either(Interval a, Interval b) {
 // channel when the side facing the viewer is undecided (a possible silhouette).
 // `eye` may be a box (V3<Interval>) when the viewer is itself a cluster of
 // points, as for reflected rays seen from the hull of the mirror's points.
-// T: double, Interval, or IntervalJet (interval_jet.h: the intensity with its
-// gradient over a cluster, for step 9's second-order criterion, second_order.h);
+// T: double, Interval, IntervalJet or IntervalJet2 (interval_jet.h,
+// interval_jet2.h: the intensity with its first, or first and second, partials
+// over a cluster, for step 9's second-order criterion, second_order.h);
 // every type but double takes outward-rounded products of the constants.
 template <class T>
 std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3<T> N,

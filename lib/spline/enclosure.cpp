@@ -275,4 +275,58 @@ PatchSecondDerivatives enclose_second(const PatchForms& f, ParamBox box, const P
     return d;
 }
 
+// Coordinate c of f's derivative along s (dir 0) or t (dir 1) over a box: the
+// nested ranges of horner() on the coefficients (i + 1) a_(i+1)j (or
+// (j + 1) a_i(j+1)), formed on the fly (exact integers times intervals,
+// outward rounded), so no power form is built or zeroed.
+Interval horner_derivative(const PowerForm& f, int c, int dir, ParamBox box) {
+    ++range_enclosures;
+    const int p = dir == 0 ? f.p - 1 : f.p, q = dir == 1 ? f.q - 1 : f.q;
+    if (p < 0 || q < 0) return Interval(0.0);
+    auto coef = [&](int i, int j) {
+        return dir == 0 ? Interval(i + 1.0) * f.at(c, i + 1, j)
+                        : Interval(j + 1.0) * f.at(c, i, j + 1);
+    };
+    Interval b[K], inner[K];
+    const bool t_inner = box.t.rad() <= box.s.rad();
+    const int outer_n = t_inner ? p : q, inner_n = t_inner ? q : p;
+    for (int i = 0; i <= outer_n; ++i) {
+        for (int j = 0; j <= inner_n; ++j) inner[j] = t_inner ? coef(i, j) : coef(j, i);
+        b[i] = polynomial_range(inner, inner_n, t_inner ? box.t : box.s);
+    }
+    return polynomial_range(b, outer_n, t_inner ? box.s : box.t);
+}
+
+PatchThirdDerivatives enclose_third(const PatchForms& f, ParamBox box, const PatchEnclosure& e,
+                                    const PatchSecondDerivatives& d2) {
+    PatchThirdDerivatives d;
+    for (int c = 0; c < 3; ++c) {
+        d.sss[c] = horner_derivative(f.Xss, c, 0, box);
+        d.sst[c] = horner_derivative(f.Xss, c, 1, box);
+        d.stt[c] = horner_derivative(f.Xtt, c, 0, box);
+        d.ttt[c] = horner_derivative(f.Xtt, c, 1, box);
+    }
+    if (!f.rational) return d;
+    const Interval W = intersect(horner(f.X, 3, box), f.w_hull);
+    const Interval Ws = horner(f.Xs, 3, box), Wt = horner(f.Xt, 3, box);
+    const Interval Wss = horner(f.Xss, 3, box), Wst = horner(f.Xst, 3, box),
+                   Wtt = horner(f.Xtt, 3, box);
+    const Interval Wsss = horner_derivative(f.Xss, 3, 0, box),
+                   Wsst = horner_derivative(f.Xss, 3, 1, box),
+                   Wstt = horner_derivative(f.Xtt, 3, 0, box),
+                   Wttt = horner_derivative(f.Xtt, 3, 1, box);
+    const Interval two(2.0), three(3.0);
+    for (int c = 0; c < 3; ++c) {
+        const Interval P = e.point[c], Ps = e.ds[c], Pt = e.dt[c];
+        const Interval Pss = d2.ss[c], Pst = d2.st[c], Ptt = d2.tt[c];
+        d.sss[c] = (d.sss[c] - three * (Pss * Ws) - three * (Ps * Wss) - P * Wsss) / W;
+        d.sst[c] =
+            (d.sst[c] - Pss * Wt - two * (Pst * Ws) - two * (Ps * Wst) - Pt * Wss - P * Wsst) / W;
+        d.stt[c] =
+            (d.stt[c] - Ptt * Ws - two * (Pst * Wt) - two * (Pt * Wst) - Ps * Wtt - P * Wstt) / W;
+        d.ttt[c] = (d.ttt[c] - three * (Ptt * Wt) - three * (Pt * Wtt) - P * Wttt) / W;
+    }
+    return d;
+}
+
 } // namespace seamless

@@ -66,6 +66,21 @@ struct PatchSecondDerivatives {
 };
 PatchSecondDerivatives enclose_second(const PatchForms& f, ParamBox box, const PatchEnclosure& e);
 
+// The third partial derivatives of the point over a box: P_sss, P_sst, P_stt,
+// P_ttt (Horner on the differentiated coefficients of X_ss and X_tt, no power
+// form built; rational patches by differentiating X = P W three times, Leibniz:
+// X_sss = P_sss W + 3 P_ss W_s + 3 P_s W_ss + P W_sss,
+// X_sst = P_sst W + P_ss W_t + 2 P_st W_s + 2 P_s W_st + P_t W_ss + P W_sst).
+// e, d2: enclose(f, box) and enclose_second(f, box, e).
+struct PatchThirdDerivatives {
+    IVec3 sss, sst, stt, ttt;
+};
+// Coordinate c of the derivative of f along s (dir 0) or t (dir 1) over a box,
+// by horner() on the differentiated coefficients formed on the fly.
+Interval horner_derivative(const PowerForm& f, int c, int dir, ParamBox box);
+PatchThirdDerivatives enclose_third(const PatchForms& f, ParamBox box, const PatchEnclosure& e,
+                                    const PatchSecondDerivatives& d2);
+
 // Range enclosures (horner calls) made on this thread so far: a statistic
 // for the renderer's --stats (differences around a piece of work).
 long long range_enclosure_count();
