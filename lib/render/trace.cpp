@@ -13,28 +13,59 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Proposition 11, remark 2 for one ray: descends from every root but the
-// marked patch's into the nodes whose triangle hull the ray meets before
-// t_max (which the visitor may shrink); visit(triangle) returns true to stop.
+// Proposition 11, remark 2 for one ray in the tree of patch r: descends into
+// the nodes whose triangle hull the ray meets before t_max (which the visitor
+// may shrink); visit(triangle) returns true to stop.
 template <class Visit>
-bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const double& t_max,
-                     int skip_patch, Visit&& visit) {
-    const PatchTrees& trees = ts.tess.trees;
+bool visit_tree(const PatchTrees& trees, int r, const TriangleRay& ray, const double& t_max,
+                Visit&& visit) {
     constexpr int kStack = 256;
     assert(trees.depth < kStack - 2);
     int stack[kStack];
-    const int roots = static_cast<int>(trees.roots.size());
-    for (int r = 0; r < roots; ++r) {
-        if (r == skip_patch) continue;
-        int top = 0;
-        stack[top++] = trees.roots[r];
-        while (top > 0) {
-            const PatchNode& n = trees.nodes[stack[--top]];
-            if (n.triangle_hull.empty() || !ray_hits_box(ray, n.triangle_hull, t_max)) continue;
-            if (n.triangle >= 0 && visit(n.triangle)) return true;
-            for (int c : n.child)
-                if (c >= 0) stack[top++] = c;
+    int top = 0;
+    stack[top++] = trees.roots[r];
+    while (top > 0) {
+        const PatchNode& n = trees.nodes[stack[--top]];
+        if (n.triangle_hull.empty() || !ray_hits_box(ray, n.triangle_hull, t_max)) continue;
+        if (n.triangle >= 0 && visit(n.triangle)) return true;
+        for (int c : n.child)
+            if (c >= 0) stack[top++] = c;
+    }
+    return false;
+}
+
+// Every tree but the marked patch's, in root order (so ties in nearest_hit
+// keep the first triangle of that order).
+template <class Visit>
+bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const double& t_max,
+                     int skip_patch, Visit&& visit) {
+    const int roots = static_cast<int>(ts.tess.trees.roots.size());
+    for (int r = 0; r < roots; ++r)
+        if (r != skip_patch && visit_tree(ts.tess.trees, r, ray, t_max, visit)) return true;
+    return false;
+}
+
+// The same set of trees through the root hierarchy (root_hierarchy.h), in
+// its order: for any_hit, whose answer does not depend on the order.
+template <class Visit>
+bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray,
+                               const double& t_max, int skip_patch, Visit&& visit) {
+    const RootHierarchy& h = ts.root_hierarchy;
+    if (h.nodes.empty()) return visit_triangles(ts, ray, t_max, skip_patch, visit);
+    constexpr int kStack = 256;
+    assert(h.depth < kStack - 2);
+    int stack[kStack];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const RootNode& n = h.nodes[stack[--top]];
+        if ((n.patch >= 0 && n.patch == skip_patch) || !ray_hits_box(ray, n.box, t_max)) continue;
+        if (n.patch >= 0) {
+            if (visit_tree(ts.tess.trees, n.patch, ray, t_max, visit)) return true;
+            continue;
         }
+        stack[top++] = n.child[1];
+        stack[top++] = n.child[0];
     }
     return false;
 }
@@ -83,6 +114,7 @@ TriangleScene build_triangle_scene(const Scene& scene) {
     for (const Subpatch& sp : ts.tess.subpatches)
         for (int f = sp.first_triangle; f < sp.first_triangle + sp.triangle_count; ++f)
             ts.triangle_patch[f] = sp.patch;
+    ts.root_hierarchy = build_root_hierarchy(ts.tess.trees);
     ts.ray_epsilon = 1e-6 * ts.tess.stats.d_max;
     return ts;
 }
@@ -133,7 +165,7 @@ bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, doubl
     const TriangleRay ray(origin, dir);
     RayTriangleHit h;
     long long n = 0;
-    const bool found = visit_triangles(ts, ray, t_max, skip_patch, [&](int f) {
+    const bool found = visit_triangles_any_order(ts, ray, t_max, skip_patch, [&](int f) {
         ++n;
         const auto& tri = mesh.triangles[f];
         return intersect_triangle(ray, mesh.positions[tri[0]], mesh.positions[tri[1]],

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <seamless/base/vec.h>
+#include <seamless/render/root_hierarchy.h>
 #include <seamless/render/scene.h>
 #include <seamless/tessellate/tessellation.h>
 
@@ -25,6 +26,9 @@ struct TriangleScene {
     // triangle_patch: #F index of the Bezier patch = tree root index, in the
     // order of bezier_patches(scene.model).
     std::vector<int> triangle_patch;
+    // Hierarchy over the patch trees' roots for shadow rays (any_hit); empty:
+    // the roots one after another.
+    RootHierarchy root_hierarchy;
     // Secondary rays start this far (model units) from their surface point, so
     // that rounding never lets a ray meet the triangles it leaves from.
     // build_triangle_scene sets 1e-6 d_max.
