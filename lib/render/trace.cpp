@@ -160,19 +160,30 @@ bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, d
 }
 
 bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-             int skip_patch, long long* tests) {
+             int skip_patch, long long* tests, int* blocker) {
     const TriangleMesh& mesh = ts.tess.mesh;
     const TriangleRay ray(origin, dir);
     RayTriangleHit h;
     long long n = 0;
-    const bool found = visit_triangles_any_order(ts, ray, t_max, skip_patch, [&](int f) {
+    int found_f = -1;
+    const auto hits = [&](int f) {
         ++n;
         const auto& tri = mesh.triangles[f];
-        return intersect_triangle(ray, mesh.positions[tri[0]], mesh.positions[tri[1]],
-                                  mesh.positions[tri[2]], t_max, h) &&
-               h.t > t_min;
-    });
+        if (!(intersect_triangle(ray, mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                 mesh.positions[tri[2]], t_max, h) &&
+              h.t > t_min))
+            return false;
+        found_f = f;
+        return true;
+    };
+    // The cached blocker is one of the triangles the traversal would test (it
+    // is not on skip_patch), so testing it first changes only the order.
+    const int c = blocker ? *blocker : -1;
+    bool found = c >= 0 && c < mesh.triangle_count() && ts.triangle_patch[c] != skip_patch &&
+                 hits(c);
+    if (!found) found = visit_triangles_any_order(ts, ray, t_max, skip_patch, hits);
     if (tests) *tests += n;
+    if (found && blocker) *blocker = found_f;
     return found;
 }
 
@@ -186,8 +197,16 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
     // a per-thread scratch, so the hot loop does not allocate, and it is done
     // with before the recursion below reuses it.
     thread_local Scene lighting;
-    lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist) {
-        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests);
+    // Shadow cache: per thread and light, the triangle that last blocked a
+    // shadow ray (neighbouring pixels are mostly shadowed by the same one).
+    thread_local std::vector<int> blocker;
+    thread_local const TriangleScene* blocker_scene = nullptr;
+    if (blocker_scene != &ts || blocker.size() < scene.lights.size()) {
+        blocker.assign(scene.lights.size(), -1);
+        blocker_scene = &ts;
+    }
+    lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist, int light) {
+        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests, &blocker[light]);
     });
     std::array<double, 3> I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);
 

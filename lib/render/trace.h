@@ -12,6 +12,7 @@
 #include <seamless/tessellate/tessellation.h>
 
 #include <array>
+#include <type_traits>
 #include <vector>
 
 namespace seamless {
@@ -59,9 +60,12 @@ struct TraceHit {
 bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
                  int skip_patch, TraceHit& hit, long long* tests = nullptr);
 
-// Any hit with t in (t_min, t_max) (shadow rays; stops at the first).
+// Any hit with t in (t_min, t_max) (shadow rays; stops at the first). With
+// `blocker` (a shadow cache entry, Haines and Greenberg 1986), the triangle
+// *blocker (when it is one of ts's and not on skip_patch) is tested first, and
+// the triangle found is stored there: a hint only, the answer is the same.
 bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-             int skip_patch, long long* tests = nullptr);
+             int skip_patch, long long* tests = nullptr, int* blocker = nullptr);
 
 // SHADE step 2 for one ray: into `lighting` (its ambient and the lights that
 // reach P), every light that is on, in front of the surface (Nf: the normal
@@ -75,12 +79,18 @@ void lights_reaching(const Scene& scene, const Material& m, Vec3 P, Vec3 Nf, Sce
     lighting.ambient = scene.ambient;
     lighting.lights.clear();
     if (m.diffuse == 0 && m.specular == 0) return;
-    for (const Light& light : scene.lights) {
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& light = scene.lights[i];
         if (!light.on()) continue;
         const Vec3 L = light.position - P;
         if (!(dot(Nf, L) > 0)) continue;
         const double dist = norm(L);
-        if (!blocked(L / dist, dist)) lighting.lights.push_back(light);
+        bool b;
+        if constexpr (std::is_invocable_v<Blocked&, Vec3, double, int>)
+            b = blocked(L / dist, dist, static_cast<int>(i));
+        else
+            b = blocked(L / dist, dist);
+        if (!b) lighting.lights.push_back(light);
     }
 }
 
