@@ -5,6 +5,7 @@
 #include <seamless/render/ray_triangle.h>
 #include <seamless/render/shading.h>
 
+#include <algorithm>
 #include <cassert>
 #include <limits>
 
@@ -34,24 +35,12 @@ bool visit_tree(const PatchTrees& trees, int r, const TriangleRay& ray, const do
     return false;
 }
 
-// Every tree but the marked patch's, in root order (so ties in nearest_hit
-// keep the first triangle of that order).
-template <class Visit>
-bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const double& t_max,
-                     int skip_patch, Visit&& visit) {
-    const int roots = static_cast<int>(ts.tess.trees.roots.size());
-    for (int r = 0; r < roots; ++r)
-        if (r != skip_patch && visit_tree(ts.tess.trees, r, ray, t_max, visit)) return true;
-    return false;
-}
-
-// The same set of trees through the root hierarchy (root_hierarchy.h), in
-// its order: for any_hit, whose answer does not depend on the order.
-template <class Visit>
-bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray,
-                               const double& t_max, int skip_patch, Visit&& visit) {
-    const RootHierarchy& h = ts.root_hierarchy;
-    if (h.nodes.empty()) return visit_triangles(ts, ray, t_max, skip_patch, visit);
+// The patches (leaves of the root hierarchy, root_hierarchy.h) but the
+// marked one whose triangle hull the ray may meet before t_max, in the
+// hierarchy's order: meet(patch) returns true to stop.
+template <class Meet>
+bool visit_roots_met(const RootHierarchy& h, const TriangleRay& ray, const double& t_max,
+                     int skip_patch, Meet&& meet) {
     constexpr int kStack = 256;
     assert(h.depth < kStack - 2);
     int stack[kStack];
@@ -61,13 +50,50 @@ bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray,
         const RootNode& n = h.nodes[stack[--top]];
         if ((n.patch >= 0 && n.patch == skip_patch) || !ray_hits_box(ray, n.box, t_max)) continue;
         if (n.patch >= 0) {
-            if (visit_tree(ts.tess.trees, n.patch, ray, t_max, visit)) return true;
+            if (meet(n.patch)) return true;
             continue;
         }
         stack[top++] = n.child[1];
         stack[top++] = n.child[0];
     }
     return false;
+}
+
+// Every tree but the marked patch's, in root order, so that ties in
+// nearest_hit keep the first triangle of that order: the hierarchy only
+// culls (the patches it leaves out are those whose root hull the ray misses
+// before the initial t_max, which visit_tree would skip too), so the trees
+// visited and their order are those of the plain loop over the roots.
+template <class Visit>
+bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const double& t_max,
+                     int skip_patch, Visit&& visit) {
+    const PatchTrees& trees = ts.tess.trees;
+    if (ts.root_hierarchy.nodes.empty()) {
+        const int roots = static_cast<int>(trees.roots.size());
+        for (int r = 0; r < roots; ++r)
+            if (r != skip_patch && visit_tree(trees, r, ray, t_max, visit)) return true;
+        return false;
+    }
+    thread_local std::vector<int> met; // grows once per thread, then reused
+    met.clear();
+    visit_roots_met(ts.root_hierarchy, ray, t_max, skip_patch, [&](int r) {
+        met.push_back(r);
+        return false;
+    });
+    std::sort(met.begin(), met.end());
+    for (int r : met)
+        if (visit_tree(trees, r, ray, t_max, visit)) return true;
+    return false;
+}
+
+// The same trees in the hierarchy's order: for any_hit, whose answer does not
+// depend on the order.
+template <class Visit>
+bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray,
+                               const double& t_max, int skip_patch, Visit&& visit) {
+    if (ts.root_hierarchy.nodes.empty()) return visit_triangles(ts, ray, t_max, skip_patch, visit);
+    return visit_roots_met(ts.root_hierarchy, ray, t_max, skip_patch,
+                           [&](int r) { return visit_tree(ts.tess.trees, r, ray, t_max, visit); });
 }
 
 // Shadow ray, reflected or refracted ray from P (step 3.2): the intensity of
