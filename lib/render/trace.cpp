@@ -89,8 +89,8 @@ bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const doub
 // The same trees in the hierarchy's order: for any_hit, whose answer does not
 // depend on the order.
 template <class Visit>
-bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray,
-                               const double& t_max, int skip_patch, Visit&& visit) {
+bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray, const double& t_max,
+                               int skip_patch, Visit&& visit) {
     if (ts.root_hierarchy.nodes.empty()) return visit_triangles(ts, ray, t_max, skip_patch, visit);
     return visit_roots_met(ts.root_hierarchy, ray, t_max, skip_patch,
                            [&](int r) { return visit_tree(ts.tess.trees, r, ray, t_max, visit); });
@@ -205,8 +205,8 @@ bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, doubl
     // The cached blocker is one of the triangles the traversal would test (it
     // is not on skip_patch), so testing it first changes only the order.
     const int c = blocker ? *blocker : -1;
-    bool found = c >= 0 && c < mesh.triangle_count() && ts.triangle_patch[c] != skip_patch &&
-                 hits(c);
+    bool found =
+        c >= 0 && c < mesh.triangle_count() && ts.triangle_patch[c] != skip_patch && hits(c);
     if (!found) found = visit_triangles_any_order(ts, ray, t_max, skip_patch, hits);
     if (tests) *tests += n;
     if (found && blocker) *blocker = found_f;
@@ -225,6 +225,8 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
     thread_local Scene lighting;
     // Shadow cache: per thread and light, the triangle that last blocked a
     // shadow ray (neighbouring pixels are mostly shadowed by the same one).
+    // Not when ray tests are counted (TRAY's stats): the cache's order depends
+    // on how pixels are split between threads, and the counts must not.
     thread_local std::vector<int> blocker;
     thread_local const TriangleScene* blocker_scene = nullptr;
     if (blocker_scene != &ts || blocker.size() < scene.lights.size()) {
@@ -232,7 +234,8 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
         blocker_scene = &ts;
     }
     lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist, int light) {
-        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests, &blocker[light]);
+        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests,
+                       tests ? nullptr : &blocker[light]);
     });
     std::array<double, 3> I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);
 
