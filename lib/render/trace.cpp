@@ -5,6 +5,7 @@
 #include <seamless/render/ray_triangle.h>
 #include <seamless/render/shading.h>
 
+#include <algorithm>
 #include <cassert>
 #include <limits>
 
@@ -13,30 +14,86 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Proposition 11, remark 2 for one ray: descends from every root but the
-// marked patch's into the nodes whose triangle hull the ray meets before
-// t_max (which the visitor may shrink); visit(triangle) returns true to stop.
+// Proposition 11, remark 2 for one ray in the tree of patch r: descends into
+// the nodes whose triangle hull the ray meets before t_max (which the visitor
+// may shrink); visit(triangle) returns true to stop.
+template <class Visit>
+bool visit_tree(const PatchTrees& trees, int r, const TriangleRay& ray, const double& t_max,
+                Visit&& visit) {
+    constexpr int kStack = 256;
+    assert(trees.depth < kStack - 2);
+    int stack[kStack];
+    int top = 0;
+    stack[top++] = trees.roots[r];
+    while (top > 0) {
+        const PatchNode& n = trees.nodes[stack[--top]];
+        if (n.triangle_hull.empty() || !ray_hits_box(ray, n.triangle_hull, t_max)) continue;
+        if (n.triangle >= 0 && visit(n.triangle)) return true;
+        for (int c : n.child)
+            if (c >= 0) stack[top++] = c;
+    }
+    return false;
+}
+
+// The patches (leaves of the root hierarchy, root_hierarchy.h) but the
+// marked one whose triangle hull the ray may meet before t_max, in the
+// hierarchy's order: meet(patch) returns true to stop.
+template <class Meet>
+bool visit_roots_met(const RootHierarchy& h, const TriangleRay& ray, const double& t_max,
+                     int skip_patch, Meet&& meet) {
+    constexpr int kStack = 256;
+    assert(h.depth < kStack - 2);
+    int stack[kStack];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const RootNode& n = h.nodes[stack[--top]];
+        if ((n.patch >= 0 && n.patch == skip_patch) || !ray_hits_box(ray, n.box, t_max)) continue;
+        if (n.patch >= 0) {
+            if (meet(n.patch)) return true;
+            continue;
+        }
+        stack[top++] = n.child[1];
+        stack[top++] = n.child[0];
+    }
+    return false;
+}
+
+// Every tree but the marked patch's, in root order, so that ties in
+// nearest_hit keep the first triangle of that order: the hierarchy only
+// culls (the patches it leaves out are those whose root hull the ray misses
+// before the initial t_max, which visit_tree would skip too), so the trees
+// visited and their order are those of the plain loop over the roots.
 template <class Visit>
 bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const double& t_max,
                      int skip_patch, Visit&& visit) {
     const PatchTrees& trees = ts.tess.trees;
-    constexpr int kStack = 256;
-    assert(trees.depth < kStack - 2);
-    int stack[kStack];
-    const int roots = static_cast<int>(trees.roots.size());
-    for (int r = 0; r < roots; ++r) {
-        if (r == skip_patch) continue;
-        int top = 0;
-        stack[top++] = trees.roots[r];
-        while (top > 0) {
-            const PatchNode& n = trees.nodes[stack[--top]];
-            if (n.triangle_hull.empty() || !ray_hits_box(ray, n.triangle_hull, t_max)) continue;
-            if (n.triangle >= 0 && visit(n.triangle)) return true;
-            for (int c : n.child)
-                if (c >= 0) stack[top++] = c;
-        }
+    if (ts.root_hierarchy.nodes.empty()) {
+        const int roots = static_cast<int>(trees.roots.size());
+        for (int r = 0; r < roots; ++r)
+            if (r != skip_patch && visit_tree(trees, r, ray, t_max, visit)) return true;
+        return false;
     }
+    thread_local std::vector<int> met; // grows once per thread, then reused
+    met.clear();
+    visit_roots_met(ts.root_hierarchy, ray, t_max, skip_patch, [&](int r) {
+        met.push_back(r);
+        return false;
+    });
+    std::sort(met.begin(), met.end());
+    for (int r : met)
+        if (visit_tree(trees, r, ray, t_max, visit)) return true;
     return false;
+}
+
+// The same trees in the hierarchy's order: for any_hit, whose answer does not
+// depend on the order.
+template <class Visit>
+bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray, const double& t_max,
+                               int skip_patch, Visit&& visit) {
+    if (ts.root_hierarchy.nodes.empty()) return visit_triangles(ts, ray, t_max, skip_patch, visit);
+    return visit_roots_met(ts.root_hierarchy, ray, t_max, skip_patch,
+                           [&](int r) { return visit_tree(ts.tess.trees, r, ray, t_max, visit); });
 }
 
 // Shadow ray, reflected or refracted ray from P (step 3.2): the intensity of
@@ -83,6 +140,7 @@ TriangleScene build_triangle_scene(const Scene& scene) {
     for (const Subpatch& sp : ts.tess.subpatches)
         for (int f = sp.first_triangle; f < sp.first_triangle + sp.triangle_count; ++f)
             ts.triangle_patch[f] = sp.patch;
+    ts.root_hierarchy = build_root_hierarchy(ts.tess.trees);
     ts.ray_epsilon = 1e-6 * ts.tess.stats.d_max;
     return ts;
 }
@@ -128,19 +186,30 @@ bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, d
 }
 
 bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-             int skip_patch, long long* tests) {
+             int skip_patch, long long* tests, int* blocker) {
     const TriangleMesh& mesh = ts.tess.mesh;
     const TriangleRay ray(origin, dir);
     RayTriangleHit h;
     long long n = 0;
-    const bool found = visit_triangles(ts, ray, t_max, skip_patch, [&](int f) {
+    int found_f = -1;
+    const auto hits = [&](int f) {
         ++n;
         const auto& tri = mesh.triangles[f];
-        return intersect_triangle(ray, mesh.positions[tri[0]], mesh.positions[tri[1]],
-                                  mesh.positions[tri[2]], t_max, h) &&
-               h.t > t_min;
-    });
+        if (!(intersect_triangle(ray, mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                 mesh.positions[tri[2]], t_max, h) &&
+              h.t > t_min))
+            return false;
+        found_f = f;
+        return true;
+    };
+    // The cached blocker is one of the triangles the traversal would test (it
+    // is not on skip_patch), so testing it first changes only the order.
+    const int c = blocker ? *blocker : -1;
+    bool found =
+        c >= 0 && c < mesh.triangle_count() && ts.triangle_patch[c] != skip_patch && hits(c);
+    if (!found) found = visit_triangles_any_order(ts, ray, t_max, skip_patch, hits);
     if (tests) *tests += n;
+    if (found && blocker) *blocker = found_f;
     return found;
 }
 
@@ -154,8 +223,19 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
     // a per-thread scratch, so the hot loop does not allocate, and it is done
     // with before the recursion below reuses it.
     thread_local Scene lighting;
-    lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist) {
-        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests);
+    // Shadow cache: per thread and light, the triangle that last blocked a
+    // shadow ray (neighbouring pixels are mostly shadowed by the same one).
+    // Not when ray tests are counted (TRAY's stats): the cache's order depends
+    // on how pixels are split between threads, and the counts must not.
+    thread_local std::vector<int> blocker;
+    thread_local const TriangleScene* blocker_scene = nullptr;
+    if (blocker_scene != &ts || blocker.size() < scene.lights.size()) {
+        blocker.assign(scene.lights.size(), -1);
+        blocker_scene = &ts;
+    }
+    lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist, int light) {
+        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests,
+                       tests ? nullptr : &blocker[light]);
     });
     std::array<double, 3> I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);
 

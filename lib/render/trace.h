@@ -7,10 +7,12 @@
 #pragma once
 
 #include <seamless/base/vec.h>
+#include <seamless/render/root_hierarchy.h>
 #include <seamless/render/scene.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <array>
+#include <type_traits>
 #include <vector>
 
 namespace seamless {
@@ -25,6 +27,9 @@ struct TriangleScene {
     // triangle_patch: #F index of the Bezier patch = tree root index, in the
     // order of bezier_patches(scene.model).
     std::vector<int> triangle_patch;
+    // Hierarchy over the patch trees' roots for shadow rays (any_hit); empty:
+    // the roots one after another.
+    RootHierarchy root_hierarchy;
     // Secondary rays start this far (model units) from their surface point, so
     // that rounding never lets a ray meet the triangles it leaves from.
     // build_triangle_scene sets 1e-6 d_max.
@@ -55,9 +60,12 @@ struct TraceHit {
 bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
                  int skip_patch, TraceHit& hit, long long* tests = nullptr);
 
-// Any hit with t in (t_min, t_max) (shadow rays; stops at the first).
+// Any hit with t in (t_min, t_max) (shadow rays; stops at the first). With
+// `blocker` (a shadow cache entry, Haines and Greenberg 1986), the triangle
+// *blocker (when it is one of ts's and not on skip_patch) is tested first, and
+// the triangle found is stored there: a hint only, the answer is the same.
 bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-             int skip_patch, long long* tests = nullptr);
+             int skip_patch, long long* tests = nullptr, int* blocker = nullptr);
 
 // SHADE step 2 for one ray: into `lighting` (its ambient and the lights that
 // reach P), every light that is on, in front of the surface (Nf: the normal
@@ -71,12 +79,18 @@ void lights_reaching(const Scene& scene, const Material& m, Vec3 P, Vec3 Nf, Sce
     lighting.ambient = scene.ambient;
     lighting.lights.clear();
     if (m.diffuse == 0 && m.specular == 0) return;
-    for (const Light& light : scene.lights) {
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& light = scene.lights[i];
         if (!light.on()) continue;
         const Vec3 L = light.position - P;
         if (!(dot(Nf, L) > 0)) continue;
         const double dist = norm(L);
-        if (!blocked(L / dist, dist)) lighting.lights.push_back(light);
+        bool b;
+        if constexpr (std::is_invocable_v<Blocked&, Vec3, double, int>)
+            b = blocked(L / dist, dist, static_cast<int>(i));
+        else
+            b = blocked(L / dist, dist);
+        if (!b) lighting.lights.push_back(light);
     }
 }
 

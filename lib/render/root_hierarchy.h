@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// A binary hierarchy over the roots of the patch trees (Proposition 11,
+// remark 2, one level up): a ray first meets the hulls of groups of patches,
+// so a secondary ray on a scene of many patches tests a few boxes instead of
+// every root (scene 3: 103 roots, one after another before). Each node's box
+// is the hull of the triangle_hull of every root below it, so a ray that
+// misses it misses every triangle below (remark 1: hulls are conservative).
+#pragma once
+
+#include <seamless/base/vec.h>
+#include <seamless/tessellate/patch_tree.h>
+
+#include <vector>
+
+namespace seamless {
+
+struct RootNode {
+    Box3 box;                // hull of the triangle hulls of the roots below
+    int child[2] = {-1, -1}; // inner node: both >= 0
+    int patch = -1;          // leaf: the patch (index into PatchTrees::roots)
+};
+
+struct RootHierarchy {
+    std::vector<RootNode> nodes; // nodes[0] the top; empty when no root has triangles
+    int depth = 0;               // levels below the top, the stack a traversal needs
+};
+
+// Median split of the roots' hull centres along the widest axis, down to one
+// root per leaf; roots without triangles are left out. Deterministic (ties by
+// patch index).
+RootHierarchy build_root_hierarchy(const PatchTrees& trees);
+
+} // namespace seamless
