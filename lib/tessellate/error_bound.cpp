@@ -291,27 +291,37 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
                 const Param u = foot(b, x, w, 0.5 / m, g);
                 grid[a][c] = {u, g};
             }
-        // Refined triangles: up (a,c),(a+1,c),(a,c+1); down (a+1,c),(a+1,c+1),(a,c+1).
-        auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
-            double gn = 0, gt = 0;
-            for (const Node* q : {&p0, &p1, &p2}) {
-                largest_g = std::max(largest_g, norm(q->g));
-                const double dn = dot(q->g, n[k]);
-                gn = std::max(gn, std::abs(dn));
-                gt = std::max(gt, norm(q->g - dn * n[k]));
+        // |g|, |n.g| and the tangential |g - (n.g) n| once per refined vertex
+        // (a vertex of up to six refined triangles; the same values and the
+        // same maxima, in the same order, as per triangle).
+        double gg[K][K], gn[K][K], gt[K][K];
+        for (int a = 0; a <= m; ++a)
+            for (int c = 0; a + c <= m; ++c) {
+                const Vec3& g = grid[a][c].g;
+                const double dn = dot(g, n[k]);
+                gg[a][c] = norm(g);
+                gn[a][c] = std::abs(dn);
+                gt[a][c] = norm(g - dn * n[k]);
             }
-            const double ds =
-                std::max({p0.u.s, p1.u.s, p2.u.s}) - std::min({p0.u.s, p1.u.s, p2.u.s});
-            const double dt =
-                std::max({p0.u.t, p1.u.t, p2.u.t}) - std::min({p0.u.t, p1.u.t, p2.u.t});
-            const double en = gn + taylor_remainder(nb[k].normal, ds, dt);
-            const double et = gt + taylor_remainder(nb[k].tangential, ds, dt);
+        // Refined triangles: up (a,c),(a+1,c),(a,c+1); down (a+1,c),(a+1,c+1),(a,c+1).
+        auto tri = [&](int a0, int c0, int a1, int c1, int a2, int c2) {
+            double en = 0, et = 0;
+            for (const auto& [a, c] : {std::pair(a0, c0), std::pair(a1, c1), std::pair(a2, c2)}) {
+                largest_g = std::max(largest_g, gg[a][c]);
+                en = std::max(en, gn[a][c]);
+                et = std::max(et, gt[a][c]);
+            }
+            const Param &u0 = grid[a0][c0].u, &u1 = grid[a1][c1].u, &u2 = grid[a2][c2].u;
+            const double ds = std::max({u0.s, u1.s, u2.s}) - std::min({u0.s, u1.s, u2.s});
+            const double dt = std::max({u0.t, u1.t, u2.t}) - std::min({u0.t, u1.t, u2.t});
+            en += taylor_remainder(nb[k].normal, ds, dt);
+            et += taylor_remainder(nb[k].tangential, ds, dt);
             bound = std::max(bound, std::sqrt(en * en + et * et));
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
-                tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
-                if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
+                tri(a, c, a + 1, c, a, c + 1);
+                if (a + c + 2 <= m) tri(a + 1, c, a + 1, c + 1, a, c + 1);
             }
     }
     // Relative rounding of the sums above.
