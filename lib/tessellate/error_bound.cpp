@@ -84,12 +84,15 @@ const PowerBasisPatch* last_power_basis(const BezierPatch& b) {
 // One Gauss-Newton step from u (sp = S and its derivatives there) toward the
 // foot of x on S, each coordinate's step at most `limit` (near a pole the foot
 // is ill-determined), kept only when it brings S closer to x; clamped to
-// [0,1]^2. Returns whether it moved; u and sp follow. No step (and no
+// [0,1]^2. Returns whether it moved; u and sp follow (sp's derivatives only
+// when `derivatives`, for a further step: the trial point alone otherwise, the
+// same value as evaluate's point, power_basis.h). No step (and no
 // evaluation) once the residual's tangential part is below kConverged of the
 // residual: the bound counts that part (|g_i - (n.g_i) n|), so it stays within
 // kConverged^2 / 2 of its value at the exact foot, a fraction of a percent.
 constexpr double kConverged = 0.02;
-bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
+[[gnu::always_inline]] inline bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp,
+                                             double limit, bool derivatives) {
     const Vec3 r = x - sp.point;
     const double a11 = dot(sp.du, sp.du), a22 = dot(sp.dv, sp.dv), a12 = dot(sp.du, sp.dv);
     const double reg = 1e-12 * (a11 + a22);
@@ -103,7 +106,11 @@ bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp, double limi
     const Param v{std::clamp(u.s + std::clamp(ds, -limit, limit), 0.0, 1.0),
                   std::clamp(u.t + std::clamp(dt, -limit, limit), 0.0, 1.0)};
     if (v.s == u.s && v.t == u.t) return false;
-    const SurfacePoint sv = b.at(v.s, v.t);
+    SurfacePoint sv;
+    if (derivatives)
+        sv = b.at(v.s, v.t);
+    else
+        sv.point = b.point(v.s, v.t);
     const Vec3 gv = sv.point - x;
     if (!(dot(gv, gv) < dot(r, r))) return false;
     u = v;
@@ -113,7 +120,7 @@ bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp, double limi
 
 Param foot(const Surface& b, Vec3 x, Param u, double limit, Vec3& g) {
     SurfacePoint sp = b.at(u.s, u.t);
-    foot_step(b, x, u, sp, limit);
+    foot_step(b, x, u, sp, limit, false);
     g = sp.point - x;
     return u;
 }
@@ -150,7 +157,7 @@ Param foot_iterated(const Surface& b, Vec3 x, Param w, double limit, int iterati
     SurfacePoint sp = b.at(u.s, u.t);
     for (int it = 0; it < iterations; ++it) {
         const double left = limit - std::max(std::abs(u.s - w.s), std::abs(u.t - w.t));
-        if (!foot_step(b, x, u, sp, left)) break;
+        if (!foot_step(b, x, u, sp, left, it + 1 < iterations)) break;
     }
     g = sp.point - x;
     return u;
