@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -413,6 +415,61 @@ bool on_patch_side(const RingPoint& a, const RingPoint& b) {
            (a.t == b.t && (a.t == 0 || a.t == kParamOne));
 }
 
+// phi at a ring vertex and at a shared side's points is a function of the
+// patch and those ring points alone (that is what keeps phi continuous), and
+// each is met by every fan sharing it (a side by two, a vertex by up to four)
+// and by every refinement tried. PhiMemo keeps them per thread for the patch
+// asked about last: a hit is a value computed from the bitwise same inputs,
+// so the results do not depend on the order of the fans or the thread count.
+// Direct-mapped; a hit compares the whole key bit for bit.
+struct PhiMemo {
+    static constexpr int kSlots = 1024;
+    struct Vertex {
+        std::uint64_t generation = 0;
+        RingPoint p;
+        Node phi;
+    };
+    struct Side {
+        std::uint64_t generation = 0;
+        RingPoint lo, hi;
+        Node canon[kSideRefinement + 1];
+    };
+    std::uint64_t generation = 0; // 0: nothing kept
+    BezierPatch patch;
+    std::array<Vertex, kSlots> vertices;
+    std::array<Side, kSlots> sides;
+
+    // Starts a new generation when `b` is not the patch of the last call.
+    void use(const BezierPatch& b) {
+        const int nc = BezierPatch::kMaxOrder * BezierPatch::kMaxOrder;
+        if (generation != 0 && b.p == patch.p && b.q == patch.q && b.rational == patch.rational &&
+            std::memcmp(b.cp.data(), patch.cp.data(), nc * sizeof(HPoint)) == 0)
+            return;
+        patch = b;
+        ++generation;
+    }
+    static bool same(const RingPoint& a, const RingPoint& b) {
+        return std::memcmp(&a, &b, sizeof(RingPoint)) == 0;
+    }
+    static std::uint64_t hash(const RingPoint& a, std::uint64_t h) {
+        std::uint64_t w[sizeof(RingPoint) / 8];
+        std::memcpy(w, &a, sizeof w);
+        for (std::uint64_t x : w) h = (h ^ x) * 0x9E3779B97F4A7C15ull;
+        return h;
+    }
+    static int slot(std::uint64_t h) { return static_cast<int>((h ^ (h >> 29)) >> 54); }
+};
+// Keys compared and hashed bit for bit: no padding in a RingPoint.
+static_assert(sizeof(RingPoint) == 2 * sizeof(int) + sizeof(Vec3) + 2 * sizeof(double) &&
+              sizeof(RingPoint) % 8 == 0);
+
+Node vertex_phi(const Surface& b, const RingPoint& p, PhiMemo& memo) {
+    PhiMemo::Vertex& e = memo.vertices[PhiMemo::slot(PhiMemo::hash(p, 1))];
+    if (e.generation == memo.generation && PhiMemo::same(e.p, p)) return e.phi;
+    e = {memo.generation, p, vertex_phi(b, p)};
+    return e.phi;
+}
+
 // The bound of certified_fan_bound with every fan triangle refined m times
 // (m a multiple of kSideRefinement), without the rounding allowance. phi at
 // the refined vertices on the radial edges and inside the fan triangles (no
@@ -424,7 +481,7 @@ bool on_patch_side(const RingPoint& a, const RingPoint& b) {
 // not tightened further (a tolerance needs no bound below itself).
 double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const ParamRect& r,
                               Vec3 centre, std::span<const RingPoint> ring, int m, int steps,
-                              double enough) {
+                              double enough, PhiMemo& memo) {
     const size_t n = ring.size();
     const int side_step = m / kSideRefinement;
     const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
@@ -446,7 +503,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
     auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
     for (size_t i = 0; i < n; ++i) {
         radial[i][0] = centre_node;
-        radial[i][m] = vertex_phi(S, ring[i]);
+        radial[i][m] = vertex_phi(S, ring[i], memo);
         const Param p = param(ring[i]);
         for (int a = 1; a < m; ++a) {
             const double f = static_cast<double>(a) / m;
@@ -472,10 +529,19 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
         const Param plo = param(lo), phi_ = param(hi);
         const bool side = on_patch_side(lo, hi);
         const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
-        Node canon[kSideRefinement + 1];
-        canon[0] = nlo;
-        canon[kSideRefinement] = nhi;
-        for (int j = 1; j < kSideRefinement; ++j) {
+        PhiMemo::Side& memo_side =
+            memo.sides[PhiMemo::slot(PhiMemo::hash(hi, PhiMemo::hash(lo, 2)))];
+        Node* const canon = memo_side.canon;
+        const bool known = memo_side.generation == memo.generation &&
+                           PhiMemo::same(memo_side.lo, lo) && PhiMemo::same(memo_side.hi, hi);
+        if (!known) {
+            memo_side.generation = memo.generation;
+            memo_side.lo = lo;
+            memo_side.hi = hi;
+            canon[0] = nlo;
+            canon[kSideRefinement] = nhi;
+        }
+        for (int j = 1; j < kSideRefinement && !known; ++j) {
             const double f = static_cast<double>(j) / kSideRefinement;
             const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
             const Vec3 x = lo.position + f * (hi.position - lo.position);
@@ -589,6 +655,11 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     const size_t n = ring.size();
     assert(n >= 3);
     const Surface S(patch, last_power_basis(patch));
+    // On the heap (400 KB), one thread_local access (a call in a shared library).
+    thread_local std::unique_ptr<PhiMemo> memo_store;
+    if (!memo_store) memo_store = std::make_unique<PhiMemo>();
+    PhiMemo& memo = *memo_store;
+    memo.use(patch);
     // The evaluator's own rounding (power basis) on top of the usual allowance.
     const double allowance =
         rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale) + S.error();
@@ -604,7 +675,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         // 93 % of the fans certify so, with one evaluation per refined vertex.
         for (int steps : {0, kFootSteps}) {
             coarse = std::min(coarse, certified_fan_bound_at(patch, S, r, centre, ring,
-                                                             kSideRefinement, steps, enough) +
+                                                             kSideRefinement, steps, enough, memo) +
                                           allowance);
             if (coarse <= target) return coarse;
         }
@@ -623,7 +694,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     }
     if (m == kSideRefinement && target > 0) return coarse;
     return std::min(coarse,
-                    certified_fan_bound_at(patch, S, r, centre, ring, m, kFootSteps, enough) +
+                    certified_fan_bound_at(patch, S, r, centre, ring, m, kFootSteps, enough, memo) +
                         allowance);
 }
 
