@@ -252,7 +252,12 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
 
     // phi on the radial edges (centre to corner k), shared by two fan triangles.
     constexpr int K = kMaxFanRefinement + 1;
-    Node radial[4][K];
+    // Left unset until written (Node's members would be zeroed on every call).
+    union RadialStore {
+        RadialStore() {}
+        Node at[4][K];
+    } radial_store;
+    auto& radial = radial_store.at;
     for (int k = 0; k < 4; ++k)
         for (int a = 0; a <= m; ++a) {
             const double f = static_cast<double>(a) / m;
@@ -271,7 +276,12 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
         }
 
     double bound = 0, largest_g = 0;
-    Node grid[K][K]; // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre)
+    // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre); unset until written.
+    union GridStore {
+        GridStore() {}
+        Node at[K][K];
+    } grid_store;
+    auto& grid = grid_store.at;
     for (int k = 0; k < 4; ++k) {
         const int k1 = (k + 1) % 4;
         for (int a = 0; a <= m; ++a) grid[a][0] = radial[k][a];
