@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -84,12 +86,15 @@ const PowerBasisPatch* last_power_basis(const BezierPatch& b) {
 // One Gauss-Newton step from u (sp = S and its derivatives there) toward the
 // foot of x on S, each coordinate's step at most `limit` (near a pole the foot
 // is ill-determined), kept only when it brings S closer to x; clamped to
-// [0,1]^2. Returns whether it moved; u and sp follow. No step (and no
+// [0,1]^2. Returns whether it moved; u and sp follow (sp's derivatives only
+// when `derivatives`, for a further step: the trial point alone otherwise, the
+// same value as evaluate's point, power_basis.h). No step (and no
 // evaluation) once the residual's tangential part is below kConverged of the
 // residual: the bound counts that part (|g_i - (n.g_i) n|), so it stays within
 // kConverged^2 / 2 of its value at the exact foot, a fraction of a percent.
 constexpr double kConverged = 0.02;
-bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp, double limit) {
+[[gnu::always_inline]] inline bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp,
+                                             double limit, bool derivatives) {
     const Vec3 r = x - sp.point;
     const double a11 = dot(sp.du, sp.du), a22 = dot(sp.dv, sp.dv), a12 = dot(sp.du, sp.dv);
     const double reg = 1e-12 * (a11 + a22);
@@ -103,7 +108,11 @@ bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp, double limi
     const Param v{std::clamp(u.s + std::clamp(ds, -limit, limit), 0.0, 1.0),
                   std::clamp(u.t + std::clamp(dt, -limit, limit), 0.0, 1.0)};
     if (v.s == u.s && v.t == u.t) return false;
-    const SurfacePoint sv = b.at(v.s, v.t);
+    SurfacePoint sv;
+    if (derivatives)
+        sv = b.at(v.s, v.t);
+    else
+        sv.point = b.point(v.s, v.t);
     const Vec3 gv = sv.point - x;
     if (!(dot(gv, gv) < dot(r, r))) return false;
     u = v;
@@ -113,7 +122,7 @@ bool foot_step(const Surface& b, Vec3 x, Param& u, SurfacePoint& sp, double limi
 
 Param foot(const Surface& b, Vec3 x, Param u, double limit, Vec3& g) {
     SurfacePoint sp = b.at(u.s, u.t);
-    foot_step(b, x, u, sp, limit);
+    foot_step(b, x, u, sp, limit, false);
     g = sp.point - x;
     return u;
 }
@@ -150,7 +159,7 @@ Param foot_iterated(const Surface& b, Vec3 x, Param w, double limit, int iterati
     SurfacePoint sp = b.at(u.s, u.t);
     for (int it = 0; it < iterations; ++it) {
         const double left = limit - std::max(std::abs(u.s - w.s), std::abs(u.t - w.t));
-        if (!foot_step(b, x, u, sp, left)) break;
+        if (!foot_step(b, x, u, sp, left, it + 1 < iterations)) break;
     }
     g = sp.point - x;
     return u;
@@ -243,7 +252,12 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
 
     // phi on the radial edges (centre to corner k), shared by two fan triangles.
     constexpr int K = kMaxFanRefinement + 1;
-    Node radial[4][K];
+    // Left unset until written (Node's members would be zeroed on every call).
+    union RadialStore {
+        RadialStore() {}
+        Node at[4][K];
+    } radial_store;
+    auto& radial = radial_store.at;
     for (int k = 0; k < 4; ++k)
         for (int a = 0; a <= m; ++a) {
             const double f = static_cast<double>(a) / m;
@@ -262,7 +276,12 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
         }
 
     double bound = 0, largest_g = 0;
-    Node grid[K][K]; // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre)
+    // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre); unset until written.
+    union GridStore {
+        GridStore() {}
+        Node at[K][K];
+    } grid_store;
+    auto& grid = grid_store.at;
     for (int k = 0; k < 4; ++k) {
         const int k1 = (k + 1) % 4;
         for (int a = 0; a <= m; ++a) grid[a][0] = radial[k][a];
@@ -291,27 +310,37 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
                 const Param u = foot(b, x, w, 0.5 / m, g);
                 grid[a][c] = {u, g};
             }
-        // Refined triangles: up (a,c),(a+1,c),(a,c+1); down (a+1,c),(a+1,c+1),(a,c+1).
-        auto tri = [&](const Node& p0, const Node& p1, const Node& p2) {
-            double gn = 0, gt = 0;
-            for (const Node* q : {&p0, &p1, &p2}) {
-                largest_g = std::max(largest_g, norm(q->g));
-                const double dn = dot(q->g, n[k]);
-                gn = std::max(gn, std::abs(dn));
-                gt = std::max(gt, norm(q->g - dn * n[k]));
+        // |g|, |n.g| and the tangential |g - (n.g) n| once per refined vertex
+        // (a vertex of up to six refined triangles; the same values and the
+        // same maxima, in the same order, as per triangle).
+        double gg[K][K], gn[K][K], gt[K][K];
+        for (int a = 0; a <= m; ++a)
+            for (int c = 0; a + c <= m; ++c) {
+                const Vec3& g = grid[a][c].g;
+                const double dn = dot(g, n[k]);
+                gg[a][c] = norm(g);
+                gn[a][c] = std::abs(dn);
+                gt[a][c] = norm(g - dn * n[k]);
             }
-            const double ds =
-                std::max({p0.u.s, p1.u.s, p2.u.s}) - std::min({p0.u.s, p1.u.s, p2.u.s});
-            const double dt =
-                std::max({p0.u.t, p1.u.t, p2.u.t}) - std::min({p0.u.t, p1.u.t, p2.u.t});
-            const double en = gn + taylor_remainder(nb[k].normal, ds, dt);
-            const double et = gt + taylor_remainder(nb[k].tangential, ds, dt);
+        // Refined triangles: up (a,c),(a+1,c),(a,c+1); down (a+1,c),(a+1,c+1),(a,c+1).
+        auto tri = [&](int a0, int c0, int a1, int c1, int a2, int c2) {
+            double en = 0, et = 0;
+            for (const auto& [a, c] : {std::pair(a0, c0), std::pair(a1, c1), std::pair(a2, c2)}) {
+                largest_g = std::max(largest_g, gg[a][c]);
+                en = std::max(en, gn[a][c]);
+                et = std::max(et, gt[a][c]);
+            }
+            const Param &u0 = grid[a0][c0].u, &u1 = grid[a1][c1].u, &u2 = grid[a2][c2].u;
+            const double ds = std::max({u0.s, u1.s, u2.s}) - std::min({u0.s, u1.s, u2.s});
+            const double dt = std::max({u0.t, u1.t, u2.t}) - std::min({u0.t, u1.t, u2.t});
+            en += taylor_remainder(nb[k].normal, ds, dt);
+            et += taylor_remainder(nb[k].tangential, ds, dt);
             bound = std::max(bound, std::sqrt(en * en + et * et));
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
-                tri(grid[a][c], grid[a + 1][c], grid[a][c + 1]);
-                if (a + c + 2 <= m) tri(grid[a + 1][c], grid[a + 1][c + 1], grid[a][c + 1]);
+                tri(a, c, a + 1, c, a, c + 1);
+                if (a + c + 2 <= m) tri(a + 1, c, a + 1, c + 1, a, c + 1);
             }
     }
     // Relative rounding of the sums above.
@@ -396,6 +425,61 @@ bool on_patch_side(const RingPoint& a, const RingPoint& b) {
            (a.t == b.t && (a.t == 0 || a.t == kParamOne));
 }
 
+// phi at a ring vertex and at a shared side's points is a function of the
+// patch and those ring points alone (that is what keeps phi continuous), and
+// each is met by every fan sharing it (a side by two, a vertex by up to four)
+// and by every refinement tried. PhiMemo keeps them per thread for the patch
+// asked about last: a hit is a value computed from the bitwise same inputs,
+// so the results do not depend on the order of the fans or the thread count.
+// Direct-mapped; a hit compares the whole key bit for bit.
+struct PhiMemo {
+    static constexpr int kSlots = 1024;
+    struct Vertex {
+        std::uint64_t generation = 0;
+        RingPoint p;
+        Node phi;
+    };
+    struct Side {
+        std::uint64_t generation = 0;
+        RingPoint lo, hi;
+        Node canon[kSideRefinement + 1];
+    };
+    std::uint64_t generation = 0; // 0: nothing kept
+    BezierPatch patch;
+    std::array<Vertex, kSlots> vertices;
+    std::array<Side, kSlots> sides;
+
+    // Starts a new generation when `b` is not the patch of the last call.
+    void use(const BezierPatch& b) {
+        const int nc = BezierPatch::kMaxOrder * BezierPatch::kMaxOrder;
+        if (generation != 0 && b.p == patch.p && b.q == patch.q && b.rational == patch.rational &&
+            std::memcmp(b.cp.data(), patch.cp.data(), nc * sizeof(HPoint)) == 0)
+            return;
+        patch = b;
+        ++generation;
+    }
+    static bool same(const RingPoint& a, const RingPoint& b) {
+        return std::memcmp(&a, &b, sizeof(RingPoint)) == 0;
+    }
+    static std::uint64_t hash(const RingPoint& a, std::uint64_t h) {
+        std::uint64_t w[sizeof(RingPoint) / 8];
+        std::memcpy(w, &a, sizeof w);
+        for (std::uint64_t x : w) h = (h ^ x) * 0x9E3779B97F4A7C15ull;
+        return h;
+    }
+    static int slot(std::uint64_t h) { return static_cast<int>((h ^ (h >> 29)) >> 54); }
+};
+// Keys compared and hashed bit for bit: no padding in a RingPoint.
+static_assert(sizeof(RingPoint) == 2 * sizeof(int) + sizeof(Vec3) + 2 * sizeof(double) &&
+              sizeof(RingPoint) % 8 == 0);
+
+Node vertex_phi(const Surface& b, const RingPoint& p, PhiMemo& memo) {
+    PhiMemo::Vertex& e = memo.vertices[PhiMemo::slot(PhiMemo::hash(p, 1))];
+    if (e.generation == memo.generation && PhiMemo::same(e.p, p)) return e.phi;
+    e = {memo.generation, p, vertex_phi(b, p)};
+    return e.phi;
+}
+
 // The bound of certified_fan_bound with every fan triangle refined m times
 // (m a multiple of kSideRefinement), without the rounding allowance. phi at
 // the refined vertices on the radial edges and inside the fan triangles (no
@@ -407,7 +491,7 @@ bool on_patch_side(const RingPoint& a, const RingPoint& b) {
 // not tightened further (a tolerance needs no bound below itself).
 double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const ParamRect& r,
                               Vec3 centre, std::span<const RingPoint> ring, int m, int steps,
-                              double enough) {
+                              double enough, PhiMemo& memo) {
     const size_t n = ring.size();
     const int side_step = m / kSideRefinement;
     const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
@@ -429,7 +513,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
     auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
     for (size_t i = 0; i < n; ++i) {
         radial[i][0] = centre_node;
-        radial[i][m] = vertex_phi(S, ring[i]);
+        radial[i][m] = vertex_phi(S, ring[i], memo);
         const Param p = param(ring[i]);
         for (int a = 1; a < m; ++a) {
             const double f = static_cast<double>(a) / m;
@@ -455,10 +539,19 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
         const Param plo = param(lo), phi_ = param(hi);
         const bool side = on_patch_side(lo, hi);
         const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
-        Node canon[kSideRefinement + 1];
-        canon[0] = nlo;
-        canon[kSideRefinement] = nhi;
-        for (int j = 1; j < kSideRefinement; ++j) {
+        PhiMemo::Side& memo_side =
+            memo.sides[PhiMemo::slot(PhiMemo::hash(hi, PhiMemo::hash(lo, 2)))];
+        Node* const canon = memo_side.canon;
+        const bool known = memo_side.generation == memo.generation &&
+                           PhiMemo::same(memo_side.lo, lo) && PhiMemo::same(memo_side.hi, hi);
+        if (!known) {
+            memo_side.generation = memo.generation;
+            memo_side.lo = lo;
+            memo_side.hi = hi;
+            canon[0] = nlo;
+            canon[kSideRefinement] = nhi;
+        }
+        for (int j = 1; j < kSideRefinement && !known; ++j) {
             const double f = static_cast<double>(j) / kSideRefinement;
             const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
             const Vec3 x = lo.position + f * (hi.position - lo.position);
@@ -572,6 +665,11 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     const size_t n = ring.size();
     assert(n >= 3);
     const Surface S(patch, last_power_basis(patch));
+    // On the heap (400 KB), one thread_local access (a call in a shared library).
+    thread_local std::unique_ptr<PhiMemo> memo_store;
+    if (!memo_store) memo_store = std::make_unique<PhiMemo>();
+    PhiMemo& memo = *memo_store;
+    memo.use(patch);
     // The evaluator's own rounding (power basis) on top of the usual allowance.
     const double allowance =
         rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale) + S.error();
@@ -587,7 +685,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         // 93 % of the fans certify so, with one evaluation per refined vertex.
         for (int steps : {0, kFootSteps}) {
             coarse = std::min(coarse, certified_fan_bound_at(patch, S, r, centre, ring,
-                                                             kSideRefinement, steps, enough) +
+                                                             kSideRefinement, steps, enough, memo) +
                                           allowance);
             if (coarse <= target) return coarse;
         }
@@ -606,7 +704,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     }
     if (m == kSideRefinement && target > 0) return coarse;
     return std::min(coarse,
-                    certified_fan_bound_at(patch, S, r, centre, ring, m, kFootSteps, enough) +
+                    certified_fan_bound_at(patch, S, r, centre, ring, m, kFootSteps, enough, memo) +
                         allowance);
 }
 

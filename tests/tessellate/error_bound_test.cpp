@@ -12,6 +12,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
+#include <thread>
+#include <utility>
+#include <vector>
 
 using namespace seamless;
 
@@ -302,6 +306,44 @@ TEST_CASE("certified_fan_bound with a target: still a bound, and at or below the
             CHECK(sampled <= bound);
             if (untargeted <= target) CHECK(bound <= target);
         }
+    }
+}
+
+TEST_CASE("certified_fan_bound: the same value whatever this thread certified before "
+          "(phi's memo of shared vertices and sides)",
+          "[error_bound]") {
+    const BezierPatch b = drifting_paraboloid(0.4), other = drifting_paraboloid(0.1);
+    const int half = kParamOne / 2;
+    // The four quarters of b: their rings share the sides through the centre.
+    std::vector<ParamRect> rects;
+    for (int s0 : {0, half})
+        for (int t0 : {0, half}) rects.push_back({s0, s0 + half, t0, t0 + half});
+    auto ring_of = [&](const BezierPatch& p, const ParamRect& r) {
+        std::vector<RingPoint> ring;
+        for (auto [s, t] : {std::pair(r.s0, r.t0), std::pair(r.s1, r.t0), std::pair(r.s1, r.t1),
+                            std::pair(r.s0, r.t1)})
+            ring.push_back({s, t, evaluate(p, param_of(s), param_of(t)).point});
+        return ring;
+    };
+    auto bound = [&](const BezierPatch& p, const ParamRect& r, double target) {
+        const Vec3 centre = evaluate(extract_subpatch(p, r), 0.5, 0.5).point;
+        return certified_fan_bound(p, r, 1, centre, ring_of(p, r), 1, target);
+    };
+    for (double target : {0.0, 1e-3}) {
+        // Cold: each fan first in a new thread (an empty memo).
+        std::vector<double> cold(rects.size());
+        for (size_t i = 0; i < rects.size(); ++i)
+            std::thread([&, i] { cold[i] = bound(b, rects[i], target); }).join();
+        // Warm, forward and backward, with another patch between.
+        for (int pass = 0; pass < 2; ++pass)
+            for (size_t j = 0; j < rects.size(); ++j) {
+                const size_t i = pass == 0 ? j : rects.size() - 1 - j;
+                const double warm = bound(b, rects[i], target);
+                INFO("target " << target << " fan " << i << " pass " << pass);
+                CHECK(std::memcmp(&warm, &cold[i], sizeof warm) == 0);
+                bound(other, rects[i], target);
+            }
+        CHECK(bound(b, ParamRect{}, target) == bound(b, ParamRect{}, target));
     }
 }
 
