@@ -38,6 +38,26 @@ void primary_rows(const PowerForm& f, Interval a, Interval b, PowerForm& g) {
 // interval division), where the crossing lies. Where y_i - y_j could be subnormal (relative bounds
 // fail) or overflows (outside the scene limits, docs/formats.md) the whole
 // [i / n, j / n] is taken.
+// The enclosures of i / n (interval division), for every degree n, formed once
+// rather than on every clip.
+struct Abscissae {
+    double lo[BezierPatch::kMaxOrder][BezierPatch::kMaxOrder];
+    double hi[BezierPatch::kMaxOrder][BezierPatch::kMaxOrder];
+    Abscissae() {
+        for (int n = 1; n < BezierPatch::kMaxOrder; ++n)
+            for (int i = 0; i <= n; ++i) {
+                const Interval x =
+                    Interval(static_cast<double>(i)) / Interval(static_cast<double>(n));
+                lo[n][i] = x.lo();
+                hi[n][i] = x.hi();
+            }
+    }
+};
+const Abscissae& abscissae() {
+    static const Abscissae table;
+    return table;
+}
+
 Interval clip_columns(const Interval* C, int n) {
     bool above = true, below = true;
     for (int i = 0; i <= n; ++i) {
@@ -47,18 +67,13 @@ Interval clip_columns(const Interval* C, int n) {
     if (above || below) return Interval::empty();
     if (n == 0) return {0.0, 1.0};
     const double inv = 1.0 / n;
-    const Interval N(static_cast<double>(n));
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     auto add = [&](double a, double b) {
         lo = std::min(lo, a);
         hi = std::max(hi, b);
     };
-    double x_lo[BezierPatch::kMaxOrder], x_hi[BezierPatch::kMaxOrder]; // i / n, enclosed
-    for (int i = 0; i <= n; ++i) {
-        const Interval xi = Interval(static_cast<double>(i)) / N;
-        x_lo[i] = xi.lo();
-        x_hi[i] = xi.hi();
-    }
+    const double* x_lo = abscissae().lo[n]; // i / n, enclosed
+    const double* x_hi = abscissae().hi[n];
     for (int i = 0; i <= n; ++i) {
         const double xi_lo = x_lo[i], xi_hi = x_hi[i];
         if (C[i].contains(0.0)) add(xi_lo, xi_hi);
