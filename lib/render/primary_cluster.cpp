@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace seamless {
 
@@ -58,7 +59,9 @@ const Abscissae& abscissae() {
     return table;
 }
 
-Interval clip_columns(const Interval* C, int n) {
+// Degree: an int, or a std::integral_constant for the bicubic case (the loops
+// unrolled; the same operations, so the same bits).
+template <class Degree> Interval clip_columns(const Interval* C, Degree n) {
     bool above = true, below = true;
     for (int i = 0; i <= n; ++i) {
         above = above && C[i].lo() > 0;
@@ -203,12 +206,15 @@ bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, I
     u = Interval(0.0, 1.0);
     v = Interval(0.0, 1.0);
     const bool lanes = cluster_lanes_apply(c, sh, a, b);
+    auto clip = [](const Interval* C, int n) {
+        return n == 3 ? clip_columns(C, std::integral_constant<int, 3>{}) : clip_columns(C, n);
+    };
     for (int k = 0; k < 2; ++k) {
         const Interval e = k == 0 ? a : b;
         Interval col[K], row[K];
         coefficient_hulls(c, sh, e, k, col, row, lanes);
-        u = intersect(u, clip_columns(col, sh.p));
-        v = intersect(v, clip_columns(row, sh.q));
+        u = intersect(u, clip(col, sh.p));
+        v = intersect(v, clip(row, sh.q));
         if (u.is_empty() || v.is_empty()) return false;
         if (D) difference_ranges(c, sh, e, k, (*D)(k, 0), (*D)(k, 1), lanes);
     }
