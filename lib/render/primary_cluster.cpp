@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace seamless {
 
@@ -59,8 +58,7 @@ const Abscissae& abscissae() {
     return table;
 }
 
-// Degree: an int, or a std::integral_constant for the bicubic case (the loops
-// unrolled; the same operations, so the same bits).
+// Degree: an int or a std::integral_constant (with_degree, subpatch.h).
 template <class Degree> Interval clip_columns(const Interval* C, Degree n) {
     bool above = true, below = true;
     for (int i = 0; i <= n; ++i) {
@@ -207,7 +205,7 @@ bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, I
     v = Interval(0.0, 1.0);
     const bool lanes = cluster_lanes_apply(c, sh, a, b);
     auto clip = [](const Interval* C, int n) {
-        return n == 3 ? clip_columns(C, std::integral_constant<int, 3>{}) : clip_columns(C, n);
+        return with_degree(n, [&](auto m) { return clip_columns(C, m); });
     };
     for (int k = 0; k < 2; ++k) {
         const Interval e = k == 0 ? a : b;

@@ -6,7 +6,6 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace seamless {
 namespace {
@@ -124,15 +123,11 @@ void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Inte
     const Interval r =
         cut_lo ? intersect(cut_hi ? u0 / u1 : u0, Interval(0.0, 1.0)) : Interval(0.0);
     if (lanes::moderate(c, sh.size(), 0x1p1000) && !r.is_empty()) {
-        if ((dir == 0 ? sh.p : sh.q) == 3) // bicubic rows: the common case
+        with_degree(dir == 0 ? sh.p : sh.q, [&](auto n) {
             for_rows(c, sh, dir, [&](Interval* row, int, int st) {
-                restrict_row_lanes(row, std::integral_constant<int, 3>{}, st, cut_hi, u1, cut_lo,
-                                   r);
-            });
-        else
-            for_rows(c, sh, dir, [&](Interval* row, int n, int st) {
                 restrict_row_lanes(row, n, st, cut_hi, u1, cut_lo, r);
             });
+        });
         return;
     }
     if (cut_hi) for_rows(c, sh, dir, [&](Interval* r, int n, int st) { left_part(r, n, st, u1); });
