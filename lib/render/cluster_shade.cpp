@@ -90,14 +90,13 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
         [&](int t) {
             if (ts_->triangle_patch[t] == skip_patch) return;
             const auto& tri = M.triangles[t];
-            if (!may_hit_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
-                                  M.positions[tri[2]]))
-                return;
-            ++candidates;
             Interval q, beta, delta;
-            if (covers_triangle(rc, M.positions[tri[0]], M.positions[tri[1]], M.positions[tri[2]],
-                                q, &beta, &delta) &&
-                q.lo() * dmin > 2 * ts_->ray_epsilon && (cover < 0 || q.hi() < cq.lo())) {
+            const TriangleMeeting m = meet_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
+                                                    M.positions[tri[2]], q, &beta, &delta);
+            if (m == TriangleMeeting::miss) return;
+            ++candidates;
+            if (m == TriangleMeeting::covers && q.lo() * dmin > 2 * ts_->ray_epsilon &&
+                (cover < 0 || q.hi() < cq.lo())) {
                 cover = t;
                 cq = q;
                 cb = beta;
@@ -193,16 +192,14 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
                 if (blocked || tries >= kBlockerTries || ts_->triangle_patch[t] == patch) return;
                 const auto& tri = ts_->tess.mesh.triangles[t];
                 const auto& V = ts_->tess.mesh.positions;
-                if (!pyramid_may_meet_triangle(light.position, Pw, V[tri[0]], V[tri[1]],
-                                               V[tri[2]]) ||
-                    !may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]]))
+                if (!pyramid_may_meet_triangle(light.position, Pw, V[tri[0]], V[tri[1]], V[tri[2]]))
                     return;
+                Interval q;
+                const TriangleMeeting m = meet_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q);
+                if (m == TriangleMeeting::miss) return;
                 maybe = true;
                 seeds[tries++] = t;
-                Interval q;
-                if (covers_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q) && q.lo() > 0 &&
-                    q.hi() < q_max)
-                    blocked = true;
+                if (m == TriangleMeeting::covers && q.lo() > 0 && q.hi() < q_max) blocked = true;
             });
         for (int k = 0; k < tries && !blocked && neighbours_; ++k) {
             blocked = pyramid_blocked_by_surface(light.position, Pw, q_max, seeds[k],

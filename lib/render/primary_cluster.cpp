@@ -38,7 +38,28 @@ void primary_rows(const PowerForm& f, Interval a, Interval b, PowerForm& g) {
 // interval division), where the crossing lies. Where y_i - y_j could be subnormal (relative bounds
 // fail) or overflows (outside the scene limits, docs/formats.md) the whole
 // [i / n, j / n] is taken.
-Interval clip_columns(const Interval* C, int n) {
+// The enclosures of i / n (interval division), for every degree n, formed once
+// rather than on every clip.
+struct Abscissae {
+    double lo[BezierPatch::kMaxOrder][BezierPatch::kMaxOrder];
+    double hi[BezierPatch::kMaxOrder][BezierPatch::kMaxOrder];
+    Abscissae() {
+        for (int n = 1; n < BezierPatch::kMaxOrder; ++n)
+            for (int i = 0; i <= n; ++i) {
+                const Interval x =
+                    Interval(static_cast<double>(i)) / Interval(static_cast<double>(n));
+                lo[n][i] = x.lo();
+                hi[n][i] = x.hi();
+            }
+    }
+};
+const Abscissae& abscissae() {
+    static const Abscissae table;
+    return table;
+}
+
+// Degree: an int or a std::integral_constant (with_degree, subpatch.h).
+template <class Degree> Interval clip_columns(const Interval* C, Degree n) {
     bool above = true, below = true;
     for (int i = 0; i <= n; ++i) {
         above = above && C[i].lo() > 0;
@@ -47,18 +68,13 @@ Interval clip_columns(const Interval* C, int n) {
     if (above || below) return Interval::empty();
     if (n == 0) return {0.0, 1.0};
     const double inv = 1.0 / n;
-    const Interval N(static_cast<double>(n));
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     auto add = [&](double a, double b) {
         lo = std::min(lo, a);
         hi = std::max(hi, b);
     };
-    double x_lo[BezierPatch::kMaxOrder], x_hi[BezierPatch::kMaxOrder]; // i / n, enclosed
-    for (int i = 0; i <= n; ++i) {
-        const Interval xi = Interval(static_cast<double>(i)) / N;
-        x_lo[i] = xi.lo();
-        x_hi[i] = xi.hi();
-    }
+    const double* x_lo = abscissae().lo[n]; // i / n, enclosed
+    const double* x_hi = abscissae().hi[n];
     for (int i = 0; i <= n; ++i) {
         const double xi_lo = x_lo[i], xi_hi = x_hi[i];
         if (C[i].contains(0.0)) add(xi_lo, xi_hi);
@@ -188,12 +204,15 @@ bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, I
     u = Interval(0.0, 1.0);
     v = Interval(0.0, 1.0);
     const bool lanes = cluster_lanes_apply(c, sh, a, b);
+    auto clip = [](const Interval* C, int n) {
+        return with_degree(n, [&](auto m) { return clip_columns(C, m); });
+    };
     for (int k = 0; k < 2; ++k) {
         const Interval e = k == 0 ? a : b;
         Interval col[K], row[K];
         coefficient_hulls(c, sh, e, k, col, row, lanes);
-        u = intersect(u, clip_columns(col, sh.p));
-        v = intersect(v, clip_columns(row, sh.q));
+        u = intersect(u, clip(col, sh.p));
+        v = intersect(v, clip(row, sh.q));
         if (u.is_empty() || v.is_empty()) return false;
         if (D) difference_ranges(c, sh, e, k, (*D)(k, 0), (*D)(k, 1), lanes);
     }

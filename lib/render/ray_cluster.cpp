@@ -91,9 +91,12 @@ bool ClusterHull::may_meet(const Box3& b) const {
     return true;
 }
 
-bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
-    // Hull comparison along the triangle's normal first (a separating axis):
-    // the rays' points lie in the convex hull of their two end boxes, so if
+namespace {
+
+// may_hit_triangle's separating axis: the triangle's normal. false when the
+// hull of the rays' end boxes projects off the triangle's projection.
+bool normal_axis_may_meet(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
+    // The rays' points lie in the convex hull of their two end boxes, so if
     // that hull's projection misses the triangle's, no ray meets it. Any axis
     // is valid, so the rounded normal is as good as the exact one.
     const Vec3 n = cross(T2 - T1, T3 - T1);
@@ -103,9 +106,11 @@ bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
     };
     const Interval tri = hull(hull(project(T1), project(T2)), project(T3));
     const Interval rays = project_cluster(c, n);
-    if (rays.hi() < tri.lo() || rays.lo() > tri.hi()) return false;
+    return !(rays.hi() < tri.lo() || rays.lo() > tri.hi());
+}
 
-    const TriangleSystem sys(c, T1, T2, T3);
+// may_hit_triangle's contraction of the system (Theorem 6: empty, no zero).
+bool system_may_meet(const RayCluster& c, const TriangleSystem& sys) {
     IVec<3> x;
     x[0] = Interval(0.0, 1.0);
     x[1] = Interval(0.0, 1.0);
@@ -125,9 +130,9 @@ bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
     return true;
 }
 
-bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q, Interval* beta,
-                     Interval* delta) {
-    const TriangleSystem sys(c, T1, T2, T3);
+// covers_triangle on a built system.
+bool system_covers(const RayCluster& c, const TriangleSystem& sys, Interval& q, Interval* beta,
+                   Interval* delta) {
     if (!sys.preconditioned) return false;
     // Start from the whole triangle's parameter box widened a little (epsilon
     // inflation), so that H can land strictly inside it.
@@ -150,6 +155,25 @@ bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q
         if (x.is_empty()) return false;
     }
     return false;
+}
+
+} // namespace
+
+bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
+    return normal_axis_may_meet(c, T1, T2, T3) && system_may_meet(c, TriangleSystem(c, T1, T2, T3));
+}
+
+bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q, Interval* beta,
+                     Interval* delta) {
+    return system_covers(c, TriangleSystem(c, T1, T2, T3), q, beta, delta);
+}
+
+TriangleMeeting meet_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q,
+                              Interval* beta, Interval* delta) {
+    if (!normal_axis_may_meet(c, T1, T2, T3)) return TriangleMeeting::miss;
+    const TriangleSystem sys(c, T1, T2, T3);
+    if (!system_may_meet(c, sys)) return TriangleMeeting::miss;
+    return system_covers(c, sys, q, beta, delta) ? TriangleMeeting::covers : TriangleMeeting::may;
 }
 
 namespace {

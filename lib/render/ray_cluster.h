@@ -51,6 +51,13 @@ bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q
 // true: some ray may meet it.
 bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3);
 
+// Both questions on one triangle with one interval system (built once):
+// miss when may_hit_triangle is false, covers when it is true and
+// covers_triangle is true too (q, beta, delta set as there), may otherwise.
+enum class TriangleMeeting { miss, may, covers };
+TriangleMeeting meet_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q,
+                              Interval* beta = nullptr, Interval* delta = nullptr);
+
 // A cluster from one point (a light) to a box of end points, q in [0, 1]:
 // its rays' points are the convex hull of the apex and the box. false when a
 // plane certainly separates that hull from the triangle: the triangle's own

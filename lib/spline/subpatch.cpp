@@ -58,8 +58,11 @@ using lanes::Lanes;
 using lanes::weight_up;
 
 // Left part at u1 then right part at r of one row (either pass skipped when
-// its flag is off), as left_part and right_part.
-void restrict_row_lanes(Interval* c, int n, int stride, bool left, Interval u1, bool right,
+// its flag is off), as left_part and right_part. Degree is an int or a
+// std::integral_constant: a fixed degree unrolls the passes (same operations
+// in the same order, so the same bits).
+template <class Degree>
+void restrict_row_lanes(Interval* c, Degree n, int stride, bool left, Interval u1, bool right,
                         Interval r) {
     Lanes x[BezierPatch::kMaxOrder];
     for (int i = 0; i <= n; ++i) x[i] = lanes::load(c[i * stride]);
@@ -120,8 +123,10 @@ void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Inte
     const Interval r =
         cut_lo ? intersect(cut_hi ? u0 / u1 : u0, Interval(0.0, 1.0)) : Interval(0.0);
     if (lanes::moderate(c, sh.size(), 0x1p1000) && !r.is_empty()) {
-        for_rows(c, sh, dir, [&](Interval* row, int n, int st) {
-            restrict_row_lanes(row, n, st, cut_hi, u1, cut_lo, r);
+        with_degree(dir == 0 ? sh.p : sh.q, [&](auto n) {
+            for_rows(c, sh, dir, [&](Interval* row, int, int st) {
+                restrict_row_lanes(row, n, st, cut_hi, u1, cut_lo, r);
+            });
         });
         return;
     }

@@ -12,6 +12,8 @@
 #include <seamless/interval/interval_matrix.h>
 #include <seamless/spline/bezier_patch.h>
 
+#include <type_traits>
+
 namespace seamless {
 
 struct SubpatchShape {
@@ -20,6 +22,23 @@ struct SubpatchShape {
     int size() const { return dim * (p + 1) * (q + 1); }
     int index(int c, int i, int j) const { return (c * (p + 1) + i) * (q + 1) + j; }
 };
+
+// f(n) for a degree n of a subpatch's rows, with n a std::integral_constant
+// for degrees 1 to 3 (the common bilinear, biquadratic and bicubic patches)
+// so that loops over it unroll, and the int itself otherwise: f must be
+// written for either (same operations, so the same bits).
+template <class F> decltype(auto) with_degree(int n, F f) {
+    switch (n) {
+    case 1:
+        return f(std::integral_constant<int, 1>{});
+    case 2:
+        return f(std::integral_constant<int, 2>{});
+    case 3:
+        return f(std::integral_constant<int, 3>{});
+    default:
+        return f(n);
+    }
+}
 
 // dim 3 for a polynomial patch (w = 1 everywhere), 4 for a rational one.
 SubpatchShape subpatch_shape(const BezierPatch& b);

@@ -154,6 +154,43 @@ TEST_CASE("A covered cluster has every ray meeting the triangle", "[ray_cluster]
     CHECK(covered > 200);
 }
 
+TEST_CASE("meet_triangle answers as may_hit_triangle and covers_triangle", "[ray_cluster]") {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.05);
+    int outcome[3] = {0, 0, 0};
+    for (int n = 0; n < 3000; ++n) {
+        // Wide clusters at random triangles, and narrow ones at a big triangle.
+        const bool wide = n % 2 == 0;
+        const Vec3 a = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{-1, -1, U(rng) * 0.1},
+                   b = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{1, -1, U(rng) * 0.1},
+                   c = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{0, 1, U(rng) * 0.1};
+        const Vec3 O{U(rng), U(rng), 3}, target{U(rng) * 0.6, U(rng) * 0.6, -1};
+        RayCluster cl;
+        for (int i = 0; i < 3; ++i) {
+            const double wo = W(rng) * (wide ? 4 : 0.4), wd = W(rng) * (wide ? 4 : 0.4);
+            cl.origin[i] = Interval(O[i] - wo, O[i] + wo);
+            cl.direction[i] = Interval(target[i] - O[i] - wd, target[i] - O[i] + wd);
+        }
+        cl.q = Interval(0.0, 1.0);
+        Interval q, beta, delta, q2, beta2, delta2;
+        const TriangleMeeting m = meet_triangle(cl, a, b, c, q, &beta, &delta);
+        const bool may = may_hit_triangle(cl, a, b, c);
+        const bool covers = may && covers_triangle(cl, a, b, c, q2, &beta2, &delta2);
+        ++outcome[static_cast<int>(m)];
+        CHECK((m != TriangleMeeting::miss) == may);
+        CHECK((m == TriangleMeeting::covers) == covers);
+        if (m == TriangleMeeting::covers && covers) {
+            CHECK((q.lo() == q2.lo() && q.hi() == q2.hi()));
+            CHECK((beta.lo() == beta2.lo() && beta.hi() == beta2.hi()));
+            CHECK((delta.lo() == delta2.lo() && delta.hi() == delta2.hi()));
+        }
+    }
+    // Every answer occurs.
+    CHECK(outcome[0] > 100);
+    CHECK(outcome[1] > 100);
+    CHECK(outcome[2] > 100);
+}
+
 TEST_CASE("A light's pyramid declared to miss a triangle has no segment that hits it",
           "[ray_cluster]") {
     std::mt19937 rng(17);
