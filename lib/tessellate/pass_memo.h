@@ -26,6 +26,10 @@ struct PassMemo {
     // split in it (else the same verdicts give the same tree: kept).
     std::vector<Part> parts;
     std::vector<char> changed;
+    // The previous pass's trees and subpatches, emptied: the next pass refills
+    // storage already touched instead of faulting in new pages on one thread.
+    std::vector<PatchNode> spare_nodes;
+    std::vector<Subpatch> spare_subpatches;
     bool keep = false; // fill them (only a tolerance takes more than one pass)
     PassMemo(size_t patches, bool keep)
         : verdicts(patches), bounds(patches), parts(patches), changed(patches, 1), keep(keep) {}

@@ -55,9 +55,18 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
         at.leaf_start[i + 1] = at.leaf_start[i] + static_cast<int>(parts[i].subpatches.size());
         trees.depth = std::max(trees.depth, parts[i].trees.depth);
     }
-    reserve_huge(trees.nodes, at.node_start[np]);
+    // The previous pass's storage (PassMemo), with room for a pass that splits
+    // more: its pages are touched already.
+    trees.nodes.swap(memo.spare_nodes);
+    trees.nodes.clear();
+    subpatches.swap(memo.spare_subpatches);
+    subpatches.clear();
+    auto room = [&](auto& v, size_t n) {
+        if (n > v.capacity()) reserve_huge(v, memo.keep ? n + n / 8 : n);
+    };
+    room(trees.nodes, at.node_start[np]);
     trees.nodes.resize(at.node_start[np]);
-    reserve_huge(subpatches, at.leaf_start[np]);
+    room(subpatches, at.leaf_start[np]);
     subpatches.resize(at.leaf_start[np]);
     trees.roots.resize(np);
     parallel_chunks(np, threads, [&](int begin, int end) {

@@ -66,6 +66,8 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
                 split.insert(subpatch_key(sp.patch, sp.rect));
                 memo.changed[sp.patch] = 1;
             }
+        memo.spare_nodes = std::move(t.trees.nodes);
+        memo.spare_subpatches = std::move(t.subpatches);
     }
     t.stats.passes = pass + 1;
     t.stats.phases = phases;
