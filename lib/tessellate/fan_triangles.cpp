@@ -15,7 +15,7 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
                        int threads) {
     const int count = static_cast<int>(subpatches.size());
     FanNormals normals;
-    reserve_huge(normals.ring, rings.vertices.size());
+    reserve_huge(normals.ring, rings.vertices.size(), threads);
     normals.ring.resize(rings.vertices.size());
     normals.centre.resize(count);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
@@ -61,8 +61,8 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
         st.max_depth = std::max(st.max_depth, sp.depth);
         if (!sp.planar) ++st.nonplanar_subpatches;
     }
-    const auto grow = [](auto& v, size_t n) {
-        reserve_huge(v, n);
+    const auto grow = [threads](auto& v, size_t n) {
+        reserve_huge(v, n, threads);
         v.resize(n);
     };
     grow(mesh.triangles, triangles);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/parallel.h>
 #include <seamless/tessellate/huge_pages.h>
 
+#include <algorithm>
 #include <cstdint>
 
 #if defined(__linux__)
@@ -19,6 +21,16 @@ void advise_huge_pages(void* p, std::size_t bytes) {
 #else
     (void)p, (void)bytes;
 #endif
+}
+
+void touch_pages(void* p, std::size_t bytes, int threads) {
+    constexpr std::size_t kHuge = std::size_t{1} << 21, kPage = 4096;
+    volatile unsigned char* const b = static_cast<unsigned char*>(p);
+    const int units = static_cast<int>((bytes + kHuge - 1) / kHuge);
+    parallel_chunks(units, threads, [&](int begin, int end) {
+        const std::size_t stop = std::min(bytes, end * kHuge);
+        for (std::size_t at = begin * kHuge; at < stop; at += kPage) b[at] = 0;
+    });
 }
 
 } // namespace seamless

@@ -17,14 +17,22 @@ namespace seamless {
 // where the system has none, or the range holds none).
 void advise_huge_pages(void* p, std::size_t bytes);
 
+// Writes a zero byte into each 4 KB page of [p, p + bytes), 2 MB at a time on
+// `threads` workers (parallel.h): the page faults of new storage are taken in
+// parallel instead of on the thread that fills it (i11j). For raw storage
+// only (no live objects in it).
+void touch_pages(void* p, std::size_t bytes, int threads);
+
 // v.reserve(n) with the new storage advised for 2 MB pages before anything
 // is written to it (v's elements are copied in after the advice); a resize to
-// at most n then touches it.
-template <class T> void reserve_huge(std::vector<T>& v, std::size_t n) {
+// at most n then touches it. With threads != 1 the new storage is first
+// touched by that many workers (touch_pages).
+template <class T> void reserve_huge(std::vector<T>& v, std::size_t n, int threads = 1) {
     if (n <= v.capacity()) return;
     std::vector<T> w;
     w.reserve(n);
     advise_huge_pages(w.data(), w.capacity() * sizeof(T));
+    if (threads != 1) touch_pages(w.data(), w.capacity() * sizeof(T), threads);
     w.insert(w.end(), v.begin(), v.end());
     v.swap(w);
 }

@@ -62,7 +62,7 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
     subpatches.swap(memo.spare_subpatches);
     subpatches.clear();
     auto room = [&](auto& v, size_t n) {
-        if (n > v.capacity()) reserve_huge(v, memo.keep ? n + n / 8 : n);
+        if (n > v.capacity()) reserve_huge(v, memo.keep ? n + n / 8 : n, threads);
     };
     room(trees.nodes, at.node_start[np]);
     trees.nodes.resize(at.node_start[np]);

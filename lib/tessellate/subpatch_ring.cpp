@@ -81,7 +81,7 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
     });
     // The blocks laid end to end by a prefix sum.
     for (int i = 0; i < count; ++i) out.start[i + 1] += out.start[i];
-    reserve_huge(out.vertices, out.start[count]);
+    reserve_huge(out.vertices, out.start[count], threads);
     out.vertices.resize(out.start[count]);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int) {
         std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock];

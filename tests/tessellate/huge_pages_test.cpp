@@ -12,18 +12,20 @@
 using namespace seamless;
 
 TEST_CASE("reserve_huge keeps the elements and reserves at least n", "[tessellate][huge_pages]") {
-    for (std::size_t size : {0u, 1u, 1000u, 300000u})
-        for (std::size_t n : {0u, 10u, 700000u, 2000000u}) {
-            std::vector<std::uint64_t> v(size);
-            for (std::size_t i = 0; i < size; ++i) v[i] = i * 0x9E3779B97F4A7C15ull;
-            const std::uint64_t* before = v.data();
-            const std::size_t capacity = v.capacity();
-            reserve_huge(v, n);
-            REQUIRE(v.size() == size);
-            REQUIRE(v.capacity() >= n);
-            if (n <= capacity) CHECK(v.data() == before); // nothing to do: no new storage
-            for (std::size_t i = 0; i < size; ++i) REQUIRE(v[i] == i * 0x9E3779B97F4A7C15ull);
-            v.resize(std::max(n, size), 7);
-            for (std::size_t i = size; i < v.size(); ++i) REQUIRE(v[i] == 7);
-        }
+    // threads 2: the new storage is first touched by two workers (touch_pages).
+    for (int threads : {1, 2})
+        for (std::size_t size : {0u, 1u, 1000u, 300000u})
+            for (std::size_t n : {0u, 10u, 700000u, 2000000u}) {
+                std::vector<std::uint64_t> v(size);
+                for (std::size_t i = 0; i < size; ++i) v[i] = i * 0x9E3779B97F4A7C15ull;
+                const std::uint64_t* before = v.data();
+                const std::size_t capacity = v.capacity();
+                reserve_huge(v, n, threads);
+                REQUIRE(v.size() == size);
+                REQUIRE(v.capacity() >= n);
+                if (n <= capacity) CHECK(v.data() == before); // nothing to do: no new storage
+                for (std::size_t i = 0; i < size; ++i) REQUIRE(v[i] == i * 0x9E3779B97F4A7C15ull);
+                v.resize(std::max(n, size), 7);
+                for (std::size_t i = size; i < v.size(); ++i) REQUIRE(v[i] == 7);
+            }
 }
