@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/disjoint_sets.h>
 #include <seamless/base/parallel.h>
+#include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/shared_edges.h>
 
 #include <algorithm>
@@ -234,7 +235,9 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
     for (int i = 1; i <= n; ++i)
         if (i == n || subpatches[i].patch != subpatches[i - 1].patch) run_start.push_back(i);
     const int runs = static_cast<int>(run_start.size()) - 1;
-    std::vector<SideOnLine> sides(4 * static_cast<size_t>(n)); // line: local, or boundary
+    std::vector<SideOnLine> sides; // line: local, or boundary
+    reserve_huge(sides, 4 * static_cast<size_t>(n), threads);
+    sides.resize(4 * static_cast<size_t>(n));
     std::vector<std::vector<std::uint64_t>> run_keys(std::max(runs, 0));
     parallel_chunks(runs, threads, [&](int begin, int end) {
         std::unordered_map<std::uint64_t, int> local;

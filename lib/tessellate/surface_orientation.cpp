@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/parallel.h>
+#include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/surface_orientation.h>
 
 #include <algorithm>
@@ -69,7 +70,7 @@ struct EdgeUses {
     std::vector<Use> uses;
 };
 
-EdgeUses edge_uses(const TriangleMesh& mesh) {
+EdgeUses edge_uses(const TriangleMesh& mesh, int threads) {
     EdgeUses e;
     e.start.assign(mesh.positions.size() + 1, 0);
     for (const auto& t : mesh.triangles)
@@ -78,6 +79,7 @@ EdgeUses edge_uses(const TriangleMesh& mesh) {
             if (a != b) ++e.start[std::min(a, b) + 1];
         }
     for (size_t v = 1; v < e.start.size(); ++v) e.start[v] += e.start[v - 1];
+    reserve_huge(e.uses, e.start.back(), threads);
     e.uses.resize(e.start.back());
     std::vector<int> fill(e.start.begin(), e.start.end() - 1);
     for (size_t f = 0; f < mesh.triangles.size(); ++f)
@@ -100,7 +102,7 @@ OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
     // keeping both (opposite directions) or flipping one (equal directions).
     // Surfaces with an edge used once or more than twice are open. The
     // buckets are independent: counted in parallel, summed (order-free).
-    const EdgeUses e = edge_uses(mesh);
+    const EdgeUses e = edge_uses(mesh, threads);
     std::map<std::uint64_t, std::array<int, 2>> votes;
     std::vector<char> open_surface(ns, 0);
     std::mutex merge;
