@@ -68,17 +68,26 @@ inline IntervalJet root(const IntervalJet& x) {
 inline IntervalJet kink(Interval v, const IntervalJet& a, const IntervalJet& b) {
     return {v, hull(a.da, b.da), hull(a.db, b.db)};
 }
-inline IntervalJet clamp0(const IntervalJet& x) {
+// The clamps of the shading model for any interval jet (this one and
+// IntervalJet2 of interval_jet2.h): kink() of the jet's own type (found by
+// argument-dependent lookup) where the clamp may bend inside the enclosure.
+template <class Jet>
+concept IntervalJetType = requires(const Jet& j) {
+    j.v;
+    j.da;
+    j.db;
+};
+template <IntervalJetType Jet> Jet clamp0(const Jet& x) {
     if (x.v.lo() >= 0) return x;
-    if (x.v.hi() <= 0) return IntervalJet(0.0);
-    return kink(Interval(0.0, x.v.hi()), x, IntervalJet(0.0));
+    if (x.v.hi() <= 0) return Jet(0.0);
+    return kink(Interval(0.0, x.v.hi()), x, Jet(0.0));
 }
-inline IntervalJet clamp01(const IntervalJet& x) {
+template <IntervalJetType Jet> Jet clamp01(const Jet& x) {
     if (x.v.lo() >= 0 && x.v.hi() <= 1) return x;
-    if (x.v.hi() <= 0) return IntervalJet(0.0);
-    if (x.v.lo() >= 1) return IntervalJet(1.0);
+    if (x.v.hi() <= 0) return Jet(0.0);
+    if (x.v.lo() >= 1) return Jet(1.0);
     return kink(Interval(std::clamp(x.v.lo(), 0.0, 1.0), std::clamp(x.v.hi(), 0.0, 1.0)), x,
-                IntervalJet(0.0));
+                Jet(0.0));
 }
 // A cosine: the true values never leave [-1, 1], so cutting the enclosure
 // there changes no true value and no derivative.

@@ -103,18 +103,7 @@ inline IntervalJet2 kink(Interval v, const IntervalJet2& a, const IntervalJet2& 
     const Interval any = Interval::entire();
     return {v, hull(a.da, b.da), hull(a.db, b.db), any, any, any};
 }
-inline IntervalJet2 clamp0(const IntervalJet2& x) {
-    if (x.v.lo() >= 0) return x;
-    if (x.v.hi() <= 0) return IntervalJet2(0.0);
-    return kink(Interval(0.0, x.v.hi()), x, IntervalJet2(0.0));
-}
-inline IntervalJet2 clamp01(const IntervalJet2& x) {
-    if (x.v.lo() >= 0 && x.v.hi() <= 1) return x;
-    if (x.v.hi() <= 0) return IntervalJet2(0.0);
-    if (x.v.lo() >= 1) return IntervalJet2(1.0);
-    return kink(Interval(std::clamp(x.v.lo(), 0.0, 1.0), std::clamp(x.v.hi(), 0.0, 1.0)), x,
-                IntervalJet2(0.0));
-}
+// clamp0, clamp01: the templates of interval_jet.h, with this kink.
 // A cosine: the true values never leave [-1, 1], so cutting the enclosure
 // there changes no true value and no derivative.
 inline IntervalJet2 cosine_range(const IntervalJet2& x) {
