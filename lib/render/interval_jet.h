@@ -113,13 +113,14 @@ inline IntervalJet either(const IntervalJet& x, const IntervalJet& y) {
 inline IntervalJet unit_range(const IntervalJet&) {
     return {Interval(0.0, 1.0), Interval::entire(), Interval::entire()};
 }
-inline bool surely_positive(const IntervalJet& x) {
+// The sign tests of the shading model for any interval jet (value only).
+template <IntervalJetType Jet> bool surely_positive(const Jet& x) {
     return x.v.lo() > 0;
 }
-inline bool surely_negative(const IntervalJet& x) {
+template <IntervalJetType Jet> bool surely_negative(const Jet& x) {
     return x.v.hi() < 0;
 }
-inline bool possibly_zero_crossing(const IntervalJet& x) {
+template <IntervalJetType Jet> bool possibly_zero_crossing(const Jet& x) {
     return x.v.lo() <= 0 && x.v.hi() >= 0;
 }
 

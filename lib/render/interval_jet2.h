@@ -139,14 +139,6 @@ inline IntervalJet2 unit_range(const IntervalJet2&) {
     const Interval any = Interval::entire();
     return {Interval(0.0, 1.0), any, any, any, any, any};
 }
-inline bool surely_positive(const IntervalJet2& x) {
-    return x.v.lo() > 0;
-}
-inline bool surely_negative(const IntervalJet2& x) {
-    return x.v.hi() < 0;
-}
-inline bool possibly_zero_crossing(const IntervalJet2& x) {
-    return x.v.lo() <= 0 && x.v.hi() >= 0;
-}
+// surely_positive, surely_negative, possibly_zero_crossing: interval_jet.h.
 
 } // namespace seamless
