@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/interval/lanes.h>
 #include <seamless/spline/enclosure.h>
+#include <seamless/spline/subpatch.h>
 
 #include <algorithm>
 #include <cassert>
@@ -13,14 +15,20 @@ constexpr int K = PowerForm::kMaxOrder;
 
 thread_local long long range_enclosures = 0;
 
+// The kernels below take the degree n as an int or as a std::integral_constant
+// (with_degree, subpatch.h: degrees 1 to 3, nearly every patch and system of
+// the scenes), so that their loops unroll: the same operations in the same
+// order either way, hence the same bits (the library is built without fused or
+// reassociated operations). Arrays are not zeroed: only entries 0..n are read.
+
 // Horner with interval coefficients.
-Interval horner1(const Interval* c, int n, Interval u) {
+template <class Deg> Interval horner1(const Interval* c, Deg n, Interval u) {
     Interval r = c[n];
     for (int i = n - 1; i >= 0; --i) r = r * u + c[i];
     return r;
 }
 // Horner with real coefficients (exact doubles).
-Interval horner1(const double* c, int n, Interval u) {
+template <class Deg> Interval horner1(const double* c, Deg n, Interval u) {
     Interval r(c[n]);
     for (int i = n - 1; i >= 0; --i) r = r * u + Interval(c[i]);
     return r;
@@ -35,7 +43,7 @@ Interval horner1(const double* c, int n, Interval u) {
 // and the bound is rounded up generously (k = 2n + 4, three ulps). It replaced
 // interval Horner at points here and cut a teapot render's instruction count
 // (callgrind, 160x120) by 10%.
-Interval horner_point(const double* c, int n, double x) {
+template <class Deg> Interval horner_point(const double* c, Deg n, double x) {
     double r = c[n], s = std::abs(c[n]);
     const double ax = std::abs(x);
     for (int i = n - 1; i >= 0; --i) {
@@ -52,16 +60,85 @@ Interval horner_point(const double* c, int n, double x) {
     return {next_down(r - e), next_up(r + e)};
 }
 
+// Bounds below this magnitude, u in [0, 1] and at most kMaxOrder terms: no
+// sum, product or error bound below can overflow, so the lane forms of
+// lanes.h (finite operands only) give the scalar operations' bits.
+constexpr double kModerate = 0x1p900;
+
+// horner_point at x0 of c0 and at x1 of c1 at once, one in each lane (the
+// same operations, each rounded once to nearest, in the same order; the
+// bounds -lo and hi rounded up as lanes.h does: next_down(r - e) is
+// -next_up(e - r), round to nearest being symmetric). For moderate
+// coefficients and x0, x1 in [0, 1]; the scalar form where a result is large.
+template <class Deg>
+[[gnu::always_inline]] inline void horner_point2(const double* c0, const double* c1, Deg n,
+                                                 double x0, double x1, Interval& p0, Interval& p1) {
+    using lanes::LaneBits;
+    using lanes::Lanes;
+    const auto vabs = [](Lanes v) {
+        return reinterpret_cast<Lanes>(reinterpret_cast<LaneBits>(v) & 0x7fffffffffffffffLL);
+    };
+    const Lanes x{x0, x1}, ax = vabs(x);
+    Lanes r{c0[n], c1[n]};
+    Lanes s = vabs(r);
+    for (int i = n - 1; i >= 0; --i) {
+        const Lanes ci{c0[i], c1[i]};
+        r = r * x + ci;
+        s = s * ax + vabs(ci);
+    }
+    if (!(std::abs(r[0]) < kModerate && std::abs(r[1]) < kModerate && s[0] < kModerate &&
+          s[1] < kModerate)) {
+        p0 = horner_point(c0, n, x0);
+        p1 = horner_point(c1, n, x1);
+        return;
+    }
+    constexpr double u = 0x1p-53;
+    const double k = 2.0 * n + 4;
+    const double g = k * u / (1 - k * u);
+    Lanes e = lanes::splat(g) * s / lanes::splat(1 - g);
+    e = e + lanes::splat((4.0 * n + 4) * std::numeric_limits<double>::denorm_min());
+    e = lanes::up(lanes::up(lanes::up(e)));
+    const Lanes neg_lo = lanes::up(e - r), hi = lanes::up(r + e);
+    p0 = {-neg_lo[0], hi[0]};
+    p1 = {-neg_lo[1], hi[1]};
+}
+
+// The slope horner1(dc, n - 1, u) of real_polynomial_range below in lanes
+// (lanes.h) for u in [0, 1] and moderate c: dc_i = (i + 1) c_(i+1) is
+// [next_down, next_up] of the product in every sign case of operator*, and
+// r u for u >= 0 is weight_up's bound in each lane.
+template <class Deg> Interval slope_lanes(const double* c, Deg n, Interval u) {
+    using lanes::Lanes;
+    const Lanes ulo = lanes::splat(u.lo()), uhi = lanes::splat(u.hi());
+    const auto dc = [&](int i) { return lanes::up(lanes::splat(double(i)) * Lanes{-c[i], c[i]}); };
+    Lanes r = dc(n);
+    for (int i = n - 1; i >= 1; --i) r = lanes::up(lanes::weight_up(ulo, uhi, r) + dc(i));
+    return lanes::store(r);
+}
+
 // Range of a real polynomial over u: Horner intersected with the mean value
 // form (Proposition 1), or the end values where the derivative has one sign.
-Interval real_polynomial_range(const double* c, int n, Interval u) {
+// fast (c moderate, the caller's check): lanes (slope_lanes, horner_point2)
+// where u is in [0, 1], the same bits as the scalar form
+// (tests/spline/fast_range_test.cpp).
+template <class Deg> Interval real_polynomial_range(const double* c, Deg n, Interval u, bool fast) {
     if (n == 0) return Interval(c[0]);
     if (u.is_thin()) return horner_point(c, n, u.lo());
-    Interval dc[K]; // derivative coefficients i * c_i, outward rounded
-    for (int i = 1; i <= n; ++i) dc[i - 1] = Interval(double(i)) * Interval(c[i]);
-    const Interval slope = horner1(dc, n - 1, u);
-    if (slope.lo() >= 0 || slope.hi() <= 0) // monotone: range at the ends
-        return hull(horner_point(c, n, u.lo()), horner_point(c, n, u.hi()));
+    fast = fast && u.lo() >= 0 && u.hi() <= 1;
+    Interval slope;
+    if (fast) {
+        slope = slope_lanes(c, n, u);
+    } else {
+        Interval dc[K]; // derivative coefficients i * c_i, outward rounded
+        for (int i = 1; i <= n; ++i) dc[i - 1] = Interval(double(i)) * Interval(c[i]);
+        slope = horner1(dc, n - 1, u);
+    }
+    if (slope.lo() >= 0 || slope.hi() <= 0) { // monotone: range at the ends
+        if (!fast) return hull(horner_point(c, n, u.lo()), horner_point(c, n, u.hi()));
+        Interval a, b;
+        horner_point2(c, c, n, u.lo(), u.hi(), a, b);
+        return hull(a, b);
+    }
     const double m = u.mid();
     const Interval mvf = horner_point(c, n, m) + slope * (u - Interval(m));
     return intersect(horner1(c, n, u), mvf);
@@ -74,7 +151,8 @@ Interval real_polynomial_range(const double* c, int n, Interval u) {
 // above like the error term of horner_point (non-negative terms; one more
 // rounding per w_i, hence k = n + 4 below, and an absolute term for
 // subnormals). One real range instead of Lemma 2's two.
-Interval narrow_polynomial_range(const double* lo, const double* hi, int n, Interval u) {
+template <class Deg>
+Interval narrow_polynomial_range(const double* lo, const double* hi, Deg n, Interval u, bool fast) {
     double m[K];
     double s = 0;
     for (int i = 0; i <= n; ++i) {
@@ -86,7 +164,7 @@ Interval narrow_polynomial_range(const double* lo, const double* hi, int n, Inte
     const double g = k * eps / (1 - k * eps);
     double R = s / (1 - g) + (4.0 * n + 4) * std::numeric_limits<double>::denorm_min();
     R = next_up(next_up(next_up(R)));
-    const Interval rm = real_polynomial_range(m, n, u);
+    const Interval rm = real_polynomial_range(m, n, u, fast);
     return {next_down(rm.lo() - R), next_up(rm.hi() + R)};
 }
 
@@ -95,32 +173,73 @@ Interval narrow_polynomial_range(const double* lo, const double* hi, int n, Inte
     return b.s.lo() >= 0 && b.s.hi() <= 1 && b.t.lo() >= 0 && b.t.hi() <= 1;
 }
 
-} // namespace
-
-Interval polynomial_range(const Interval* c, int n, Interval u) {
-    assert(n >= 0 && n < K);
+// polynomial_range of the coefficients c[0], c[stride], ..., c[n stride]
+// (a row or a column of a power form, read in place).
+// fast: the lane forms where they apply (false: the scalar reference); they
+// need every bound below kModerate (so m_i of narrow_polynomial_range too).
+template <class Deg>
+Interval strided_range(const Interval* c, int stride, Deg n, Interval u, bool fast) {
     if (u.is_empty()) return Interval::empty();
-    if (u.lo() < 0) return horner1(c, n, u);
+    if (u.lo() < 0) {
+        Interval cc[K];
+        for (int i = 0; i <= n; ++i) cc[i] = c[i * stride];
+        return horner1(cc, n, u);
+    }
     // Lemma 2: for u >= 0 the range is [min sum lo(c_i) u^i, max sum hi(c_i) u^i].
-    double lo[K] = {}, hi[K] = {};
+    double lo[K], hi[K];
     bool thin = true;
     double wmax = 0, mmax = 0;
+    bool moderate = fast;
     for (int i = 0; i <= n; ++i) {
-        lo[i] = c[i].lo();
-        hi[i] = c[i].hi();
+        lo[i] = c[i * stride].lo();
+        hi[i] = c[i * stride].hi();
         thin = thin && lo[i] == hi[i];
         wmax = std::max(wmax, hi[i] - lo[i]);
-        mmax = std::max(mmax, std::abs(lo[i]) + std::abs(hi[i]));
+        const double mag = std::abs(lo[i]) + std::abs(hi[i]);
+        mmax = std::max(mmax, mag);
+        moderate &= mag < kModerate; // false for NaN
     }
-    if (thin) return real_polynomial_range(lo, n, u);
+    fast = moderate;
+    if (thin) return real_polynomial_range(lo, n, u, fast);
     // Coefficients as narrow as rounding leaves them (power forms of a patch, a
     // single ray's system): one real range instead of two; Lemma 2 would gain
     // at most the widening by their widths.
     if (wmax <= 0x1p-30 * mmax && mmax < std::numeric_limits<double>::infinity() && u.hi() <= 1)
-        return narrow_polynomial_range(lo, hi, n, u);
-    const Interval rl = real_polynomial_range(lo, n, u);
-    const Interval rh = real_polynomial_range(hi, n, u);
+        return narrow_polynomial_range(lo, hi, n, u, fast);
+    if (fast && n > 0 && u.is_thin() && u.hi() <= 1) { // both at one point
+        Interval rl, rh;
+        horner_point2(lo, hi, n, u.lo(), u.lo(), rl, rh);
+        return {rl.lo(), rh.hi()};
+    }
+    const Interval rl = real_polynomial_range(lo, n, u, fast);
+    const Interval rh = real_polynomial_range(hi, n, u, fast);
     return {rl.lo(), rh.hi()};
+}
+
+// horner() with the degrees as ints or integral constants (with_degree).
+template <class P, class Q>
+Interval horner_rows(const PowerForm& f, int c, ParamBox box, P p, Q q, bool fast) {
+    Interval b[K];
+    const Interval* a = &f.at(c, 0, 0);
+    // Section 5: sum_i b_i(t) s^i if [t] is narrower, else sum_j c_j(s) t^j.
+    if (box.t.rad() <= box.s.rad()) {
+        for (int i = 0; i <= p; ++i) b[i] = strided_range(a + i * K, 1, q, box.t, fast);
+        return strided_range(b, 1, p, box.s, fast);
+    }
+    for (int j = 0; j <= q; ++j) b[j] = strided_range(a + j, K, p, box.s, fast);
+    return strided_range(b, 1, q, box.t, fast);
+}
+
+} // namespace
+
+Interval polynomial_range(const Interval* c, int n, Interval u) {
+    assert(n >= 0 && n < K);
+    return with_degree(n, [&](auto m) { return strided_range(c, 1, m, u, true); });
+}
+
+Interval polynomial_range_generic(const Interval* c, int n, Interval u) {
+    assert(n >= 0 && n < K);
+    return strided_range(c, 1, n, u, false);
 }
 
 long long range_enclosure_count() {
@@ -129,20 +248,13 @@ long long range_enclosure_count() {
 
 Interval horner(const PowerForm& f, int c, ParamBox box) {
     ++range_enclosures;
-    Interval b[K], inner[K];
-    // Section 5: sum_i b_i(t) s^i if [t] is narrower, else sum_j c_j(s) t^j.
-    if (box.t.rad() <= box.s.rad()) {
-        for (int i = 0; i <= f.p; ++i) {
-            for (int j = 0; j <= f.q; ++j) inner[j] = f.at(c, i, j);
-            b[i] = polynomial_range(inner, f.q, box.t);
-        }
-        return polynomial_range(b, f.p, box.s);
-    }
-    for (int j = 0; j <= f.q; ++j) {
-        for (int i = 0; i <= f.p; ++i) inner[i] = f.at(c, i, j);
-        b[j] = polynomial_range(inner, f.p, box.s);
-    }
-    return polynomial_range(b, f.q, box.t);
+    return with_degree(f.p, [&](auto p) {
+        return with_degree(f.q, [&](auto q) { return horner_rows(f, c, box, p, q, true); });
+    });
+}
+
+Interval horner_generic(const PowerForm& f, int c, ParamBox box) {
+    return horner_rows(f, c, box, f.p, f.q, false);
 }
 
 Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, int c,

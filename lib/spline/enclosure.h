@@ -49,6 +49,10 @@ struct PatchEnclosure {
 Interval polynomial_range(const Interval* c, int n, Interval u);
 // Coordinate c of a power form over a box by nested Horner (section 5 ordering).
 Interval horner(const PowerForm& f, int c, ParamBox box);
+// The same two with every degree a run-time loop bound: the reference for the
+// unrolled fixed-degree paths above (tests compare them bit for bit).
+Interval polynomial_range_generic(const Interval* c, int n, Interval u);
+Interval horner_generic(const PowerForm& f, int c, ParamBox box);
 // Horner intersected with the mean value form; fs, ft: the power forms of f_s, f_t.
 Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, int c, ParamBox box);
 
