@@ -116,32 +116,42 @@ template <class Deg> Interval slope_lanes(const double* c, Deg n, Interval u) {
     return lanes::store(r);
 }
 
-// Range of a real polynomial over u: Horner intersected with the mean value
-// form (Proposition 1), or the end values where the derivative has one sign.
-// fast (c moderate, the caller's check): lanes (slope_lanes, horner_point2)
-// where u is in [0, 1], the same bits as the scalar form
-// (tests/spline/fast_range_test.cpp).
-template <class Deg> Interval real_polynomial_range(const double* c, Deg n, Interval u, bool fast) {
-    if (n == 0) return Interval(c[0]);
-    if (u.is_thin()) return horner_point(c, n, u.lo());
-    fast = fast && u.lo() >= 0 && u.hi() <= 1;
-    Interval slope;
-    if (fast) {
-        slope = slope_lanes(c, n, u);
-    } else {
-        Interval dc[K]; // derivative coefficients i * c_i, outward rounded
-        for (int i = 1; i <= n; ++i) dc[i - 1] = Interval(double(i)) * Interval(c[i]);
-        slope = horner1(dc, n - 1, u);
-    }
-    if (slope.lo() >= 0 || slope.hi() <= 0) { // monotone: range at the ends
-        if (!fast) return hull(horner_point(c, n, u.lo()), horner_point(c, n, u.hi()));
-        Interval a, b;
-        horner_point2(c, c, n, u.lo(), u.hi(), a, b);
-        return hull(a, b);
-    }
+// Range of a real polynomial over u where its derivative may change sign:
+// Horner intersected with the mean value form (Proposition 1).
+template <class Deg>
+[[gnu::noinline]] Interval mean_value_range(const double* c, Deg n, Interval u, Interval slope) {
     const double m = u.mid();
     const Interval mvf = horner_point(c, n, m) + slope * (u - Interval(m));
     return intersect(horner1(c, n, u), mvf);
+}
+
+// Range of a real polynomial over a non-thin u >= 0: the end values where the
+// derivative has one sign, else mean_value_range.
+template <class Deg> Interval real_range_scalar(const double* c, Deg n, Interval u) {
+    Interval dc[K]; // derivative coefficients i * c_i, outward rounded
+    for (int i = 1; i <= n; ++i) dc[i - 1] = Interval(double(i)) * Interval(c[i]);
+    const Interval slope = horner1(dc, n - 1, u);
+    if (slope.lo() >= 0 || slope.hi() <= 0) // monotone: range at the ends
+        return hull(horner_point(c, n, u.lo()), horner_point(c, n, u.hi()));
+    return mean_value_range(c, n, u, slope);
+}
+// The same in lanes (slope_lanes, horner_point2) for u in [0, 1] and moderate
+// c: the same bits (tests/spline/fast_range_test.cpp).
+template <class Deg> Interval real_range_lanes(const double* c, Deg n, Interval u) {
+    const Interval slope = slope_lanes(c, n, u);
+    if (!(slope.lo() >= 0 || slope.hi() <= 0)) return mean_value_range(c, n, u, slope);
+    Interval a, b;
+    horner_point2(c, c, n, u.lo(), u.hi(), a, b);
+    return hull(a, b);
+}
+
+// Range of a real polynomial over u >= 0. fast: u in [0, 1] and c moderate
+// (the caller's checks).
+template <class Deg>
+inline Interval real_polynomial_range(const double* c, Deg n, Interval u, bool fast) {
+    if (n == 0) return Interval(c[0]);
+    if (u.is_thin()) return horner_point(c, n, u.lo());
+    return fast ? real_range_lanes(c, n, u) : real_range_scalar(c, n, u);
 }
 
 // Range over u in [0, 1] of sum c_i u^i with narrow interval coefficients
@@ -173,40 +183,29 @@ Interval narrow_polynomial_range(const double* lo, const double* hi, Deg n, Inte
     return b.s.lo() >= 0 && b.s.hi() <= 1 && b.t.lo() >= 0 && b.t.hi() <= 1;
 }
 
-// polynomial_range of the coefficients c[0], c[stride], ..., c[n stride]
-// (a row or a column of a power form, read in place).
-// fast: the lane forms where they apply (false: the scalar reference); they
-// need every bound below kModerate (so m_i of narrow_polynomial_range too).
+// Lemma 2 on coefficients given by their bounds lo_i <= c_i <= hi_i, u >= 0:
+// the range is [min sum lo_i u^i, max sum hi_i u^i]. unit: u is in [0, 1]
+// (the lane forms apply to moderate coefficients; false: the scalar reference).
 template <class Deg>
-Interval strided_range(const Interval* c, int stride, Deg n, Interval u, bool fast) {
-    if (u.is_empty()) return Interval::empty();
-    if (u.lo() < 0) {
-        Interval cc[K];
-        for (int i = 0; i <= n; ++i) cc[i] = c[i * stride];
-        return horner1(cc, n, u);
-    }
-    // Lemma 2: for u >= 0 the range is [min sum lo(c_i) u^i, max sum hi(c_i) u^i].
-    double lo[K], hi[K];
+Interval bounds_range(const double* lo, const double* hi, Deg n, Interval u, bool unit) {
     bool thin = true;
     double wmax = 0, mmax = 0;
-    bool moderate = fast;
+    bool moderate = unit; // every bound below kModerate (then so is every m_i below)
     for (int i = 0; i <= n; ++i) {
-        lo[i] = c[i * stride].lo();
-        hi[i] = c[i * stride].hi();
-        thin = thin && lo[i] == hi[i];
+        thin &= lo[i] == hi[i];
         wmax = std::max(wmax, hi[i] - lo[i]);
         const double mag = std::abs(lo[i]) + std::abs(hi[i]);
         mmax = std::max(mmax, mag);
         moderate &= mag < kModerate; // false for NaN
     }
-    fast = moderate;
+    const bool fast = moderate;
     if (thin) return real_polynomial_range(lo, n, u, fast);
     // Coefficients as narrow as rounding leaves them (power forms of a patch, a
     // single ray's system): one real range instead of two; Lemma 2 would gain
     // at most the widening by their widths.
     if (wmax <= 0x1p-30 * mmax && mmax < std::numeric_limits<double>::infinity() && u.hi() <= 1)
         return narrow_polynomial_range(lo, hi, n, u, fast);
-    if (fast && n > 0 && u.is_thin() && u.hi() <= 1) { // both at one point
+    if (fast && n > 0 && u.is_thin()) { // both at one point
         Interval rl, rh;
         horner_point2(lo, hi, n, u.lo(), u.lo(), rl, rh);
         return {rl.lo(), rh.hi()};
@@ -216,25 +215,68 @@ Interval strided_range(const Interval* c, int stride, Deg n, Interval u, bool fa
     return {rl.lo(), rh.hi()};
 }
 
-// horner() with the degrees as ints or integral constants (with_degree).
-template <class P, class Q>
-Interval horner_rows(const PowerForm& f, int c, ParamBox box, P p, Q q, bool fast) {
+// polynomial_range of the coefficients c[0], c[stride], ..., c[n stride]
+// (a row or a column of a power form, read in place); unit: u is in [0, 1].
+template <class Deg>
+Interval strided_range(const Interval* c, int stride, Deg n, Interval u, bool unit) {
+    if (!unit) {
+        if (u.is_empty()) return Interval::empty();
+        if (u.lo() < 0) {
+            Interval cc[K];
+            for (int i = 0; i <= n; ++i) cc[i] = c[i * stride];
+            return horner1(cc, n, u);
+        }
+    }
+    double lo[K], hi[K];
+    for (int i = 0; i <= n; ++i) {
+        lo[i] = c[i * stride].lo();
+        hi[i] = c[i * stride].hi();
+    }
+    return bounds_range(lo, hi, n, u, unit);
+}
+
+// The outer range of horner() over the inner ranges [lo_i, hi_i].
+template <class Deg>
+Interval outer_range(const double* lo, const double* hi, Deg n, Interval u, bool unit) {
+    if (unit) return bounds_range(lo, hi, n, u, true);
     Interval b[K];
+    for (int i = 0; i <= n; ++i) b[i] = {lo[i], hi[i]};
+    return strided_range(b, 1, n, u, false);
+}
+
+// horner() with the degrees as ints or integral constants (with_degree);
+// unit: the box lies in [0,1]^2 (false: the scalar reference throughout).
+template <class P, class Q>
+Interval horner_rows(const PowerForm& f, int c, ParamBox box, P p, Q q, bool unit) {
+    double lo[K], hi[K];
     const Interval* a = &f.at(c, 0, 0);
     // Section 5: sum_i b_i(t) s^i if [t] is narrower, else sum_j c_j(s) t^j.
     if (box.t.rad() <= box.s.rad()) {
-        for (int i = 0; i <= p; ++i) b[i] = strided_range(a + i * K, 1, q, box.t, fast);
-        return strided_range(b, 1, p, box.s, fast);
+        for (int i = 0; i <= p; ++i) {
+            const Interval b = strided_range(a + i * K, 1, q, box.t, unit);
+            lo[i] = b.lo();
+            hi[i] = b.hi();
+        }
+        return outer_range(lo, hi, p, box.s, unit);
     }
-    for (int j = 0; j <= q; ++j) b[j] = strided_range(a + j, K, p, box.s, fast);
-    return strided_range(b, 1, q, box.t, fast);
+    for (int j = 0; j <= q; ++j) {
+        const Interval b = strided_range(a + j, K, p, box.s, unit);
+        lo[j] = b.lo();
+        hi[j] = b.hi();
+    }
+    return outer_range(lo, hi, q, box.t, unit);
+}
+
+// u nonempty inside [0, 1] (NaN bounds fail).
+bool in_unit(Interval u) {
+    return u.lo() >= 0 && u.lo() <= u.hi() && u.hi() <= 1;
 }
 
 } // namespace
 
 Interval polynomial_range(const Interval* c, int n, Interval u) {
     assert(n >= 0 && n < K);
-    return with_degree(n, [&](auto m) { return strided_range(c, 1, m, u, true); });
+    return with_degree(n, [&](auto m) { return strided_range(c, 1, m, u, in_unit(u)); });
 }
 
 Interval polynomial_range_generic(const Interval* c, int n, Interval u) {
@@ -249,7 +291,9 @@ long long range_enclosure_count() {
 Interval horner(const PowerForm& f, int c, ParamBox box) {
     ++range_enclosures;
     return with_degree(f.p, [&](auto p) {
-        return with_degree(f.q, [&](auto q) { return horner_rows(f, c, box, p, q, true); });
+        return with_degree(f.q, [&](auto q) {
+            return horner_rows(f, c, box, p, q, in_unit(box.s) && in_unit(box.t));
+        });
     });
 }
 
