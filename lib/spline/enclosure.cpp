@@ -272,11 +272,18 @@ bool in_unit(Interval u) {
     return u.lo() >= 0 && u.lo() <= u.hi() && u.hi() <= 1;
 }
 
+// with_degree (subpatch.h) with degree 0 a constant too: the constant
+// directions of planes and of derivatives of bilinear patches.
+template <class F> Interval with_range_degree(int n, F f) {
+    if (n == 0) return f(std::integral_constant<int, 0>{});
+    return with_degree(n, f);
+}
+
 } // namespace
 
 Interval polynomial_range(const Interval* c, int n, Interval u) {
     assert(n >= 0 && n < K);
-    return with_degree(n, [&](auto m) { return strided_range(c, 1, m, u, in_unit(u)); });
+    return with_range_degree(n, [&](auto m) { return strided_range(c, 1, m, u, in_unit(u)); });
 }
 
 Interval polynomial_range_generic(const Interval* c, int n, Interval u) {
@@ -290,8 +297,8 @@ long long range_enclosure_count() {
 
 Interval horner(const PowerForm& f, int c, ParamBox box) {
     ++range_enclosures;
-    return with_degree(f.p, [&](auto p) {
-        return with_degree(f.q, [&](auto q) {
+    return with_range_degree(f.p, [&](auto p) {
+        return with_range_degree(f.q, [&](auto q) {
             return horner_rows(f, c, box, p, q, in_unit(box.s) && in_unit(box.t));
         });
     });
