@@ -88,6 +88,26 @@ ClusterAttempt::ClusterAttempt(const ProjectedScene& ps, const Scene& scene,
     : ps_(ps), scene_(scene), ts_(ts), dither_(opt.dither), image_(image), levels_(levels),
       shader_(ps, scene, ts, neighbours, levels, opt.dither) {}
 
+// True when a corner ray of B certainly misses patch `patch`: one Bezier clip
+// of each of its marks (clip_box of mark.h) leaves nothing. The marks hold
+// every hit of B's rays on the patch (step 3), so that ray has no zero of G
+// in [0,1]^2 and certify_cluster cannot prove one for every ray of B.
+bool ClusterAttempt::corner_misses(const PixelRect& B, const Mark* marks, size_t n, int patch,
+                                   const SubpatchArena& coefs) const {
+    const SubpatchShape sh = ps_.patches[patch].shape;
+    const int cx[4] = {B.x0, B.x1, B.x0, B.x1}, cy[4] = {B.y0, B.y0, B.y1, B.y1};
+    for (int k = 0; k < 4; ++k) {
+        const Interval ca(ps_.frame.screen_a(cx[k] + 0.5)), cb(ps_.frame.screen_b(cy[k] + 0.5));
+        bool meets = false;
+        for (size_t j = 0; j < n && !meets; ++j) {
+            ParamBox hit;
+            meets = marks[j].patch == patch && clip_box(coefs, sh, ca, cb, marks[j], hit);
+        }
+        if (!meets) return true;
+    }
+    return false;
+}
+
 // Why the certificate failed on B's marks (RenderStats::SplitCause).
 int ClusterAttempt::certificate_cause(const Mark* marks, size_t n) const {
     const int p0 = marks[0].patch;
@@ -141,8 +161,15 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
         const StepClock clock(st.certify_seconds);
         const Interval a = screen_a(ps_, B.x0, B.x1), b = screen_b(ps_, B.y0, B.y1);
         cluster_system(pp.forms, a, b, sys_);
-        if (!certify_cluster(sys_, box, &st.hs_steps))
-            return {certificate_cause(marks, n), levels_over};
+        // certify_cluster, with a proof of failure between its first step
+        // and the rest: where the first step leaves the question open and a
+        // corner ray of B certainly misses the patch, no certificate can come
+        // (certify_cluster's cost is in its failures that run every step).
+        IVec<2> x = cluster_start(box);
+        ClusterCertificate cert = certify_steps(sys_, x, box, 1, &st.hs_steps);
+        if (cert == ClusterCertificate::open && !corner_misses(B, marks, n, best_patch, coefs))
+            cert = certify_steps(sys_, x, box, kClusterCertifySteps - 1, &st.hs_steps);
+        if (cert != ClusterCertificate::proven) return {certificate_cause(marks, n), levels_over};
         point = enclose_point(pp.forms, box);
         const Interval qbest = point[2];
         if (!(qbest.lo() > 0)) return {certificate_cause(marks, n), levels_over};

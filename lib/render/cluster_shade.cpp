@@ -225,13 +225,10 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
                                                 RenderStats& st) {
     ClusterShading r;
     const ProjectedPatch& pp = ps_.patches[patch];
-    // Step 8: SHADE over the hulls of the intersection points and normals.
-    const PatchEnclosure e = enclose(pp.forms, box, point);
-    const V3<Interval> P = v3(e.point), N = v3(e.normal);
     const Material& mat = ps_.lighting.materials[pp.material];
     // The points in world coordinates: the rotated camera box, cut down to
     // the box from the world-space forms (both enclose every point).
-    IVec<3> Pw = to_world(e.point, true);
+    IVec<3> Pw = to_world(point, true);
     if (ts_ && pp.has_world) {
         const IVec3 W = enclose_point(pp.world, box);
         for (int i = 0; i < 3; ++i) {
@@ -248,6 +245,10 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
         r.shadowed = cl.blocked > 0;
         for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
     }
+    // Step 8: SHADE over the hulls of the intersection points and normals
+    // (the normals only now: a cluster that step 2 leaves undecided needs none).
+    const PatchEnclosure e = enclose(pp.forms, box, point);
+    const V3<Interval> P = v3(e.point), N = v3(e.normal);
     lighting_.ambient = ps_.lighting.ambient;
     r.lighting = ts_ ? &lighting_ : &ps_.lighting;
     r.e = e;
