@@ -70,13 +70,14 @@ bool separating_normal(const ProjectedPatch& pp, const ParamBox& box, Interval a
 }
 
 bool share_corner(const BezierPatch& p, const BezierPatch& q) {
-    for (int i = 0; i < 4; ++i)
+    for (int i = 0; i < 4; ++i) {
+        const double scale = 1e-9 * (1 + norm(p.corner(i)));
         for (int j = 0; j < 4; ++j) {
             const Vec3 d = p.corner(i) - q.corner(j);
-            const double scale = 1e-9 * (1 + norm(p.corner(i)));
             if (std::abs(d.x) <= scale && std::abs(d.y) <= scale && std::abs(d.z) <= scale)
                 return true;
         }
+    }
     return false;
 }
 
@@ -88,20 +89,25 @@ ClusterAttempt::ClusterAttempt(const ProjectedScene& ps, const Scene& scene,
     : ps_(ps), scene_(scene), ts_(ts), dither_(opt.dither), image_(image), levels_(levels),
       shader_(ps, scene, ts, neighbours, levels, opt.dither) {}
 
-// True when a corner ray of B certainly misses patch `patch`: one Bezier clip
-// of each of its marks (clip_box of mark.h) leaves nothing. The marks hold
-// every hit of B's rays on the patch (step 3), so that ray has no zero of G
-// in [0,1]^2 and certify_cluster cannot prove one for every ray of B.
+// True when a corner ray of B certainly misses patch `patch`: it lies outside
+// the screen enclosure of each of the patch's marks or (clip) one Bezier clip
+// of the mark (clip_box of mark.h) leaves nothing. The marks hold every hit of
+// B's rays on the patch (step 3), so that ray has no zero of G in [0,1]^2 and
+// certify_cluster cannot prove one for every ray of B.
 bool ClusterAttempt::corner_misses(const PixelRect& B, const Mark* marks, size_t n, int patch,
-                                   const SubpatchArena& coefs) const {
+                                   const SubpatchArena& coefs, bool clip) const {
     const SubpatchShape sh = ps_.patches[patch].shape;
     const int cx[4] = {B.x0, B.x1, B.x0, B.x1}, cy[4] = {B.y0, B.y0, B.y1, B.y1};
     for (int k = 0; k < 4; ++k) {
-        const Interval ca(ps_.frame.screen_a(cx[k] + 0.5)), cb(ps_.frame.screen_b(cy[k] + 0.5));
+        const double a = ps_.frame.screen_a(cx[k] + 0.5), b = ps_.frame.screen_b(cy[k] + 0.5);
         bool meets = false;
         for (size_t j = 0; j < n && !meets; ++j) {
+            const Mark& m = marks[j];
+            if (m.patch != patch) continue;
+            if (m.pa.is_finite() && m.pb.is_finite() && !(m.pa.contains(a) && m.pb.contains(b)))
+                continue;
             ParamBox hit;
-            meets = marks[j].patch == patch && clip_box(coefs, sh, ca, cb, marks[j], hit);
+            meets = !clip || clip_box(coefs, sh, Interval(a), Interval(b), m, hit);
         }
         if (!meets) return true;
     }
@@ -160,14 +166,18 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
     {
         const StepClock clock(st.certify_seconds);
         const Interval a = screen_a(ps_, B.x0, B.x1), b = screen_b(ps_, B.y0, B.y1);
+        // certify_cluster, with proofs of its failure before its first step
+        // (a corner ray of B outside the screen enclosures of the patch's
+        // marks) and between the first step and the rest (a corner ray that
+        // a Bezier clip of the marks excludes): certify_cluster's cost is in
+        // its failures that run every step.
+        if (corner_misses(B, marks, n, best_patch, coefs, false))
+            return {certificate_cause(marks, n), levels_over};
         cluster_system(pp.forms, a, b, sys_);
-        // certify_cluster, with a proof of failure between its first step
-        // and the rest: where the first step leaves the question open and a
-        // corner ray of B certainly misses the patch, no certificate can come
-        // (certify_cluster's cost is in its failures that run every step).
         IVec<2> x = cluster_start(box);
         ClusterCertificate cert = certify_steps(sys_, x, box, 1, &st.hs_steps);
-        if (cert == ClusterCertificate::open && !corner_misses(B, marks, n, best_patch, coefs))
+        if (cert == ClusterCertificate::open &&
+            !corner_misses(B, marks, n, best_patch, coefs, true))
             cert = certify_steps(sys_, x, box, kClusterCertifySteps - 1, &st.hs_steps);
         if (cert != ClusterCertificate::proven) return {certificate_cause(marks, n), levels_over};
         point = enclose_point(pp.forms, box);

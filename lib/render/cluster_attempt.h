@@ -69,7 +69,7 @@ class ClusterAttempt {
   private:
     int certificate_cause(const Mark* marks, size_t n) const;
     bool corner_misses(const PixelRect& B, const Mark* marks, size_t n, int patch,
-                       const SubpatchArena& coefs) const;
+                       const SubpatchArena& coefs, bool clip) const;
 
     static constexpr long long kSecondOrderArea = 32; // smallest B for step 9's second order
 
