@@ -87,7 +87,8 @@ ClusterAttempt::ClusterAttempt(const ProjectedScene& ps, const Scene& scene,
                                const TriangleScene* ts, const std::vector<int>* neighbours,
                                const RenderOptions& opt, Image& image, int levels)
     : ps_(ps), scene_(scene), ts_(ts), dither_(opt.dither), image_(image), levels_(levels),
-      shader_(ps, scene, ts, neighbours, levels, opt.dither) {}
+      shader_(ps, scene, ts, neighbours, levels, opt.dither),
+      restricted_(4 * BezierPatch::kMaxOrder * BezierPatch::kMaxOrder) {}
 
 // True when a corner ray of B certainly misses patch `patch`: it lies outside
 // the screen enclosure of each of the patch's marks or (clip) one Bezier clip
@@ -162,7 +163,7 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
             box.t = hull(box.t, marks[k].box.t);
         }
     const ProjectedPatch& pp = ps_.patches[best_patch];
-    IVec3 point; // step 7's enclosure of the hits, SHADE's too
+    IVec3 point, world; // step 7's enclosures of the hits (camera, world), SHADE's too
     {
         const StepClock clock(st.certify_seconds);
         const Interval a = screen_a(ps_, B.x0, B.x1), b = screen_b(ps_, B.y0, B.y1);
@@ -180,7 +181,27 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
             !corner_misses(B, marks, n, best_patch, coefs, true))
             cert = certify_steps(sys_, x, box, kClusterCertifySteps - 1, &st.hs_steps);
         if (cert != ClusterCertificate::proven) return {certificate_cause(marks, n), levels_over};
-        point = enclose_point(pp.forms, box);
+        // The hits' enclosures from the marks' subpatches restricted to the
+        // certified box (every hit lies in it and in a mark): their control
+        // points' hulls in camera and in world coordinates. Tighter than
+        // enclose_point's forms over the box on every coordinate sampled
+        // (teapot, scenes 1 and 3: median 0.77-0.87 of its width) and a
+        // fraction of the cost.
+        point = world = IVec3::empty();
+        for (size_t k = 0; k < n; ++k) {
+            if (marks[k].patch != best_patch ||
+                !restrict_mark(coefs, pp.shape, marks[k], box, restricted_.data()))
+                continue;
+            const IVec3 h = subpatch_hull(restricted_.data(), pp.shape);
+            const IVec3 w =
+                ts_ ? shader_.world_hull(restricted_.data(), pp.shape)
+                    : IVec3{{Interval::entire(), Interval::entire(), Interval::entire()}};
+            for (int c = 0; c < 3; ++c) {
+                point[c] = hull(point[c], h[c]);
+                world[c] = hull(world[c], w[c]);
+            }
+        }
+        if (point[2].is_empty()) return {certificate_cause(marks, n), levels_over};
         const Interval qbest = point[2];
         if (!(qbest.lo() > 0)) return {certificate_cause(marks, n), levels_over};
         // Nearest: every other mark q-separated from it, or, where depths
@@ -207,7 +228,7 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
     const StepClock shading(st.shade_seconds);
     const Mark m{best_patch, box, {}};
     // Step 8: SHADE (cluster_shade.h).
-    const ClusterShading cs = shader_.enclose_intensity(best_patch, box, point, st);
+    const ClusterShading cs = shader_.enclose_intensity(best_patch, box, point, world, st);
     if (!cs.decided) return {RenderStats::light, levels_over};
     const auto& I = cs.I;
     const bool secondary = cs.secondary, shadowed = cs.shadowed;

@@ -81,6 +81,7 @@ class ClusterAttempt {
     int levels_;
     ClusterShader shader_;
     ClusterSystem sys_;
+    std::vector<Interval> restricted_; // a mark's subpatch over the certified box
 };
 
 } // namespace seamless

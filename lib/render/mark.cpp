@@ -35,15 +35,12 @@ bool to_local(Interval D, Interval T, Interval& u0, Interval& u1) {
     return !u0.is_empty() && !u1.is_empty() && u0.width() < 1e-6 && u1.width() < 1e-6;
 }
 
-// A copy of m's subpatch restricted to `to` (a sub-box of m.box), appended to
-// the arena; directions whose local ends cannot be enclosed narrowly keep
-// m.box's range. Returns the box the new coefficients belong to.
-ParamBox restrict_copy(SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
-                       size_t& out) {
-    out = arena.size();
-    arena.resize(out + sh.size());
-    std::copy_n(arena.begin() + static_cast<std::ptrdiff_t>(m.coef), sh.size(),
-                arena.begin() + static_cast<std::ptrdiff_t>(out));
+// m's subpatch (coefficients c) restricted to `to` (a sub-box of m.box) into
+// out; directions whose local ends cannot be enclosed narrowly keep m.box's
+// range. Returns the box the new coefficients belong to.
+ParamBox restrict_into(const Interval* c, SubpatchShape sh, const Mark& m, ParamBox to,
+                       Interval* out) {
+    std::copy_n(c, sh.size(), out);
     for (int dir = 0; dir < 2; ++dir) {
         const Interval D = side(m.box, dir), T = side(to, dir);
         if (T.lo() == D.lo() && T.hi() == D.hi()) continue;
@@ -52,9 +49,17 @@ ParamBox restrict_copy(SubpatchArena& arena, SubpatchShape sh, const Mark& m, Pa
             side(to, dir) = D;
             continue;
         }
-        restrict_subpatch(&arena[out], sh, dir, u0, u1);
+        restrict_subpatch(out, sh, dir, u0, u1);
     }
     return to;
+}
+
+// The same appended to the arena (at offset out).
+ParamBox restrict_copy(SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
+                       size_t& out) {
+    out = arena.size();
+    arena.resize(out + sh.size());
+    return restrict_into(&arena[m.coef], sh, m, to, &arena[out]);
 }
 
 double area(const ParamBox& b) {
@@ -146,6 +151,15 @@ int separate_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b
     }
     out[0] = m;
     return 1;
+}
+
+bool restrict_mark(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
+                   Interval* out) {
+    to.s = intersect(to.s, m.box.s);
+    to.t = intersect(to.t, m.box.t);
+    if (to.s.is_empty() || to.t.is_empty()) return false;
+    restrict_into(&arena[m.coef], sh, m, to, out);
+    return true;
 }
 
 Interval plane_range(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, const Vec3& n) {

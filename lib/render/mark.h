@@ -79,6 +79,12 @@ void bisect_mark(SubpatchArena& arena, SubpatchShape sh, const Mark& m, int dir,
 int separate_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, const Mark& m,
                   Mark out[2]);
 
+// m's subpatch restricted to to ^ m.box into out (sh.size() coefficients):
+// false when the two boxes do not meet. The coefficients' box may keep
+// m.box's range along a direction where `to` is too thin to restrict to.
+bool restrict_mark(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
+                   Interval* out);
+
 // The range of n . X over the points X of m's subpatch: the hull of n . P over
 // its control points P (convex hull property; the weights must be positive,
 // else entire).
