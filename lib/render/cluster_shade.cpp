@@ -239,14 +239,14 @@ IVec<3> ClusterShader::world_hull(const Interval* c, SubpatchShape sh) const {
     return h;
 }
 
-ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, const IVec3& point,
+ClusterShading ClusterShader::enclose_intensity(int patch, const PatchEnclosure& e,
                                                 const IVec<3>& world, RenderStats& st) {
     ClusterShading r;
     const ProjectedPatch& pp = ps_.patches[patch];
     const Material& mat = ps_.lighting.materials[pp.material];
     // The points in world coordinates: the rotated camera box, cut down to
     // the caller's world enclosure (both enclose every point).
-    IVec<3> Pw = to_world(point, true);
+    IVec<3> Pw = to_world(e.point, true);
     for (int i = 0; i < 3; ++i) {
         const Interval x = intersect(Pw[i], world[i]);
         if (!x.is_empty()) Pw[i] = x;
@@ -260,9 +260,7 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
         r.shadowed = cl.blocked > 0;
         for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
     }
-    // Step 8: SHADE over the hulls of the intersection points and normals
-    // (the normals only now: a cluster that step 2 leaves undecided needs none).
-    const PatchEnclosure e = enclose(pp.forms, box, point);
+    // Step 8: SHADE over the hulls of the intersection points and normals.
     const V3<Interval> P = v3(e.point), N = v3(e.normal);
     lighting_.ambient = ps_.lighting.ambient;
     r.lighting = ts_ ? &lighting_ : &ps_.lighting;

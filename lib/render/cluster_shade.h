@@ -53,12 +53,12 @@ class ClusterShader {
     ClusterShader(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
                   const std::vector<int>* neighbours, int levels, bool dither);
 
-    // SHADE for every ray of B hitting patch `patch` within `box` (camera
-    // coordinates); point, world: enclosures of the hits in camera and world
-    // coordinates, which step 7 has already computed (world_hull). Secondary
-    // clusters' CPU seconds go to st.secondary_seconds.
-    ClusterShading enclose_intensity(int patch, const ParamBox& box, const IVec3& point,
-                                     const IVec<3>& world, RenderStats& st);
+    // SHADE for every ray of B hitting patch `patch` (camera coordinates);
+    // e: enclosures of the hits and the patch's derivatives there, world: of
+    // the hits in world coordinates, which step 7 has already computed
+    // (world_hull). Secondary clusters' CPU seconds go to st.secondary_seconds.
+    ClusterShading enclose_intensity(int patch, const PatchEnclosure& e, const IVec<3>& world,
+                                     RenderStats& st);
 
     // The hull of a subpatch's control points (c, shape sh; camera
     // coordinates) taken to world coordinates, outward rounded: the points

@@ -154,11 +154,46 @@ int separate_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b
 }
 
 bool restrict_mark(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
-                   Interval* out) {
+                   Interval* out, ParamBox& got) {
     to.s = intersect(to.s, m.box.s);
     to.t = intersect(to.t, m.box.t);
     if (to.s.is_empty() || to.t.is_empty()) return false;
-    restrict_into(&arena[m.coef], sh, m, to, out);
+    got = restrict_into(&arena[m.coef], sh, m, to, out);
+    return true;
+}
+
+bool subpatch_derivatives(const Interval* c, SubpatchShape sh, const ParamBox& box,
+                          const IVec3& point, IVec3& ds, IVec3& dt) {
+    const Interval ws = Interval(box.s.hi()) - Interval(box.s.lo());
+    const Interval wt = Interval(box.t.hi()) - Interval(box.t.lo());
+    if (!(ws.lo() > 0) || !(wt.lo() > 0)) return false;
+    const Interval p(static_cast<double>(sh.p)), q(static_cast<double>(sh.q));
+    // Differences of coordinate d alone: difference_ranges of X_d - 0 Z.
+    Interval Xs[4], Xt[4];
+    for (int d = 0; d < sh.dim; ++d) {
+        Interval du, dv;
+        difference_ranges(c, sh, Interval(0.0), d, du, dv, false);
+        Xs[d] = p * du / ws;
+        Xt[d] = q * dv / wt;
+    }
+    if (sh.dim == 3) {
+        for (int d = 0; d < 3; ++d) {
+            ds[d] = Xs[d];
+            dt[d] = Xt[d];
+        }
+        return true;
+    }
+    Interval W = Interval::empty();
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            const Interval w = c[sh.index(3, i, j)];
+            if (!(w.lo() > 0)) return false;
+            W = hull(W, w);
+        }
+    for (int d = 0; d < 3; ++d) {
+        ds[d] = (Xs[d] - point[d] * Xs[3]) / W;
+        dt[d] = (Xt[d] - point[d] * Xt[3]) / W;
+    }
     return true;
 }
 
