@@ -68,6 +68,8 @@ class ClusterAttempt {
 
   private:
     int certificate_cause(const Mark* marks, size_t n) const;
+    bool corner_misses(const PixelRect& B, const Mark* marks, size_t n, int patch,
+                       const SubpatchArena& coefs, bool clip) const;
 
     static constexpr long long kSecondOrderArea = 32; // smallest B for step 9's second order
 
@@ -79,6 +81,7 @@ class ClusterAttempt {
     int levels_;
     ClusterShader shader_;
     ClusterSystem sys_;
+    std::vector<Interval> restricted_; // a mark's subpatch over the certified box
 };
 
 } // namespace seamless

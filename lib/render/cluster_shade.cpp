@@ -221,23 +221,35 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
     return r;
 }
 
-ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, const IVec3& point,
-                                                RenderStats& st) {
+IVec<3> ClusterShader::world_hull(const Interval* c, SubpatchShape sh) const {
+    IVec<3> h = IVec<3>::empty();
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            IVec3 P;
+            for (int d = 0; d < 3; ++d) P[d] = c[sh.index(d, i, j)];
+            if (sh.dim == 4) {
+                const Interval w = c[sh.index(3, i, j)];
+                if (!(w.lo() > 0))
+                    return IVec<3>{{Interval::entire(), Interval::entire(), Interval::entire()}};
+                for (int d = 0; d < 3; ++d) P[d] = P[d] / w;
+            }
+            const IVec<3> W = to_world(P, true);
+            for (int d = 0; d < 3; ++d) h[d] = hull(h[d], W[d]);
+        }
+    return h;
+}
+
+ClusterShading ClusterShader::enclose_intensity(int patch, const PatchEnclosure& e,
+                                                const IVec<3>& world, RenderStats& st) {
     ClusterShading r;
     const ProjectedPatch& pp = ps_.patches[patch];
-    // Step 8: SHADE over the hulls of the intersection points and normals.
-    const PatchEnclosure e = enclose(pp.forms, box, point);
-    const V3<Interval> P = v3(e.point), N = v3(e.normal);
     const Material& mat = ps_.lighting.materials[pp.material];
     // The points in world coordinates: the rotated camera box, cut down to
-    // the box from the world-space forms (both enclose every point).
+    // the caller's world enclosure (both enclose every point).
     IVec<3> Pw = to_world(e.point, true);
-    if (ts_ && pp.has_world) {
-        const IVec3 W = enclose_point(pp.world, box);
-        for (int i = 0; i < 3; ++i) {
-            const Interval x = intersect(Pw[i], W[i]);
-            if (!x.is_empty()) Pw[i] = x;
-        }
+    for (int i = 0; i < 3; ++i) {
+        const Interval x = intersect(Pw[i], world[i]);
+        if (!x.is_empty()) Pw[i] = x;
     }
     // With secondary rays, only the lights that reach B count (step 2), and
     // mirrors and glass add their reflected and refracted clusters (steps 3, 4).
@@ -248,6 +260,8 @@ ClusterShading ClusterShader::enclose_intensity(int patch, const ParamBox& box, 
         r.shadowed = cl.blocked > 0;
         for (Light& l : lighting_.lights) l.position = ps_.frame.to_camera(l.position);
     }
+    // Step 8: SHADE over the hulls of the intersection points and normals.
+    const V3<Interval> P = v3(e.point), N = v3(e.normal);
     lighting_.ambient = ps_.lighting.ambient;
     r.lighting = ts_ ? &lighting_ : &ps_.lighting;
     r.e = e;

@@ -14,6 +14,7 @@
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
 #include <seamless/render/trace.h>
+#include <seamless/spline/subpatch.h>
 
 #include <array>
 #include <vector>
@@ -52,12 +53,18 @@ class ClusterShader {
     ClusterShader(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
                   const std::vector<int>* neighbours, int levels, bool dither);
 
-    // SHADE for every ray of B hitting patch `patch` within `box` (camera
-    // coordinates); point: enclose_point(patch's forms, box), which step 7
-    // has already computed. Secondary clusters' CPU seconds go to
-    // st.secondary_seconds.
-    ClusterShading enclose_intensity(int patch, const ParamBox& box, const IVec3& point,
+    // SHADE for every ray of B hitting patch `patch` (camera coordinates);
+    // e: enclosures of the hits and the patch's derivatives there, world: of
+    // the hits in world coordinates, which step 7 has already computed
+    // (world_hull). Secondary clusters' CPU seconds go to st.secondary_seconds.
+    ClusterShading enclose_intensity(int patch, const PatchEnclosure& e, const IVec<3>& world,
                                      RenderStats& st);
+
+    // The hull of a subpatch's control points (c, shape sh; camera
+    // coordinates) taken to world coordinates, outward rounded: the points
+    // of the subpatch in world coordinates (convex hull property; an affine
+    // map keeps it). Entire where a weight is not certainly positive.
+    IVec<3> world_hull(const Interval* c, SubpatchShape sh) const;
 
     // Step 2 at the world-space hull Pw of a cluster's points on `patch`:
     // fills `visible` with the lights that reach every point.

@@ -35,15 +35,12 @@ bool to_local(Interval D, Interval T, Interval& u0, Interval& u1) {
     return !u0.is_empty() && !u1.is_empty() && u0.width() < 1e-6 && u1.width() < 1e-6;
 }
 
-// A copy of m's subpatch restricted to `to` (a sub-box of m.box), appended to
-// the arena; directions whose local ends cannot be enclosed narrowly keep
-// m.box's range. Returns the box the new coefficients belong to.
-ParamBox restrict_copy(SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
-                       size_t& out) {
-    out = arena.size();
-    arena.resize(out + sh.size());
-    std::copy_n(arena.begin() + static_cast<std::ptrdiff_t>(m.coef), sh.size(),
-                arena.begin() + static_cast<std::ptrdiff_t>(out));
+// m's subpatch (coefficients c) restricted to `to` (a sub-box of m.box) into
+// out; directions whose local ends cannot be enclosed narrowly keep m.box's
+// range. Returns the box the new coefficients belong to.
+ParamBox restrict_into(const Interval* c, SubpatchShape sh, const Mark& m, ParamBox to,
+                       Interval* out) {
+    std::copy_n(c, sh.size(), out);
     for (int dir = 0; dir < 2; ++dir) {
         const Interval D = side(m.box, dir), T = side(to, dir);
         if (T.lo() == D.lo() && T.hi() == D.hi()) continue;
@@ -52,9 +49,17 @@ ParamBox restrict_copy(SubpatchArena& arena, SubpatchShape sh, const Mark& m, Pa
             side(to, dir) = D;
             continue;
         }
-        restrict_subpatch(&arena[out], sh, dir, u0, u1);
+        restrict_subpatch(out, sh, dir, u0, u1);
     }
     return to;
+}
+
+// The same appended to the arena (at offset out).
+ParamBox restrict_copy(SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
+                       size_t& out) {
+    out = arena.size();
+    arena.resize(out + sh.size());
+    return restrict_into(&arena[m.coef], sh, m, to, &arena[out]);
 }
 
 double area(const ParamBox& b) {
@@ -146,6 +151,50 @@ int separate_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b
     }
     out[0] = m;
     return 1;
+}
+
+bool restrict_mark(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
+                   Interval* out, ParamBox& got) {
+    to.s = intersect(to.s, m.box.s);
+    to.t = intersect(to.t, m.box.t);
+    if (to.s.is_empty() || to.t.is_empty()) return false;
+    got = restrict_into(&arena[m.coef], sh, m, to, out);
+    return true;
+}
+
+bool subpatch_derivatives(const Interval* c, SubpatchShape sh, const ParamBox& box,
+                          const IVec3& point, IVec3& ds, IVec3& dt) {
+    const Interval ws = Interval(box.s.hi()) - Interval(box.s.lo());
+    const Interval wt = Interval(box.t.hi()) - Interval(box.t.lo());
+    if (!(ws.lo() > 0) || !(wt.lo() > 0)) return false;
+    const Interval p(static_cast<double>(sh.p)), q(static_cast<double>(sh.q));
+    // Differences of coordinate d alone: difference_ranges of X_d - 0 Z.
+    Interval Xs[4], Xt[4];
+    for (int d = 0; d < sh.dim; ++d) {
+        Interval du, dv;
+        difference_ranges(c, sh, Interval(0.0), d, du, dv, false);
+        Xs[d] = p * du / ws;
+        Xt[d] = q * dv / wt;
+    }
+    if (sh.dim == 3) {
+        for (int d = 0; d < 3; ++d) {
+            ds[d] = Xs[d];
+            dt[d] = Xt[d];
+        }
+        return true;
+    }
+    Interval W = Interval::empty();
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            const Interval w = c[sh.index(3, i, j)];
+            if (!(w.lo() > 0)) return false;
+            W = hull(W, w);
+        }
+    for (int d = 0; d < 3; ++d) {
+        ds[d] = (Xs[d] - point[d] * Xs[3]) / W;
+        dt[d] = (Xt[d] - point[d] * Xt[3]) / W;
+    }
+    return true;
 }
 
 Interval plane_range(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, const Vec3& n) {

@@ -79,6 +79,23 @@ void bisect_mark(SubpatchArena& arena, SubpatchShape sh, const Mark& m, int dir,
 int separate_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, const Mark& m,
                   Mark out[2]);
 
+// m's subpatch restricted to to ^ m.box into out (sh.size() coefficients):
+// false when the two boxes do not meet. got: the box the coefficients belong
+// to, which keeps m.box's range along a direction where `to` is too thin to
+// restrict to.
+bool restrict_mark(const SubpatchArena& arena, SubpatchShape sh, const Mark& m, ParamBox to,
+                   Interval* out, ParamBox& got);
+
+// The partial derivatives of the point X / W over a subpatch's box (its
+// coefficients c over exactly `box`; point: an enclosure of X / W there): p
+// times the hull of the coefficients' s-differences divided by the box's width
+// (the derivative of a Bezier patch and the convex hull property), t alike;
+// for a rational patch the quotient rule P_s = (X_s - P W_s) / W with W the
+// hull of the weights. false where the box is too thin to divide by or a
+// weight is not certainly positive.
+bool subpatch_derivatives(const Interval* c, SubpatchShape sh, const ParamBox& box,
+                          const IVec3& point, IVec3& ds, IVec3& dt);
+
 // The range of n . X over the points X of m's subpatch: the hull of n . P over
 // its control points P (convex hull property; the weights must be positive,
 // else entire).

@@ -77,4 +77,16 @@ int separate(const ClusterSystem& sys, const ParamBox& box, ParamBox out[2]);
 // Adds the Hansen-Sengupta steps taken to *steps when given.
 bool certify_cluster(const ClusterSystem& sys, ParamBox& box, long long* steps = nullptr);
 
+// certify_cluster in pieces, for a caller that may give up between them
+// (cluster_attempt.h): cluster_start(box) is the first box x, certify_steps
+// takes at most `iterations` steps from x (left as the next start) and says
+// whether they proved the cluster (box contracted), proved nothing more can
+// come of it (failed), or ran out (open). certify_cluster is
+// certify_steps(sys, cluster_start(box), box, kClusterCertifySteps) == proven.
+enum class ClusterCertificate { proven, failed, open };
+constexpr int kClusterCertifySteps = 6;
+IVec<2> cluster_start(const ParamBox& box);
+ClusterCertificate certify_steps(const ClusterSystem& sys, IVec<2>& x, ParamBox& box,
+                                 int iterations, long long* steps = nullptr);
+
 } // namespace seamless

@@ -20,6 +20,44 @@ double direction_error(Interval d, Interval dd, double w) {
     return std::min(first, second); // NaN-free: rad and mag of finite or entire intervals
 }
 
+// Coordinate c of a power form over a box by nested interval Horner. On a
+// corner's hit box (newton_hit's, about 1e-13 wide) it is as tight as
+// enclose()'s Horner with Lemma 2 intersected with the mean value form, to
+// within a few roundings, at a fraction of their cost.
+Interval nested_horner(const PowerForm& f, int c, const ParamBox& box) {
+    Interval r(0.0);
+    for (int i = f.p; i >= 0; --i) {
+        Interval row(0.0);
+        for (int j = f.q; j >= 0; --j) row = row * box.t + f.at(c, i, j);
+        r = r * box.s + row;
+    }
+    return r;
+}
+
+// Point and normal over a corner's hit box: nested Horner on X, X_s and X_t;
+// a rational patch's P = X / W with W within [min w_ij, max w_ij] and the
+// quotient rule P_s = (X_s - P W_s) / W, as in enclose() (enclosure.h).
+void corner_frame(const PatchForms& f, const ParamBox& box, V3<Interval>& P, V3<Interval>& N) {
+    IVec3 X, Xs, Xt;
+    for (int c = 0; c < 3; ++c) {
+        X[c] = nested_horner(f.X, c, box);
+        Xs[c] = nested_horner(f.Xs, c, box);
+        Xt[c] = nested_horner(f.Xt, c, box);
+    }
+    if (f.rational) {
+        const Interval W = intersect(nested_horner(f.X, 3, box), f.w_hull);
+        const Interval Ws = nested_horner(f.Xs, 3, box), Wt = nested_horner(f.Xt, 3, box);
+        for (int c = 0; c < 3; ++c) {
+            X[c] = X[c] / W;
+            Xs[c] = (Xs[c] - X[c] * Ws) / W;
+            Xt[c] = (Xt[c] - X[c] * Wt) / W;
+        }
+    }
+    for (int c = 0; c < 3; ++c) X[c] = intersect(X[c], f.control_hull[c]);
+    P = v3(X);
+    N = v3(cross(Xs, Xt));
+}
+
 } // namespace
 
 double bilinear_error(const IntervalJet2& I, double wa, double wb) {
@@ -36,8 +74,9 @@ bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Mat
     Interval q;
     if (!newton_hit(pp, a, b, box, sys, J, hit, q, st)) return false;
     ++st.primary_rays;
-    const PatchEnclosure e = enclose(pp.forms, hit);
-    I = shade<Interval>(lighting, mat, v3(e.point), v3(e.normal), Vec3{});
+    V3<Interval> P, N;
+    corner_frame(pp.forms, hit, P, N);
+    I = shade<Interval>(lighting, mat, P, N, Vec3{});
     return I[0].is_finite() && I[1].is_finite() && I[2].is_finite();
 }
 

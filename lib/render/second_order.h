@@ -107,7 +107,13 @@ inline int bilinear_level(const std::array<double, 3> corner[4], int c, double f
                           double d, int levels, int lo, int hi) {
     const double v = (1 - fy) * ((1 - fx) * corner[0][c] + fx * corner[1][c]) +
                      fy * ((1 - fx) * corner[2][c] + fx * corner[3][c]);
-    const long level = std::lround(clamp01(v) * (levels - 1) + d);
+    // std::lround without the library call: for x > 0 the truncation is the
+    // floor and x - floor(x) is exact, so this rounds halves away from zero
+    // too; x <= 0 gives 0 where lround gives 0 or less, the same after the
+    // clamp to [lo, hi] (lo >= 0).
+    const double x = clamp01(v) * (levels - 1) + d;
+    long level = x > 0 ? static_cast<long>(x) : 0;
+    if (x - static_cast<double>(level) >= 0.5) ++level;
     return static_cast<int>(std::clamp<long>(level, lo, hi));
 }
 

@@ -12,6 +12,7 @@
 #include "dome_patch.h"
 
 #include <random>
+#include <vector>
 
 using namespace seamless;
 
@@ -206,4 +207,52 @@ TEST_CASE("A mark's plane range holds n . X of every point over its box", "[prim
         }
     }
     CHECK(narrower > 50);
+}
+
+TEST_CASE("The certificate in pieces is certify_cluster, and fails where a corner ray clips away",
+          "[primary_cluster]") {
+    std::mt19937 rng(33);
+    std::uniform_real_distribution<double> U(-0.4, 0.4), W(0.0, 0.05);
+    int certified = 0, corner_missed = 0;
+    for (int n = 0; n < 300; ++n) {
+        const BezierPatch b = dome(rng);
+        const PatchForms f = patch_forms(b);
+        const SubpatchShape sh = subpatch_shape(b);
+        std::vector<Interval> c(sh.size());
+        control_coefficients(b, sh, c.data());
+        const double a0 = U(rng), b0 = U(rng);
+        const Interval a(a0, a0 + W(rng)), bb(b0, b0 + W(rng));
+        ClusterSystem sys;
+        cluster_system(f, a, bb, sys);
+        ParamBox box;
+        if (!narrow(sys, box)) continue;
+        ParamBox whole = box, pieces = box;
+        long long steps_whole = 0, steps_pieces = 0;
+        const bool cert = certify_cluster(sys, whole, &steps_whole);
+        IVec<2> x = cluster_start(pieces);
+        ClusterCertificate r = certify_steps(sys, x, pieces, 1, &steps_pieces);
+        if (r == ClusterCertificate::open)
+            r = certify_steps(sys, x, pieces, kClusterCertifySteps - 1, &steps_pieces);
+        CHECK((r == ClusterCertificate::proven) == cert);
+        CHECK(steps_pieces == steps_whole);
+        if (cert) {
+            CHECK(pieces.s.lo() == whole.s.lo());
+            CHECK(pieces.s.hi() == whole.s.hi());
+            CHECK(pieces.t.lo() == whole.t.lo());
+            CHECK(pieces.t.hi() == whole.t.hi());
+        }
+        certified += cert;
+        // A corner ray that one Bezier clip of the whole patch excludes has
+        // no hit: the cluster cannot be certified (cluster_attempt.cpp).
+        bool missed = false;
+        for (double ca : {a.lo(), a.hi()})
+            for (double cb : {bb.lo(), bb.hi()}) {
+                Interval u, v;
+                missed |= !clip_cluster(c.data(), sh, Interval(ca), Interval(cb), u, v);
+            }
+        corner_missed += missed;
+        if (missed) CHECK_FALSE(cert);
+    }
+    CHECK(certified > 30);
+    CHECK(corner_missed > 30);
 }

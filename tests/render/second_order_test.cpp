@@ -19,7 +19,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <random>
 #include <vector>
 
 using namespace seamless;
@@ -178,4 +180,29 @@ TEST_CASE("INTRACY with the second-order step 9 agrees with the per-pixel refere
     const test::ImageComparison d = test::compare(dithered, reference);
     CHECK(d.fraction_within_one() >= 0.99);
     CHECK(d.surface_mismatch == 0);
+}
+
+TEST_CASE("bilinear_level rounds as std::lround within the enclosure's levels", "[second_order]") {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-0.1, 1.1), D(-0.5, 0.5);
+    const int levels[] = {2, 16, 256, 65536};
+    for (int n = 0; n < 20000; ++n) {
+        const int L = levels[n % 4];
+        std::array<double, 3> corner[4];
+        for (auto& k : corner)
+            for (double& v : k) v = U(rng);
+        // Every fourth value a tie: corners at (level + 0.5) / (L - 1), no dither.
+        if (n % 4 == 3) {
+            const double v = (std::uniform_int_distribution<int>(0, L - 2)(rng) + 0.5) / (L - 1);
+            for (auto& k : corner) k[0] = v;
+        }
+        const double fx = std::uniform_real_distribution<double>(0, 1)(rng), fy = fx / 2;
+        const double d = n % 4 == 3 ? 0.0 : D(rng);
+        const int lo = std::uniform_int_distribution<int>(0, L - 1)(rng);
+        const int hi = std::uniform_int_distribution<int>(lo, L - 1)(rng);
+        const double v = (1 - fy) * ((1 - fx) * corner[0][0] + fx * corner[1][0]) +
+                         fy * ((1 - fx) * corner[2][0] + fx * corner[3][0]);
+        const long want = std::clamp<long>(std::lround(clamp01(v) * (L - 1) + d), lo, hi);
+        CHECK(bilinear_level(corner, 0, fx, fy, d, L, lo, hi) == want);
+    }
 }
