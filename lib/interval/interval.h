@@ -26,6 +26,18 @@
 
 namespace seamless {
 
+// The absolute error allowance of n roundings for gradual underflow. A
+// rounding whose result is subnormal errs by at most denorm_min / 2, so n of
+// them by n denorm_min / 2; n times the smallest NORMAL double (2^52 times
+// denorm_min) bounds that with room to spare and is itself normal: an x86
+// operation that produces or stores a subnormal takes a microcode assist of
+// about a hundred cycles, and the allowance n * denorm_min was such a
+// subnormal in every point enclosure (perf: 58 % of real_range_lanes' samples
+// on one instruction after it; teapot 640x480 x 16 render 0.38 -> 0.25 s user CPU).
+inline double underflow_allowance(double n) {
+    return n * std::numeric_limits<double>::min();
+}
+
 // The next representable double above x (x itself for +inf and NaN).
 // Without branches on the sign: x + 0 turns -0 into +0 (round to nearest),
 // whose successor is denorm_min; then one ulp up is +1 on the bits of a

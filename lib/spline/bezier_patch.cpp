@@ -86,7 +86,7 @@ void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Int
         for (int k = 1; k <= b.p; ++k)
             for (int i = 0; i <= b.p - k; ++i) col[i] = rs * col[i] + s * col[i + 1];
         const double v = col[0];
-        double e = 4 * u * levels * M + 3 * levels * std::numeric_limits<double>::denorm_min();
+        double e = 4 * u * levels * M + underflow_allowance(3.0 * levels);
         e = next_up(next_up(e));
         out[c] = std::isfinite(v) && std::isfinite(e) ? Interval(next_down(v - e), next_up(v + e))
                                                       : Interval::entire();

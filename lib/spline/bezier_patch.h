@@ -60,7 +60,7 @@ HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t);
 // within 3.1u ((1 - t)|a| + t|b|) <= 3.1u M of the exact one (u = 2^-53, M =
 // max |b_ij| of the coordinate; fl(1 - t) is exact or within u (1 - t)), and
 // earlier errors pass through with convex weights, so after p + q levels the
-// error is below 4u (p + q) M, plus 3 (p + q) denorm_min for underflow. Far
+// error is below 4u (p + q) M, plus underflow_allowance(3 (p + q)) for underflow. Far
 // cheaper than interval Horner on the power form at a point.
 void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out);
 

@@ -55,7 +55,7 @@ template <class Deg> Interval horner_point(const double* c, Deg n, double x) {
     const double k = 2.0 * n + 4;
     const double g = k * u / (1 - k * u);
     double e = g * s / (1 - g);
-    e += (4.0 * n + 4) * std::numeric_limits<double>::denorm_min();
+    e += underflow_allowance(4.0 * n + 4);
     e = next_up(next_up(next_up(e)));
     return {next_down(r - e), next_up(r + e)};
 }
@@ -92,7 +92,7 @@ template <class Deg>
     const double k = 2.0 * n + 4;
     const double g = k * u / (1 - k * u);
     Lanes e = lanes::splat(g) * s / lanes::splat(1 - g);
-    e = e + lanes::splat((4.0 * n + 4) * std::numeric_limits<double>::denorm_min());
+    e = e + lanes::splat(underflow_allowance(4.0 * n + 4));
     e = lanes::up(lanes::up(lanes::up(e)));
     const Lanes neg_lo = lanes::up(e - r), hi = lanes::up(r + e);
     p0 = {-neg_lo[0], hi[0]};
@@ -168,7 +168,7 @@ Interval narrow_polynomial_range(const double* lo, const double* hi, Deg n, Inte
     constexpr double eps = 0x1p-53;
     const double k = n + 4;
     const double g = k * eps / (1 - k * eps);
-    double R = s / (1 - g) + (4.0 * n + 4) * std::numeric_limits<double>::denorm_min();
+    double R = s / (1 - g) + underflow_allowance(4.0 * n + 4);
     R = next_up(next_up(next_up(R)));
     const Interval rm = real_polynomial_range(m, n, u, fast);
     return {next_down(rm.lo() - R), next_up(rm.hi() + R)};

@@ -208,3 +208,39 @@ TEST_CASE("mean value form: the overestimation shrinks quadratically (Propositio
             }
         }
 }
+
+TEST_CASE("point enclosures near the underflow threshold hold the exact value",
+          "[enclosure][underflow]") {
+    // Coefficients whose products and sums are subnormal doubles: the error
+    // of each rounding is then absolute, not relative, and only the allowance
+    // for gradual underflow (underflow_allowance of interval.h) and the final
+    // outward ulps cover it.
+    // long double keeps these values normal (15-bit exponent), so its Horner
+    // sum is exact to far below the doubles' absolute error here.
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    std::uint64_t seed = 12345;
+    auto next = [&seed]() {
+        seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(seed >> 11) * 0x1p-53;
+    };
+    int checked = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const int n = 1 + trial % 9;
+        Interval c[PowerForm::kMaxOrder];
+        double cd[PowerForm::kMaxOrder];
+        for (int i = 0; i <= n; ++i) {
+            cd[i] = (next() - 0.5) * 4096 * tiny * (1 + trial % 7); // a few thousand ulps of 0
+            c[i] = Interval(cd[i]);
+        }
+        const double x = next();
+        const Interval r = polynomial_range(c, n, Interval(x));
+        long double v = cd[n];
+        for (int i = n - 1; i >= 0; --i) v = v * x + cd[i];
+        REQUIRE(r.lo() <= v);
+        REQUIRE(r.hi() >= v);
+        ++checked;
+    }
+    CHECK(checked == 2000);
+    CHECK(underflow_allowance(40) >= 40 * std::numeric_limits<double>::denorm_min());
+    CHECK(std::isnormal(underflow_allowance(1)));
+}
