@@ -37,13 +37,18 @@ IMat<2> jacobian(const ClusterSystem& sys, const ParamBox& box) {
 }
 
 // ||I - C A||_inf < 1 with C = mid(A)^-1: every matrix of A is regular.
-bool regular(const IMat<2>& A) {
-    RMat<2> C;
-    if (!invert<2>(mid(A), C)) return false;
-    const IMat<2> CA = C * A;
+// J.C and J.CA are set for J.step (C = I where mid(A) is singular).
+bool regular(MarkJacobian& J) {
+    J.preconditioned = invert<2>(mid(J.A), J.C);
+    if (!J.preconditioned) {
+        J.C = identity_matrix<2>();
+        J.CA = J.A;
+        return false;
+    }
+    J.CA = J.C * J.A;
     for (int i = 0; i < 2; ++i) {
         double row = 0;
-        for (int k = 0; k < 2; ++k) row += (Interval(i == k ? 1.0 : 0.0) - CA(i, k)).mag();
+        for (int k = 0; k < 2; ++k) row += (Interval(i == k ? 1.0 : 0.0) - J.CA(i, k)).mag();
         if (!(next_up(row) < 1)) return false;
     }
     return true;
@@ -88,7 +93,7 @@ MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box) {
 MarkJacobian mark_jacobian(const IMat<2>& A) {
     MarkJacobian j;
     j.A = A;
-    j.regular = regular(A);
+    j.regular = regular(j);
     return j;
 }
 
@@ -99,7 +104,6 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     // `start` or the box's centre, kept inside the box; a run that keeps
     // leaving the box (the ray passes beside the patch) stops early.
     if (!J.regular) return false;
-    const IMat<2>& A = J.A;
     double s = box.s.mid(), t = box.t.mid(), step = 1;
     if (start) {
         s = std::clamp(start[0], box.s.lo(), box.s.hi());
@@ -130,7 +134,7 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     const IVec<2> F{{X[0] - Interval(a) * X[2], X[1] - Interval(b) * X[2]}};
     // A over the box bounds G' over Y too; only where it is too wide to
     // certify is the Jacobian enclosed over Y itself.
-    HansenSenguptaStep<2> hs = hansen_sengupta<2>(A, F, Y, RVec<2>{s, t});
+    HansenSenguptaStep<2> hs = J.step(F, Y, RVec<2>{s, t});
     ++st.hs_steps;
     if (!hs.unique) {
         hs = hansen_sengupta<2>(jacobian(sys.forms(), ParamBox{Y[0], Y[1]}), F, Y, RVec<2>{s, t});
@@ -145,15 +149,15 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
                                RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
                                const MarkJacobian* given, ParamBox* rest, const double* start) {
-    const MarkJacobian J = given ? *given : mark_jacobian(sys.forms(), box);
-    const IMat<2>& A = J.A;
+    MarkJacobian own;
+    const MarkJacobian& J = given ? *given : (own = mark_jacobian(sys.forms(), box));
     if (newton_hit(pp, a, b, box, sys, J, hit, q, st, start)) return NewtonOutcome::hit;
     // No certified hit: one Hansen-Sengupta step over the whole box; empty
     // means no zero there (Theorem 6 ii).
     const IVec<2> X{{box.s, box.t}};
     const RVec<2> c = mid(X);
     const IVec<2> Fc = sys.at(c[0], c[1]);
-    const HansenSenguptaStep<2> whole = hansen_sengupta<2>(A, Fc, X, c);
+    const HansenSenguptaStep<2> whole = J.step(Fc, X, c);
     ++st.hs_steps;
     if (whole.box.is_empty()) return NewtonOutcome::miss;
     if (rest) *rest = {whole.box[0], whole.box[1]}; // every zero in box is here (Theorem 6 i)

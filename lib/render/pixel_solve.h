@@ -27,6 +27,8 @@
 #include <seamless/render/projection.h>
 #include <seamless/render/render.h>
 
+#include <seamless/interval/hansen_sengupta.h>
+
 #include <array>
 #include <utility>
 #include <vector>
@@ -74,6 +76,14 @@ class RaySystem {
 struct MarkJacobian {
     IMat<2> A;
     bool regular = false;
+    // The Hansen-Sengupta preconditioner, once for every step with A:
+    // C = mid(A)^-1 (identity when mid(A) is singular: preconditioned false), CA = C A.
+    RMat<2> C{};
+    IMat<2> CA;
+    bool preconditioned = false;
+    HansenSenguptaStep<2> step(const IVec<2>& f_center, const IVec<2>& x, const RVec<2>& c) const {
+        return hansen_sengupta_preconditioned<2>(C, CA, preconditioned, f_center, x, c);
+    }
 };
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
 // The same from a Jacobian enclosed otherwise (subpatch_jacobian of primary_cluster.h).
