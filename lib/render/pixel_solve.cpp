@@ -125,8 +125,9 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
         outside = (cs != s || ct != t) ? outside + 1 : 0;
         s = cs;
         t = ct;
-        converged = outside == 0 && (step <= 1e-10 || (prev && step <= 1e-5 &&
-                                                       step * step * step < 1e-11 * last * last));
+        converged =
+            outside == 0 &&
+            (step <= 1e-10 || (prev && step <= 1e-5 && step * step * step < 1e-11 * last * last));
         prev = 1;
     }
     if (!converged) return false;
@@ -272,8 +273,18 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
         Interval q;
         ParamBox rest = box;
         const bool first = depth == 0;
-        const NewtonOutcome nc = newton_certified(
-            pp, a, b, box, sys, hb, q, st, first ? J : nullptr, &rest, first ? start : nullptr);
+        // Below the first box, the shared Jacobian (enclosed over a box
+        // holding this one, so over this one too) where it is regular; a
+        // fresh one from the ray's power forms only where that step decided
+        // nothing and left most of the box.
+        const bool shared = J && (first || J->regular);
+        NewtonOutcome nc = newton_certified(pp, a, b, box, sys, hb, q, st, shared ? J : nullptr,
+                                            &rest, first ? start : nullptr);
+        if (nc == NewtonOutcome::undecided && !first && shared &&
+            !(rest.s.width() * rest.t.width() < 0.25 * box.s.width() * box.t.width())) {
+            const ParamBox part = rest; // every zero in box is here
+            nc = newton_certified(pp, a, b, part, sys, hb, q, st, nullptr, &rest);
+        }
         if (nc != NewtonOutcome::undecided) {
             ++st.pixel_newton_certified;
             if (nc == NewtonOutcome::hit) near.take(patch, hb, q);
