@@ -160,16 +160,24 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
     MarkJacobian own;
     const MarkJacobian& J = given ? *given : (own = mark_jacobian(sys.forms(), box));
     if (newton_hit(pp, a, b, box, sys, J, hit, q, st, start)) return NewtonOutcome::hit;
-    // No certified hit: one Hansen-Sengupta step over the whole box; empty
-    // means no zero there (Theorem 6 ii).
+    ParamBox part;
+    if (!may_hold_zero(sys, J, box, part, st)) return NewtonOutcome::miss;
+    if (rest) *rest = part;
+    return NewtonOutcome::undecided;
+}
+
+bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& box, ParamBox& rest,
+                   RenderStats& st) {
+    // One Hansen-Sengupta step over the whole box; empty means no zero
+    // there (Theorem 6 ii).
     const IVec<2> X{{box.s, box.t}};
     const RVec<2> c = mid(X);
     const IVec<2> Fc = sys.at(c[0], c[1]);
     const HansenSenguptaStep<2> whole = J.step(Fc, X, c);
     ++st.hs_steps;
-    if (whole.box.is_empty()) return NewtonOutcome::miss;
-    if (rest) *rest = {whole.box[0], whole.box[1]}; // every zero in box is here (Theorem 6 i)
-    return NewtonOutcome::undecided;
+    if (whole.box.is_empty()) return false;
+    rest = {whole.box[0], whole.box[1]}; // every zero in box is here (Theorem 6 i)
+    return true;
 }
 
 void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
@@ -339,6 +347,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     const Mark& mark = shared.marks()[k];
     const ProjectedPatch& pp = ps.patches[mark.patch];
     const MarkJacobian& J = shared.jacobian(k);
+    ParamBox rest = mark.box;
     {
         RaySystem sys(pp, a, b, scratch.sys);
         ParamBox hb;
@@ -351,9 +360,15 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
             near.take(mark.patch, hb, q);
             return;
         }
+        // Newton left the box (the ray passes beside this part of the
+        // patch): with a regular Jacobian one Hansen-Sengupta step over the
+        // box mostly proves the miss, at a tenth of the clip's cost.
+        if (J.regular && !may_hold_zero(sys, J, mark.box, rest, st)) return;
     }
     ParamBox box;
     if (!clip_box(shared.coefs(), pp.shape, Interval(a), Interval(b), mark, box)) return;
+    box = {intersect(box.s, rest.s), intersect(box.t, rest.t)}; // both hold every hit
+    if (box.s.is_empty() || box.t.is_empty()) return;
     const PixelHit before = near.best;
     solve_box(pp, a, b, box, mark.patch, scratch, st, near, &J, shared.start(k));
     if (near.best.patch == mark.patch &&

@@ -102,6 +102,11 @@ enum class NewtonOutcome { hit, miss, undecided };
 bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
                 const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
                 const double* start = nullptr);
+// The part after Newton: false when one Hansen-Sengupta step with J over box
+// proves that the ray meets the patch nowhere in box (Theorem 6 ii); else
+// rest receives the part of box holding every hit (Theorem 6 i).
+bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& box, ParamBox& rest,
+                   RenderStats& st);
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
                                RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
                                const MarkJacobian* J = nullptr, ParamBox* rest = nullptr,
