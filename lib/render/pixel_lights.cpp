@@ -68,20 +68,18 @@ class PyramidHull {
 // Whether some triangle of another patch than `skip` may meet the cluster:
 // the root hierarchy's boxes, then each patch tree's triangle hulls, compared
 // with the cluster's hull (remarks 1-2), then the triangles themselves
-// (pyramid_may_meet_triangle, then Proposition 11). The patch's own tree is
+// (pyramid_may_meet_triangle; Proposition 11's contraction after it, tried,
+// rejected too few triangles to pay). The patch's own tree is
 // never entered: its triangles lie at the cluster's end points.
 // hint: a triangle that met an earlier cluster to the same light, tried first
 // (shadows are coherent); set to the one found.
-bool may_block(const TriangleScene& ts, const RayCluster& rc, const IVec<3>& Pw, Vec3 light,
-               int skip, int& hint) {
+bool may_block(const TriangleScene& ts, const IVec<3>& Pw, Vec3 light, int skip, int& hint) {
     const PyramidHull ch(light, Pw);
     const PatchTrees& trees = ts.tess.trees;
     const auto& V = ts.tess.mesh.positions;
     const auto meets = [&](int t) {
         const auto& tri = ts.tess.mesh.triangles[t];
-        if (!(pyramid_may_meet_triangle(light, Pw, V[tri[0]], V[tri[1]], V[tri[2]]) &&
-              may_hit_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]])))
-            return false;
+        if (!pyramid_may_meet_triangle(light, Pw, V[tri[0]], V[tri[1]], V[tri[2]])) return false;
         hint = t;
         return true;
     };
@@ -122,12 +120,7 @@ void lights_reaching_box(const Scene& scene, const TriangleScene& ts, const IVec
         const Light& light = scene.lights[l];
         lit[l] = 0;
         if (!light.on()) continue;
-        RayCluster rc; // from the light (q = 0) to the points (q = 1)
-        for (int i = 0; i < 3; ++i) {
-            rc.origin[i] = Interval(light.position[i]);
-            rc.direction[i] = Pw[i] - Interval(light.position[i]);
-        }
-        lit[l] = may_block(ts, rc, Pw, light.position, patch, hints[l]) ? 0 : 1;
+        lit[l] = may_block(ts, Pw, light.position, patch, hints[l]) ? 0 : 1;
     }
 }
 
