@@ -261,8 +261,12 @@ class PartRenderer {
                 PixelShade p;
                 p.hit = solve_pixel(ps_, ps_.frame.screen_a(x + 0.5), ps_.frame.screen_b(y + 0.5),
                                     nullptr, 0, pixel_, st, &shared_);
-                if (p.hit.patch >= 0)
-                    surface_frame(ps_.patches[p.hit.patch].patch, p.hit.s, p.hit.t, p.P, p.N);
+                if (p.hit.patch >= 0) {
+                    // The evaluation there is the next Newton run's first on that mark.
+                    SurfacePoint at;
+                    surface_frame(ps_.patches[p.hit.patch].patch, p.hit.s, p.hit.t, p.P, p.N, &at);
+                    if (p.hit.mark >= 0) shared_.evaluated(p.hit.mark, p.hit.s, p.hit.t, at);
+                }
                 hits_.push_back(p);
             }
         if (ts_) share_lights();

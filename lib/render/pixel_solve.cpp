@@ -12,8 +12,8 @@ namespace {
 
 // One Newton step for X - aZ = 0, Y - bZ = 0 at (s, t) in doubles.
 // false where the Jacobian is singular.
-bool newton_step(const BezierPatch& p, double a, double b, double& s, double& t, double& step) {
-    const SurfacePoint sp = evaluate(p, s, t);
+// sp: the patch evaluated at (s, t).
+bool newton_step(const SurfacePoint& sp, double a, double b, double& s, double& t, double& step) {
     const double f0 = sp.point.x - a * sp.point.z, f1 = sp.point.y - b * sp.point.z;
     const double j00 = sp.du.x - a * sp.du.z, j01 = sp.dv.x - a * sp.dv.z;
     const double j10 = sp.du.y - b * sp.du.z, j11 = sp.dv.y - b * sp.dv.z;
@@ -24,6 +24,9 @@ bool newton_step(const BezierPatch& p, double a, double b, double& s, double& t,
     t -= dt;
     step = std::abs(ds) + std::abs(dt);
     return std::isfinite(step);
+}
+bool newton_step(const BezierPatch& p, double a, double b, double& s, double& t, double& step) {
+    return newton_step(evaluate(p, s, t), a, b, s, t, step);
 }
 
 // The interval Jacobian of G over a box.
@@ -99,7 +102,7 @@ MarkJacobian mark_jacobian(const IMat<2>& A) {
 
 bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
                 const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
-                const double* start) {
+                const double* start, const SurfacePoint* at_start) {
     // At most one zero in box when A is regular: Newton in doubles from
     // `start` or the box's centre, kept inside the box; a run that keeps
     // leaving the box (the ray passes beside the patch) stops early.
@@ -109,6 +112,7 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
         s = std::clamp(start[0], box.s.lo(), box.s.hi());
         t = std::clamp(start[1], box.t.lo(), box.t.hi());
     }
+    if (!start || s != start[0] || t != start[1]) at_start = nullptr; // not evaluated there
     // It stops once the point is far closer to the zero than the inflation's
     // 1e-9: a step below 1e-10, or one whose size d after a step of size p
     // puts the next error, by quadratic convergence about (d / p^2) d^2,
@@ -119,7 +123,9 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     bool converged = false;
     for (int it = 0, prev = 0; it < 16 && !converged && outside < 3; ++it) {
         const double last = step;
-        if (!newton_step(pp.patch, a, b, s, t, step)) break;
+        if (!(it == 0 && at_start ? newton_step(*at_start, a, b, s, t, step)
+                                  : newton_step(pp.patch, a, b, s, t, step)))
+            break;
         const double cs = std::clamp(s, box.s.lo(), box.s.hi());
         const double ct = std::clamp(t, box.t.lo(), box.t.hi());
         outside = (cs != s || ct != t) ? outside + 1 : 0;
@@ -189,8 +195,10 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     b_ = b;
     jacobians_.resize(n);
     start_.resize(n);
+    at_.resize(n);
     known_.assign(n, 0);
     started_.assign(n, 0);
+    evaluated_.assign(n, 0);
     depth_.assign(n, 0);
 }
 
@@ -227,6 +235,8 @@ bool SharedMarks::refine(size_t k) {
     jacobians_.emplace_back();
     start_.push_back(start_[k]);
     started_.push_back(started_[k]);
+    at_.push_back(at_[k]);
+    evaluated_.push_back(evaluated_[k]);
     depth_[k] = static_cast<char>(depth_[k] + 1);
     depth_.push_back(depth_[k]);
     return true;
@@ -239,10 +249,10 @@ namespace {
 struct Nearest {
     PixelHit best;
     double best_q = std::numeric_limits<double>::infinity();
-    void take(int patch, const ParamBox& hb, Interval q) {
+    void take(int patch, const ParamBox& hb, Interval q, int mark = -1) {
         if (!(q.hi() > 0)) return;
         if (best.patch < 0 || q.mid() < best.q)
-            best = {patch, hb.s.mid(), hb.t.mid(), q.mid(), best.candidates};
+            best = {patch, hb.s.mid(), hb.t.mid(), q.mid(), best.candidates, mark};
         best_q = std::min(best_q, q.hi());
     }
 };
@@ -352,12 +362,13 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
         RaySystem sys(pp, a, b, scratch.sys);
         ParamBox hb;
         Interval q;
-        if (newton_hit(pp, a, b, mark.box, sys, J, hb, q, st, shared.start(k))) {
+        if (newton_hit(pp, a, b, mark.box, sys, J, hb, q, st, shared.start(k),
+                       shared.at_start(k))) {
             ++near.best.candidates;
             ++st.pixel_patch_solves;
             ++st.pixel_newton_certified;
             shared.hit(k, hb.s.mid(), hb.t.mid());
-            near.take(mark.patch, hb, q);
+            near.take(mark.patch, hb, q, static_cast<int>(k));
             return;
         }
         // Newton left the box (the ray passes beside this part of the
@@ -372,8 +383,10 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     const PixelHit before = near.best;
     solve_box(pp, a, b, box, mark.patch, scratch, st, near, &J, shared.start(k));
     if (near.best.patch == mark.patch &&
-        (before.patch != mark.patch || before.s != near.best.s || before.t != near.best.t))
+        (before.patch != mark.patch || before.s != near.best.s || before.t != near.best.t)) {
         shared.hit(k, near.best.s, near.best.t);
+        near.best.mark = static_cast<int>(k);
+    }
 }
 
 // A mark without a subpatch at hand: solve_box on its box.
