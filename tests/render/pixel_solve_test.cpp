@@ -225,3 +225,62 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     CHECK(bisected > 10);
     CHECK(background > 50);
 }
+
+TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the start point alone",
+          "[pixel_solve]") {
+    // paint_pixels hands SharedMarks the patch evaluated at each shaded hit
+    // (surface_frame's), and the next ray's Newton run on that mark takes it
+    // as its first step's evaluation: the hits must be bit for bit those of
+    // the same sub-screens solved without it.
+    const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
+    const int W = 160, H = 120;
+    const ProjectedScene ps = project_scene(scene, W, H);
+    SubpatchArena coefs;
+    std::vector<Mark> all;
+    for (size_t k = 0; k < ps.patches.size(); ++k) {
+        const ProjectedPatch& pp = ps.patches[k];
+        all.push_back(whole_patch_mark(static_cast<int>(k), pp.patch, pp.shape, pp.hull, coefs));
+    }
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<int> X(0, W - 5), Y(0, H - 4);
+    PixelScratch scratch;
+    SharedMarks plain, kept;
+    RenderStats st;
+    int hits = 0, reused = 0;
+    for (int n = 0; n < 120; ++n) {
+        const int x0 = X(rng), y0 = Y(rng), x1 = x0 + 3, y1 = y0 + 2;
+        const Interval aB(ps.frame.screen_a(x0 + 0.5), ps.frame.screen_a(x1 + 0.5));
+        const Interval bB(ps.frame.screen_b(y0 + 0.5), ps.frame.screen_b(y1 + 0.5));
+        std::vector<Mark> marks;
+        for (const Mark& m : all)
+            if (may_meet(m, aB, bB)) marks.push_back(m);
+        if (marks.empty()) continue;
+        const size_t coef_end = coefs.size();
+        plain.reset(ps, coefs, marks.data(), marks.size(), aB, bB);
+        kept.reset(ps, coefs, marks.data(), marks.size(), aB, bB);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const double a = ps.frame.screen_a(x + 0.5), b = ps.frame.screen_b(y + 0.5);
+                bool available = false; // a kept evaluation this ray may start from
+                for (size_t k = 0; k < kept.size(); ++k) available |= kept.at_start(k) != nullptr;
+                reused += available;
+                const PixelHit h0 = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &plain);
+                const PixelHit h1 = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &kept);
+                REQUIRE(h0.patch == h1.patch);
+                if (h1.patch < 0) continue;
+                ++hits;
+                CHECK(h0.s == h1.s);
+                CHECK(h0.t == h1.t);
+                CHECK(h0.q == h1.q);
+                if (h1.mark < 0) continue;
+                Vec3 P, N;
+                SurfacePoint at;
+                surface_frame(ps.patches[h1.patch].patch, h1.s, h1.t, P, N, &at);
+                kept.evaluated(h1.mark, h1.s, h1.t, at);
+                REQUIRE(kept.at_start(h1.mark) != nullptr);
+            }
+        coefs.resize(coef_end);
+    }
+    CHECK(hits > 300);
+    CHECK(reused > 300);
+}
