@@ -24,23 +24,23 @@ template <int N> struct HansenSenguptaStep {
 
 // One step. A: Lipschitz matrix of F over x; f_center: enclosure of F(center);
 // center: a point of x (the paper takes x~ = mid(x), Theorem 7).
+// The step with the preconditioner given: C (any real matrix; preconditioned:
+// whether it is mid(A)^-1) and CA = C * A, for many steps with one A (a
+// Jacobian shared by the rays of a sub-screen).
 template <int N>
-HansenSenguptaStep<N> hansen_sengupta(const IMat<N>& A, const IVec<N>& f_center, const IVec<N>& x,
-                                      const std::type_identity_t<RVec<N>>& center,
-                                      const InverseOptions& options = {}) {
+HansenSenguptaStep<N> hansen_sengupta_preconditioned(const RMat<N>& C, const IMat<N>& CA,
+                                                     bool preconditioned, const IVec<N>& f_center,
+                                                     const IVec<N>& x,
+                                                     const std::type_identity_t<RVec<N>>& center) {
     HansenSenguptaStep<N> r;
+    r.preconditioned = preconditioned;
     if (x.is_empty()) {
         r.box = IVec<N>::empty();
         return r;
     }
     assert(contains(x, center));
-    // Definition 5, remark: for small n take C ~ mid(A)^-1. Any real C keeps
-    // Theorem 6 valid, so a singular midpoint falls back to C = I.
-    RMat<N> C;
-    r.preconditioned = invert<N>(mid(A), C, options);
-    if (!r.preconditioned) C = identity_matrix<N>();
     const IVec<N> xc = to_ivec<N>(center);
-    const IVec<N> g = gauss_seidel(C * A, -(C * f_center), x - xc);
+    const IVec<N> g = gauss_seidel(CA, -(C * f_center), x - xc);
     if (g.is_empty()) {
         r.box = IVec<N>::empty();
         return r;
@@ -52,6 +52,21 @@ HansenSenguptaStep<N> hansen_sengupta(const IMat<N>& A, const IVec<N>& f_center,
     r.box = intersect(h, x); // every zero of F in x is in both (Theorem 6 i)
     if (r.box.is_empty()) r.unique = false;
     return r;
+}
+
+// One step. A: Lipschitz matrix of F over x; f_center: enclosure of F(center);
+// center: a point of x (the paper takes x~ = mid(x), Theorem 7).
+template <int N>
+HansenSenguptaStep<N> hansen_sengupta(const IMat<N>& A, const IVec<N>& f_center, const IVec<N>& x,
+                                      const std::type_identity_t<RVec<N>>& center,
+                                      const InverseOptions& options = {}) {
+    if (x.is_empty()) return hansen_sengupta_preconditioned<N>({}, {}, false, f_center, x, center);
+    // Definition 5, remark: for small n take C ~ mid(A)^-1. Any real C keeps
+    // Theorem 6 valid, so a singular midpoint falls back to C = I.
+    RMat<N> C;
+    const bool preconditioned = invert<N>(mid(A), C, options);
+    if (!preconditioned) C = identity_matrix<N>();
+    return hansen_sengupta_preconditioned<N>(C, C * A, preconditioned, f_center, x, center);
 }
 
 } // namespace seamless

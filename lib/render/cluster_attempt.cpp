@@ -19,14 +19,20 @@ namespace seamless {
 std::array<double, 3> shade_hit(const ProjectedScene& ps, const Scene& scene,
                                 const TriangleScene* ts, const PixelHit& h) {
     Vec3 P, N;
-    const ProjectedPatch& pp = ps.patches[h.patch];
-    surface_frame(pp.patch, h.s, h.t, P, N);
+    surface_frame(ps.patches[h.patch].patch, h.s, h.t, P, N);
+    return shade_at(ps, scene, ts, h.patch, P, N);
+}
+
+std::array<double, 3> shade_at(const ProjectedScene& ps, const Scene& scene,
+                               const TriangleScene* ts, int patch, Vec3 P, Vec3 N,
+                               const char* lit) {
+    const ProjectedPatch& pp = ps.patches[patch];
     if (!ts)
         return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N),
                              Vec3{});
     const Vec3 Pw = ps.frame.to_world(P);
-    return shade_ray(scene, *ts, Pw, normalize(ps.frame.to_world_direction(N)), pp.material,
-                     h.patch, normalize(ps.frame.eye - Pw), 0);
+    return shade_ray(scene, *ts, Pw, normalize(ps.frame.to_world_direction(N)), pp.material, patch,
+                     normalize(ps.frame.eye - Pw), 0, nullptr, lit);
 }
 
 namespace {

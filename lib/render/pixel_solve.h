@@ -27,6 +27,8 @@
 #include <seamless/render/projection.h>
 #include <seamless/render/render.h>
 
+#include <seamless/interval/hansen_sengupta.h>
+
 #include <array>
 #include <utility>
 #include <vector>
@@ -37,6 +39,7 @@ struct PixelHit {
     int patch = -1; // -1: the ray certainly misses every marked patch
     double s = 0, t = 0, q = 0;
     int candidates = 0; // marks the ray was not excluded from by hull or clip
+    int mark = -1;      // with SharedMarks: the mark hit (its index there)
 };
 
 // Scratch space reused from ray to ray (nothing allocated per ray once grown).
@@ -74,6 +77,14 @@ class RaySystem {
 struct MarkJacobian {
     IMat<2> A;
     bool regular = false;
+    // The Hansen-Sengupta preconditioner, once for every step with A:
+    // C = mid(A)^-1 (identity when mid(A) is singular: preconditioned false), CA = C A.
+    RMat<2> C{};
+    IMat<2> CA;
+    bool preconditioned = false;
+    HansenSenguptaStep<2> step(const IVec<2>& f_center, const IVec<2>& x, const RVec<2>& c) const {
+        return hansen_sengupta_preconditioned<2>(C, CA, preconditioned, f_center, x, c);
+    }
 };
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
 // The same from a Jacobian enclosed otherwise (subpatch_jacobian of primary_cluster.h).
@@ -89,9 +100,15 @@ MarkJacobian mark_jacobian(const IMat<2>& A);
 enum class NewtonOutcome { hit, miss, undecided };
 // The hit part alone: true (with hit and q as above) when J is regular and
 // Newton's result is certified; false leaves the ray undecided in box.
+// at_start: evaluate(pp.patch, start) when known (the first step then evaluates nothing).
 bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
                 const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
-                const double* start = nullptr);
+                const double* start = nullptr, const SurfacePoint* at_start = nullptr);
+// The part after Newton: false when one Hansen-Sengupta step with J over box
+// proves that the ray meets the patch nowhere in box (Theorem 6 ii); else
+// rest receives the part of box holding every hit (Theorem 6 i).
+bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& box, ParamBox& rest,
+                   RenderStats& st);
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
                                RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
                                const MarkJacobian* J = nullptr, ParamBox* rest = nullptr,
@@ -127,6 +144,15 @@ class SharedMarks {
     void hit(size_t k, double s, double t) {
         start_[k] = {s, t};
         started_[k] = 1;
+        evaluated_[k] = 0;
+    }
+    // The patch evaluated at mark k's start (surface_frame's, when the pixel
+    // that hit it is shaded), for the next Newton run from there; null when unknown.
+    const SurfacePoint* at_start(size_t k) const { return evaluated_[k] ? &at_[k] : nullptr; }
+    void evaluated(size_t k, double s, double t, const SurfacePoint& sp) {
+        if (!started_[k] || start_[k][0] != s || start_[k][1] != t) return;
+        at_[k] = sp;
+        evaluated_[k] = 1;
     }
     static constexpr int kMaxDepth = 3; // bisections of one mark of B
 
@@ -137,7 +163,8 @@ class SharedMarks {
     Interval a_, b_;
     std::vector<MarkJacobian> jacobians_;
     std::vector<std::array<double, 2>> start_;
-    std::vector<char> known_, started_, depth_;
+    std::vector<SurfacePoint> at_;
+    std::vector<char> known_, started_, depth_, evaluated_;
 };
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)

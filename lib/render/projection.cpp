@@ -69,8 +69,10 @@ ProjectedScene project_scene(const Scene& scene, int width, int height, int thre
     return ps;
 }
 
-void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal) {
+void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal,
+                   SurfacePoint* at) {
     SurfacePoint sp = evaluate(b, s, t);
+    if (at) *at = sp;
     point = sp.point;
     normal = sp.normal();
     // At a collapsed edge the normal vanishes; take it a little way inside.

@@ -52,6 +52,8 @@ ProjectedScene project_scene(const Scene& scene, int width, int height, int thre
 
 // Surface point and normal of a patch at local (s, t), in camera coordinates,
 // for shading; at a pole (vanishing normal) the normal is taken slightly inside.
-void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal);
+// at (optional): receives evaluate(b, s, t) (for the next Newton run from (s, t)).
+void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal,
+                   SurfacePoint* at = nullptr);
 
 } // namespace seamless

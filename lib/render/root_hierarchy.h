@@ -10,6 +10,7 @@
 #include <seamless/base/vec.h>
 #include <seamless/tessellate/patch_tree.h>
 
+#include <cassert>
 #include <vector>
 
 namespace seamless {
@@ -29,5 +30,28 @@ struct RootHierarchy {
 // root per leaf; roots without triangles are left out. Deterministic (ties by
 // patch index).
 RootHierarchy build_root_hierarchy(const PatchTrees& trees);
+
+// The patches (leaves) but skip_patch whose boxes, and those of the nodes
+// above them, satisfy box_pred, depth first (child 0 first): meet(patch)
+// returns true to stop (then true). h must not be empty.
+template <class BoxPred, class Meet>
+bool visit_roots(const RootHierarchy& h, int skip_patch, BoxPred&& box_pred, Meet&& meet) {
+    constexpr int kStack = 256;
+    assert(h.depth < kStack - 2);
+    int stack[kStack];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const RootNode& n = h.nodes[stack[--top]];
+        if ((n.patch >= 0 && n.patch == skip_patch) || !box_pred(n.box)) continue;
+        if (n.patch >= 0) {
+            if (meet(n.patch)) return true;
+            continue;
+        }
+        stack[top++] = n.child[1];
+        stack[top++] = n.child[0];
+    }
+    return false;
+}
 
 } // namespace seamless

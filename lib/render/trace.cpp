@@ -41,22 +41,8 @@ bool visit_tree(const PatchTrees& trees, int r, const TriangleRay& ray, const do
 template <class Meet>
 bool visit_roots_met(const RootHierarchy& h, const TriangleRay& ray, const double& t_max,
                      int skip_patch, Meet&& meet) {
-    constexpr int kStack = 256;
-    assert(h.depth < kStack - 2);
-    int stack[kStack];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const RootNode& n = h.nodes[stack[--top]];
-        if ((n.patch >= 0 && n.patch == skip_patch) || !ray_hits_box(ray, n.box, t_max)) continue;
-        if (n.patch >= 0) {
-            if (meet(n.patch)) return true;
-            continue;
-        }
-        stack[top++] = n.child[1];
-        stack[top++] = n.child[0];
-    }
-    return false;
+    return visit_roots(
+        h, skip_patch, [&](const Box3& b) { return ray_hits_box(ray, b, t_max); }, meet);
 }
 
 // Every tree but the marked patch's, in root order, so that ties in
@@ -214,7 +200,8 @@ bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, doubl
 }
 
 std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 N,
-                                int material, int patch, Vec3 view, int depth, long long* tests) {
+                                int material, int patch, Vec3 view, int depth, long long* tests,
+                                const char* lit) {
     const Material& m = scene.materials[material];
     const double cos_v = dot(N, view);
     const Vec3 Nf = cos_v < 0 ? -N : N; // towards the viewer (surfaces have two sides)
@@ -234,6 +221,7 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
         blocker_scene = &ts;
     }
     lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist, int light) {
+        if (lit && lit[light]) return false;
         return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests,
                        tests ? nullptr : &blocker[light]);
     });

@@ -101,9 +101,11 @@ void lights_reaching(const Scene& scene, const Material& m, Vec3 P, Vec3 Nf, Sce
 // front of the surface, a shadow ray (step 2); the local terms by shade<double>
 // with the visible lights (the illumination model of INTRACY); then
 // reflect * the reflected ray and transmit * the refracted ray (steps 3-4, up
-// to scene.max_depth; the background where they hit nothing).
+// to scene.max_depth; the background where they hit nothing). lit
+// (optional, one per light): lit[l] != 0 where light l is known to reach P
+// (a certificate for many points, pixel_lights.h): no shadow ray to it.
 std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 N,
                                 int material, int patch, Vec3 view, int depth,
-                                long long* tests = nullptr);
+                                long long* tests = nullptr, const char* lit = nullptr);
 
 } // namespace seamless

@@ -55,6 +55,32 @@ void check_outcome(const ProjectedPatch& pp, double a, double b, const ParamBox&
     }
 }
 
+// The teapot at 160 x 120 with every patch whole as a mark (many hold a
+// silhouette, so SharedMarks bisects them), and the marks a sub-screen's rays may meet.
+struct TeapotMarks {
+    static constexpr int W = 160, H = 120;
+    ProjectedScene ps;
+    SubpatchArena coefs;
+    std::vector<Mark> all;
+    TeapotMarks()
+        : ps(project_scene(load_scene(test::data_dir() / "scenes" / "teapot.json"), W, H)) {
+        for (size_t k = 0; k < ps.patches.size(); ++k) {
+            const ProjectedPatch& pp = ps.patches[k];
+            all.push_back(
+                whole_patch_mark(static_cast<int>(k), pp.patch, pp.shape, pp.hull, coefs));
+        }
+    }
+    // Pixels x0..x1, y0..y1: their screen intervals aB, bB and marks.
+    std::vector<Mark> meeting(int x0, int y0, int x1, int y1, Interval& aB, Interval& bB) const {
+        aB = {ps.frame.screen_a(x0 + 0.5), ps.frame.screen_a(x1 + 0.5)};
+        bB = {ps.frame.screen_b(y0 + 0.5), ps.frame.screen_b(y1 + 0.5)};
+        std::vector<Mark> marks;
+        for (const Mark& m : all)
+            if (may_meet(m, aB, bB)) marks.push_back(m);
+        return marks;
+    }
+};
+
 } // namespace
 
 TEST_CASE("Certified Newton agrees with the covering method", "[pixel_solve]") {
@@ -177,31 +203,20 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     // previous pixel's hit, the ray's clip only where that fails, one Jacobian
     // per mark for the sub-screen) against every mark solved for the pixel on
     // its own (no clip, no shared Jacobian): the same surface, or background.
-    // Whole patches as marks: many hold a silhouette, so SharedMarks bisects them.
-    const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
-    const int W = 160, H = 120;
-    const ProjectedScene ps = project_scene(scene, W, H);
-    SubpatchArena coefs;
-    std::vector<Mark> all;
-    for (size_t k = 0; k < ps.patches.size(); ++k) {
-        const ProjectedPatch& pp = ps.patches[k];
-        all.push_back(whole_patch_mark(static_cast<int>(k), pp.patch, pp.shape, pp.hull, coefs));
-    }
+    TeapotMarks tm;
+    const ProjectedScene& ps = tm.ps;
     std::mt19937 rng(17);
-    std::uniform_int_distribution<int> X(0, W - 4), Y(0, H - 4);
+    std::uniform_int_distribution<int> X(0, tm.W - 4), Y(0, tm.H - 4);
     PixelScratch scratch;
     SharedMarks shared;
     RenderStats st;
     int surface = 0, background = 0, bisected = 0;
     for (int n = 0; n < 120; ++n) {
         const int x0 = X(rng), y0 = Y(rng), x1 = x0 + 2, y1 = y0 + 2;
-        const Interval aB(ps.frame.screen_a(x0 + 0.5), ps.frame.screen_a(x1 + 0.5));
-        const Interval bB(ps.frame.screen_b(y0 + 0.5), ps.frame.screen_b(y1 + 0.5));
-        std::vector<Mark> marks;
-        for (const Mark& m : all)
-            if (may_meet(m, aB, bB)) marks.push_back(m);
+        Interval aB, bB;
+        const std::vector<Mark> marks = tm.meeting(x0, y0, x1, y1, aB, bB);
         if (marks.empty()) continue;
-        shared.reset(ps, coefs, marks.data(), marks.size(), aB, bB);
+        shared.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {
                 const double a = ps.frame.screen_a(x + 0.5), b = ps.frame.screen_b(y + 0.5);
@@ -224,4 +239,53 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     CHECK(surface > 200);
     CHECK(bisected > 10);
     CHECK(background > 50);
+}
+
+TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the start point alone",
+          "[pixel_solve]") {
+    // paint_pixels hands SharedMarks the patch evaluated at each shaded hit
+    // (surface_frame's), and the next ray's Newton run on that mark takes it
+    // as its first step's evaluation: the hits must be bit for bit those of
+    // the same sub-screens solved without it.
+    TeapotMarks tm;
+    const ProjectedScene& ps = tm.ps;
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<int> X(0, tm.W - 5), Y(0, tm.H - 4);
+    PixelScratch scratch;
+    SharedMarks plain, kept;
+    RenderStats st;
+    int hits = 0, reused = 0;
+    for (int n = 0; n < 120; ++n) {
+        const int x0 = X(rng), y0 = Y(rng), x1 = x0 + 3, y1 = y0 + 2;
+        Interval aB, bB;
+        const std::vector<Mark> marks = tm.meeting(x0, y0, x1, y1, aB, bB);
+        if (marks.empty()) continue;
+        const size_t coef_end = tm.coefs.size();
+        plain.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
+        kept.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const double a = ps.frame.screen_a(x + 0.5), b = ps.frame.screen_b(y + 0.5);
+                bool available = false; // a kept evaluation this ray may start from
+                for (size_t k = 0; k < kept.size(); ++k) available |= kept.at_start(k) != nullptr;
+                reused += available;
+                const PixelHit h0 = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &plain);
+                const PixelHit h1 = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &kept);
+                REQUIRE(h0.patch == h1.patch);
+                if (h1.patch < 0) continue;
+                ++hits;
+                CHECK(h0.s == h1.s);
+                CHECK(h0.t == h1.t);
+                CHECK(h0.q == h1.q);
+                if (h1.mark < 0) continue;
+                Vec3 P, N;
+                SurfacePoint at;
+                surface_frame(ps.patches[h1.patch].patch, h1.s, h1.t, P, N, &at);
+                kept.evaluated(h1.mark, h1.s, h1.t, at);
+                REQUIRE(kept.at_start(h1.mark) != nullptr);
+            }
+        tm.coefs.resize(coef_end);
+    }
+    CHECK(hits > 300);
+    CHECK(reused > 300);
 }
