@@ -22,11 +22,12 @@ inline Lanes splat(double d) {
     return Lanes{d, d};
 }
 // next_up in both lanes of finite x: x + 0 turns -0 into +0 (round to
-// nearest), then one ulp up is +1 on the bits of x >= 0 and -1 below 0.
+// nearest), then one ulp up is +1 on the bits of x >= 0 and -1 below 0: the
+// mask x < 0 (all ones, -1, or 0) or 1.
 inline Lanes up(Lanes x) {
     x = x + Lanes{0.0, 0.0};
     const LaneBits neg = x < Lanes{0.0, 0.0}; // -1 where negative
-    return reinterpret_cast<Lanes>(reinterpret_cast<LaneBits>(x) + 1 + neg + neg);
+    return reinterpret_cast<Lanes>(reinterpret_cast<LaneBits>(x) + (neg | 1));
 }
 inline Lanes load(const Interval& c) {
     return Lanes{-c.lo(), c.hi()};
@@ -45,11 +46,10 @@ inline Lanes sub(Lanes a, Lanes b) {
 }
 // Where b > a, b, else a, per lane: hull(a, b) of interval.h on the negated
 // lower bound too (std::min(a.lo, b.lo) keeps a unless b.lo < a.lo), so even
-// the sign of a zero bound agrees. The empty interval is (-inf, -inf).
+// the sign of a zero bound agrees. The empty interval is (-inf, -inf). The
+// selection b > a ? b : a is one maxpd on x86 (a blend of masks is four).
 inline Lanes hull(Lanes a, Lanes b) {
-    const LaneBits gt = b > a;
-    return reinterpret_cast<Lanes>((reinterpret_cast<LaneBits>(b) & gt) |
-                                   (reinterpret_cast<LaneBits>(a) & ~gt));
+    return b > a ? b : a;
 }
 inline Lanes empty() {
     return splat(-std::numeric_limits<double>::infinity());
@@ -73,11 +73,11 @@ inline Lanes mul(const Factor& e, Lanes z) {
 }
 // w x for w >= 0 given as its bounds in both lanes, rounded up: the bound is
 // w.hi x where the lane x > 0, else w.lo x (a zero x gives a zero either way).
+// That is the larger of w.lo x and w.hi x (rounding to nearest is monotone
+// and w.lo <= w.hi; equal products have equal bits but for a zero's sign,
+// which up() drops): two products and a maximum instead of a sign mask.
 inline Lanes weight_up(Lanes wlo, Lanes whi, Lanes x) {
-    const LaneBits pos = x > Lanes{0.0, 0.0};
-    const Lanes w = reinterpret_cast<Lanes>((reinterpret_cast<LaneBits>(whi) & pos) |
-                                            (reinterpret_cast<LaneBits>(wlo) & ~pos));
-    return up(w * x);
+    return up(hull(wlo * x, whi * x));
 }
 
 // Every bound of c[0..size) of magnitude below limit (false for an infinite

@@ -28,6 +28,24 @@ TEST_CASE("Lane pair operations equal the scalar interval ones bit for bit", "[l
     CHECK(checked == 200000);
 }
 
+TEST_CASE("Lane weight products equal the scalar interval product bit for bit", "[lanes]") {
+    // weight_up takes the larger of w.lo x and w.hi x per lane: for w in [0, 1]
+    // that is the sign-selected bound of the interval product w x.
+    std::mt19937 rng(4321);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int n = 0; n < 200000; ++n) {
+        double w0 = n % 7 == 0 ? 0.0 : unit(rng), w1 = n % 11 == 0 ? 1.0 : unit(rng);
+        if (w1 < w0) std::swap(w0, w1);
+        if (n % 5 == 0) w1 = w0; // thin weights
+        const Interval w(w0, w1);
+        const Interval x = test::random_magnitude_interval(rng, 500);
+        INFO("w = " << w << ", x = " << x);
+        const lanes::Lanes y =
+            lanes::weight_up(lanes::splat(w.lo()), lanes::splat(w.hi()), lanes::load(x));
+        REQUIRE(test::same_bits(lanes::store(y), w * x));
+    }
+}
+
 TEST_CASE("Lane paths are refused for huge, infinite and NaN bounds", "[lanes]") {
     const Interval c[3] = {Interval(-1.0, 2.0), Interval(0x1p499), Interval(-0x1p-1074, 0.0)};
     CHECK(lanes::moderate(c, 3, 0x1p500));
