@@ -82,10 +82,17 @@ inline Lanes weight_up(Lanes wlo, Lanes whi, Lanes x) {
 
 // Every bound of c[0..size) of magnitude below limit (false for an infinite
 // or NaN bound): the condition of a lane path.
+// Branch-free on lane pairs (lo, hi): the magnitudes' sign bits cleared, a
+// mask of |bound| < limit kept over all of them (false for NaN too).
 inline bool moderate(const Interval* c, int size, double limit) {
-    for (int k = 0; k < size; ++k)
-        if (!(std::abs(c[k].lo()) < limit && std::abs(c[k].hi()) < limit)) return false;
-    return true;
+    const Lanes lim = splat(limit);
+    LaneBits ok = {-1, -1};
+    for (int k = 0; k < size; ++k) {
+        const LaneBits bits = reinterpret_cast<LaneBits>(Lanes{c[k].lo(), c[k].hi()});
+        const Lanes a = reinterpret_cast<Lanes>(bits & 0x7fffffffffffffffLL);
+        ok &= a < lim;
+    }
+    return (ok[0] & ok[1]) != 0;
 }
 
 } // namespace seamless::lanes

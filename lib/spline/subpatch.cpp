@@ -57,33 +57,51 @@ void right_part(Interval* c, int n, int stride, Interval u) {
 using lanes::Lanes;
 using lanes::weight_up;
 
-// Left part at u1 then right part at r of one row (either pass skipped when
-// its flag is off), as left_part and right_part. Degree is an int or a
-// std::integral_constant: a fixed degree unrolls the passes (same operations
-// in the same order, so the same bits).
+// The weights 1 - u and u of a de Casteljau pass at u, as lane splats of
+// their bounds: formed once per restriction, not per row.
+struct PassWeights {
+    Lanes vl, vh, ul, uh;
+    explicit PassWeights(Interval u) {
+        const Interval v = intersect(Interval(1.0) - u, Interval(0.0, 1.0)); // u in [0, 1]
+        vl = lanes::splat(v.lo());
+        vh = lanes::splat(v.hi());
+        ul = lanes::splat(u.lo());
+        uh = lanes::splat(u.hi());
+    }
+};
+
+// Left part at u1 then right part at r of every row of direction dir (either
+// pass skipped when its weights are null), as left_part and right_part.
+// Degree is an int or a std::integral_constant: a fixed degree unrolls the
+// passes and keeps a row in registers (same operations in the same order, so
+// the same bits).
 template <class Degree>
-void restrict_row_lanes(Interval* c, Degree n, int stride, bool left, Interval u1, bool right,
-                        Interval r) {
-    Lanes x[BezierPatch::kMaxOrder];
-    for (int i = 0; i <= n; ++i) x[i] = lanes::load(c[i * stride]);
-    using lanes::splat;
+void restrict_rows_lanes(Interval* c, SubpatchShape sh, int dir, Degree n, const PassWeights* left,
+                         const PassWeights* right) {
     using lanes::up;
-    if (left) {
-        const Interval v = intersect(Interval(1.0) - u1, Interval(0.0, 1.0));
-        const Lanes vl = splat(v.lo()), vh = splat(v.hi()), ul = splat(u1.lo()),
-                    uh = splat(u1.hi());
-        for (int k = 1; k <= n; ++k)
-            for (int i = n; i >= k; --i)
-                x[i] = up(weight_up(vl, vh, x[i - 1]) + weight_up(ul, uh, x[i]));
-    }
-    if (right) {
-        const Interval v = intersect(Interval(1.0) - r, Interval(0.0, 1.0));
-        const Lanes vl = splat(v.lo()), vh = splat(v.hi()), ul = splat(r.lo()), uh = splat(r.hi());
-        for (int k = 1; k <= n; ++k)
-            for (int i = 0; i <= n - k; ++i)
-                x[i] = up(weight_up(vl, vh, x[i]) + weight_up(ul, uh, x[i + 1]));
-    }
-    for (int i = 0; i <= n; ++i) c[i * stride] = lanes::store(x[i]);
+    const int rows = dir == 0 ? sh.q + 1 : sh.p + 1;
+    const int stride = dir == 0 ? sh.q + 1 : 1; // between a row's coefficients
+    const int next = dir == 0 ? 1 : sh.q + 1;   // between rows of one coordinate
+    const int block = (sh.p + 1) * (sh.q + 1);  // between coordinates
+    for (int d = 0; d < sh.dim; ++d)
+        for (int r = 0; r < rows; ++r) {
+            Interval* row = c + d * block + r * next;
+            Lanes x[BezierPatch::kMaxOrder];
+            for (int i = 0; i <= n; ++i) x[i] = lanes::load(row[i * stride]);
+            if (left) {
+                const PassWeights& w = *left;
+                for (int k = 1; k <= n; ++k)
+                    for (int i = n; i >= k; --i)
+                        x[i] = up(weight_up(w.vl, w.vh, x[i - 1]) + weight_up(w.ul, w.uh, x[i]));
+            }
+            if (right) {
+                const PassWeights& w = *right;
+                for (int k = 1; k <= n; ++k)
+                    for (int i = 0; i <= n - k; ++i)
+                        x[i] = up(weight_up(w.vl, w.vh, x[i]) + weight_up(w.ul, w.uh, x[i + 1]));
+            }
+            for (int i = 0; i <= n; ++i) row[i * stride] = lanes::store(x[i]);
+        }
 }
 
 // Calls f(row pointer, n, stride) for every row of direction dir.
@@ -123,10 +141,9 @@ void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Inte
     const Interval r =
         cut_lo ? intersect(cut_hi ? u0 / u1 : u0, Interval(0.0, 1.0)) : Interval(0.0);
     if (lanes::moderate(c, sh.size(), 0x1p1000) && !r.is_empty()) {
+        const PassWeights left(u1), right(r);
         with_degree(dir == 0 ? sh.p : sh.q, [&](auto n) {
-            for_rows(c, sh, dir, [&](Interval* row, int, int st) {
-                restrict_row_lanes(row, n, st, cut_hi, u1, cut_lo, r);
-            });
+            restrict_rows_lanes(c, sh, dir, n, cut_hi ? &left : nullptr, cut_lo ? &right : nullptr);
         });
         return;
     }
