@@ -84,11 +84,16 @@ Mark whole_patch_mark(int patch, const BezierPatch& b, SubpatchShape sh, const I
     return m;
 }
 
-bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, Mark& m,
-                 IMat<2>* D) {
+namespace {
+
+// The passes of narrow_mark; `clipped`: the offset of the subpatch of the
+// last clip, whose differences are D.
+bool narrow_passes(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, Mark& m,
+                   size_t& clipped) {
     for (int pass = 0; pass < 3; ++pass) {
         Interval u, v;
-        if (!clip_cluster(&arena[m.coef], sh, a, b, u, v, D)) return false;
+        clipped = m.coef;
+        if (!clip_cluster(&arena[m.coef], sh, a, b, u, v)) return false;
         if (u.lo() == 0 && u.hi() == 1 && v.lo() == 0 && v.hi() == 1) return true;
         // A clip that keeps more than four fifths of the box is not worth a
         // restriction (two de Casteljau passes per row and direction): the
@@ -102,6 +107,21 @@ bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b,
         m.box = got;
         m.coef = out;
         if (area(got) > 0.8 * before) return true;
+    }
+    return true;
+}
+
+} // namespace
+
+bool narrow_mark(SubpatchArena& arena, SubpatchShape sh, Interval a, Interval b, Mark& m,
+                 IMat<2>* D) {
+    size_t clipped = m.coef;
+    if (!narrow_passes(arena, sh, a, b, m, clipped)) return false;
+    // D of the last clip only (those of earlier passes were overwritten): the
+    // subpatch it clipped holds the final box.
+    if (D) {
+        const Interval* c = &arena[clipped];
+        cluster_differences(c, sh, a, b, *D, cluster_lanes_apply(c, sh, a, b));
     }
     return true;
 }

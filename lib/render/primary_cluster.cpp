@@ -123,6 +123,40 @@ void coefficient_hulls_lanes(const Interval* c, SubpatchShape sh, Interval e, in
     for (int j = 0; j <= sh.q; ++j) row[j] = store(rl[j]);
 }
 
+// difference_ranges_lanes for G_0 (factor a) and G_1 (factor b) in one walk:
+// the z differences formed once for both (the same operations on the same
+// operands as two calls, so the same bits).
+void difference_pair_lanes(const Interval* c, SubpatchShape sh, Interval a, Interval b,
+                           IMat<2>& D) {
+    using namespace lanes;
+    const Factor fa(a), fb(b);
+    const Lanes none = empty(), zero = load(Interval(0.0));
+    Lanes u0 = sh.p > 0 ? none : zero, u1 = u0;
+    Lanes v0 = sh.q > 0 ? none : zero, v1 = v0;
+    const Interval* x = c + sh.index(0, 0, 0);
+    const Interval* y = c + sh.index(1, 0, 0);
+    const Interval* z = c + sh.index(2, 0, 0);
+    const int row = sh.q + 1;
+    for (int i = 0, ij = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j, ++ij) {
+            const Lanes x0 = load(x[ij]), y0 = load(y[ij]), z0 = load(z[ij]);
+            if (i < sh.p) {
+                const Lanes dz = sub(load(z[ij + row]), z0);
+                u0 = hull(u0, sub(sub(load(x[ij + row]), x0), mul(fa, dz)));
+                u1 = hull(u1, sub(sub(load(y[ij + row]), y0), mul(fb, dz)));
+            }
+            if (j < sh.q) {
+                const Lanes dz = sub(load(z[ij + 1]), z0);
+                v0 = hull(v0, sub(sub(load(x[ij + 1]), x0), mul(fa, dz)));
+                v1 = hull(v1, sub(sub(load(y[ij + 1]), y0), mul(fb, dz)));
+            }
+        }
+    D(0, 0) = store(u0);
+    D(0, 1) = store(v0);
+    D(1, 0) = store(u1);
+    D(1, 1) = store(v1);
+}
+
 void difference_ranges_lanes(const Interval* c, SubpatchShape sh, Interval e, int k, Interval& du,
                              Interval& dv) {
     using namespace lanes;
@@ -183,17 +217,22 @@ void difference_ranges(const Interval* c, SubpatchShape sh, Interval e, int k, I
         }
 }
 
+void cluster_differences(const Interval* c, SubpatchShape sh, Interval a, Interval b, IMat<2>& D,
+                         bool lanes) {
+    if (lanes) return difference_pair_lanes(c, sh, a, b, D);
+    for (int k = 0; k < 2; ++k)
+        difference_ranges(c, sh, k == 0 ? a : b, k, D(k, 0), D(k, 1), false);
+}
+
 IMat<2> subpatch_jacobian(const Interval* c, SubpatchShape sh, const ParamBox& box, Interval a,
                           Interval b) {
     const Interval ws = Interval(box.s.hi()) - Interval(box.s.lo());
     const Interval wt = Interval(box.t.hi()) - Interval(box.t.lo());
     IMat<2> A;
-    const bool lanes = cluster_lanes_apply(c, sh, a, b);
+    cluster_differences(c, sh, a, b, A, cluster_lanes_apply(c, sh, a, b));
     for (int k = 0; k < 2; ++k) {
-        Interval du, dv;
-        difference_ranges(c, sh, k == 0 ? a : b, k, du, dv, lanes);
-        A(k, 0) = Interval(static_cast<double>(sh.p)) * du / ws;
-        A(k, 1) = Interval(static_cast<double>(sh.q)) * dv / wt;
+        A(k, 0) = Interval(static_cast<double>(sh.p)) * A(k, 0) / ws;
+        A(k, 1) = Interval(static_cast<double>(sh.q)) * A(k, 1) / wt;
     }
     return A;
 }
@@ -214,8 +253,8 @@ bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, I
         u = intersect(u, clip(col, sh.p));
         v = intersect(v, clip(row, sh.q));
         if (u.is_empty() || v.is_empty()) return false;
-        if (D) difference_ranges(c, sh, e, k, (*D)(k, 0), (*D)(k, 1), lanes);
     }
+    if (D) cluster_differences(c, sh, a, b, *D, lanes);
     return true;
 }
 

@@ -38,7 +38,7 @@ bool narrow(const ClusterSystem& sys, ParamBox& box, IMat<2>* jacobian = nullptr
 // when no ray of the cluster meets the subpatch; otherwise u, v are the local
 // parameter ranges (in [0,1]) holding every zero. D: when given, ranges of
 // (G_k)_u, (G_k)_v over the subpatch times positive factors (1/p, 1/q), enough
-// for the sign of the Jacobian's determinant.
+// for the sign of the Jacobian's determinant (left as it was when false).
 bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, Interval& u,
                   Interval& v, IMat<2>* D = nullptr);
 
@@ -54,6 +54,11 @@ void coefficient_hulls(const Interval* c, SubpatchShape sh, Interval e, int k, I
                        Interval* row, bool lanes);
 void difference_ranges(const Interval* c, SubpatchShape sh, Interval e, int k, Interval& du,
                        Interval& dv, bool lanes);
+
+// Both rows at once: D(k, 0), D(k, 1) = du, dv of G_k (the same bits as
+// difference_ranges for k = 0 and 1; the z differences formed once).
+void cluster_differences(const Interval* c, SubpatchShape sh, Interval a, Interval b, IMat<2>& D,
+                         bool lanes);
 
 // The interval Jacobian of G with respect to the global (s, t) over a
 // subpatch's box (its coefficients c over exactly `box`): p times the hull of

@@ -35,6 +35,9 @@ TEST_CASE("Lane clipping ranges equal the scalar ones bit for bit", "[primary_cl
         const Interval b = test::random_magnitude_interval(rng, 500);
         REQUIRE(cluster_lanes_apply(c.data(), sh, a, b));
         ++lane_cases;
+        // Both rows' differences at once equal difference_ranges per row.
+        IMat<2> D[2];
+        for (int l = 0; l < 2; ++l) cluster_differences(c.data(), sh, a, b, D[l], l == 1);
         for (int k = 0; k < 2; ++k) {
             const Interval e = k == 0 ? a : b;
             Interval col[2][K], row[2][K], du[2], dv[2];
@@ -47,6 +50,10 @@ TEST_CASE("Lane clipping ranges equal the scalar ones bit for bit", "[primary_cl
             for (int j = 0; j <= sh.q; ++j) REQUIRE(test::same_bits(row[0][j], row[1][j]));
             REQUIRE(test::same_bits(du[0], du[1]));
             REQUIRE(test::same_bits(dv[0], dv[1]));
+            for (int l = 0; l < 2; ++l) {
+                REQUIRE(test::same_bits(D[l](k, 0), du[0]));
+                REQUIRE(test::same_bits(D[l](k, 1), dv[0]));
+            }
         }
     }
     CHECK(lane_cases == 20000);
