@@ -66,7 +66,10 @@ template <class Degree> Interval clip_columns(const Interval* C, Degree n) {
         below = below && C[i].hi() < 0;
     }
     if (above || below) return Interval::empty();
-    if (n == 0) return {0.0, 1.0};
+    // Both end columns hold 0: the points (0, 0) and (1, 0) are in the hull,
+    // which meets the axis in all of [0, 1] (the loop below would add the
+    // enclosures of 0 / n and n / n, which [0, 1] clamps to 0 and 1).
+    if (n == 0 || (C[0].contains(0.0) && C[n].contains(0.0))) return {0.0, 1.0};
     const double inv = 1.0 / n;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     auto add = [&](double a, double b) {
