@@ -80,6 +80,16 @@ inline Lanes weight_up(Lanes wlo, Lanes whi, Lanes x) {
     return up(hull(wlo * x, whi * x));
 }
 
+// x / z as Interval's operator/ for z > 0 given as its bounds in both lanes:
+// (-x.lo, x.hi) / z.lo and / z.hi are (-q1, q3) and (-q2, q4) of the four
+// quotients q1 = x.lo / z.lo, q2 = x.lo / z.hi, q3 = x.hi / z.lo, q4 = x.hi /
+// z.hi; since x.lo <= x.hi and rounding is monotone, min q = min(q1, q2) and
+// max q = max(q3, q4): the lane maxima, rounded up. Only for quotients that
+// cannot overflow (|x| < 2^500 and z.lo >= 2^-500, say).
+inline Lanes quotient_positive(Lanes x, Lanes zlo, Lanes zhi) {
+    return up(hull(x / zlo, x / zhi));
+}
+
 // Every bound of c[0..size) of magnitude below limit (false for an infinite
 // or NaN bound): the condition of a lane path.
 // Branch-free on lane pairs (lo, hi): the magnitudes' sign bits cleared, a

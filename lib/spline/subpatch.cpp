@@ -161,6 +161,24 @@ IVec<3> subpatch_hull(const Interval* c, SubpatchShape sh) {
                     for (int d = 0; d < 3; ++d) h[d] = Interval::entire();
                     return h;
                 }
+    // On lane pairs where no quotient can overflow (the same bits as the
+    // scalar loop below): every bound below 2^500, every weight >= 2^-500.
+    const int n = (sh.p + 1) * (sh.q + 1);
+    const Interval* w = c + sh.index(3, 0, 0);
+    bool far_from_zero = true;
+    for (int k = 0; sh.dim == 4 && k < n; ++k) far_from_zero &= w[k].lo() >= 0x1p-500;
+    if (far_from_zero && lanes::moderate(c, sh.size(), 0x1p500)) {
+        using namespace lanes;
+        Lanes l[3] = {lanes::empty(), lanes::empty(), lanes::empty()};
+        for (int k = 0; k < n; ++k)
+            for (int d = 0; d < 3; ++d) {
+                Lanes x = load(c[d * n + k]);
+                if (sh.dim == 4) x = quotient_positive(x, splat(w[k].lo()), splat(w[k].hi()));
+                l[d] = lanes::hull(l[d], x);
+            }
+        for (int d = 0; d < 3; ++d) h[d] = store(l[d]);
+        return h;
+    }
     for (int i = 0; i <= sh.p; ++i)
         for (int j = 0; j <= sh.q; ++j)
             for (int d = 0; d < 3; ++d) {
@@ -172,6 +190,26 @@ IVec<3> subpatch_hull(const Interval* c, SubpatchShape sh) {
 }
 
 bool subpatch_projection(const Interval* c, SubpatchShape sh, Interval& a, Interval& b) {
+    // On lane pairs where no quotient can overflow: x, y, z below 2^500 and
+    // every z at least 2^-500 (the same bits as the scalar loop below).
+    const int n = (sh.p + 1) * (sh.q + 1);
+    const Interval* x = c + sh.index(0, 0, 0);
+    const Interval* y = c + sh.index(1, 0, 0);
+    const Interval* z = c + sh.index(2, 0, 0);
+    bool far_from_zero = true;
+    for (int k = 0; k < n; ++k) far_from_zero &= z[k].lo() >= 0x1p-500;
+    if (far_from_zero && lanes::moderate(c, 3 * n, 0x1p500)) {
+        using namespace lanes;
+        Lanes la = lanes::empty(), lb = lanes::empty();
+        for (int k = 0; k < n; ++k) {
+            const Lanes zl = splat(z[k].lo()), zh = splat(z[k].hi());
+            la = lanes::hull(la, quotient_positive(load(x[k]), zl, zh));
+            lb = lanes::hull(lb, quotient_positive(load(y[k]), zl, zh));
+        }
+        a = store(la);
+        b = store(lb);
+        return true;
+    }
     a = b = Interval::empty();
     for (int i = 0; i <= sh.p; ++i)
         for (int j = 0; j <= sh.q; ++j) {

@@ -46,6 +46,23 @@ TEST_CASE("Lane weight products equal the scalar interval product bit for bit", 
     }
 }
 
+TEST_CASE("Lane quotients by positive intervals equal the scalar ones bit for bit", "[lanes]") {
+    std::mt19937 rng(999);
+    int checked = 0;
+    for (int n = 0; n < 200000; ++n) {
+        const Interval x = test::random_magnitude_interval(rng, 500);
+        Interval z = test::random_magnitude_interval(rng, 500);
+        z = Interval::hull(std::abs(z.lo()), std::abs(z.hi()));
+        if (!(z.lo() >= 0x1p-500)) continue; // the lanes' condition
+        INFO("x = " << x << ", z = " << z);
+        const lanes::Lanes q =
+            lanes::quotient_positive(lanes::load(x), lanes::splat(z.lo()), lanes::splat(z.hi()));
+        REQUIRE(test::same_bits(lanes::store(q), x / z));
+        ++checked;
+    }
+    CHECK(checked > 50000);
+}
+
 TEST_CASE("Lane paths are refused for huge, infinite and NaN bounds", "[lanes]") {
     const Interval c[3] = {Interval(-1.0, 2.0), Interval(0x1p499), Interval(-0x1p-1074, 0.0)};
     CHECK(lanes::moderate(c, 3, 0x1p500));

@@ -195,3 +195,68 @@ TEST_CASE("Restriction equals plain interval de Casteljau bit for bit", "[subpat
     }
     CHECK(compared > 50000);
 }
+
+TEST_CASE("Subpatch hulls and screen enclosures equal plain interval code bit for bit",
+          "[subpatch]") {
+    // Lane paths (moderate bounds, weights and depths >= 2^-500) and the
+    // scalar fallback (huge bounds, tiny or non-positive weights) against the
+    // hull of the interval quotients written out here.
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> M(-1.0, 1.0);
+    std::uniform_int_distribution<int> ex(-600, 600);
+    int lane_like = 0;
+    for (int n = 0; n < 4000; ++n) {
+        const SubpatchShape sh{n % 4, (n / 4) % 4, 3 + (n / 16) % 2};
+        const bool huge = n % 7 == 0;
+        std::vector<Interval> c(sh.size());
+        for (Interval& x : c) {
+            const double a = std::ldexp(M(rng), huge ? ex(rng) : ex(rng) / 20);
+            x = rng() % 4 == 0 ? Interval(a) : Interval::hull(a, a + std::ldexp(M(rng), -20));
+        }
+        // Positive depths and weights mostly; some tiny or straddling 0.
+        for (int d = 2; d < sh.dim; ++d)
+            for (int i = 0; i <= sh.p; ++i)
+                for (int j = 0; j <= sh.q; ++j) {
+                    Interval& x = c[sh.index(d, i, j)];
+                    x = Interval(std::abs(x.lo()), std::abs(x.lo()) + std::abs(x.hi() - x.lo()));
+                    if (n % 11 == 0 && i == sh.p) x = Interval(0x1p-700, 0x1p-699);
+                    if (n % 13 == 0 && j == 0) x = Interval(-0.5, 1.0);
+                }
+        IVec<3> want = IVec<3>::empty();
+        bool positive_w = true;
+        for (int i = 0; i <= sh.p; ++i)
+            for (int j = 0; j <= sh.q; ++j)
+                positive_w = positive_w && (sh.dim == 3 || c[sh.index(3, i, j)].lo() > 0);
+        Interval wa = Interval::empty(), wb = Interval::empty();
+        bool positive_z = true;
+        for (int i = 0; i <= sh.p; ++i)
+            for (int j = 0; j <= sh.q; ++j) {
+                for (int d = 0; d < 3; ++d) {
+                    Interval x = c[sh.index(d, i, j)];
+                    if (sh.dim == 4) x = x / c[sh.index(3, i, j)];
+                    want[d] = positive_w ? hull(want[d], x) : Interval::entire();
+                }
+                const Interval z = c[sh.index(2, i, j)];
+                positive_z = positive_z && z.lo() > 0;
+                wa = hull(wa, c[sh.index(0, i, j)] / z);
+                wb = hull(wb, c[sh.index(1, i, j)] / z);
+            }
+        const IVec<3> got = subpatch_hull(c.data(), sh);
+        INFO("case " << n);
+        for (int d = 0; d < 3; ++d) {
+            REQUIRE(std::bit_cast<std::uint64_t>(got[d].lo()) ==
+                    std::bit_cast<std::uint64_t>(want[d].lo()));
+            REQUIRE(std::bit_cast<std::uint64_t>(got[d].hi()) ==
+                    std::bit_cast<std::uint64_t>(want[d].hi()));
+        }
+        Interval a, b;
+        REQUIRE(subpatch_projection(c.data(), sh, a, b) == positive_z);
+        if (!positive_z) continue;
+        lane_like += !huge;
+        for (const auto& [g, w] : {std::pair{a, wa}, std::pair{b, wb}}) {
+            REQUIRE(std::bit_cast<std::uint64_t>(g.lo()) == std::bit_cast<std::uint64_t>(w.lo()));
+            REQUIRE(std::bit_cast<std::uint64_t>(g.hi()) == std::bit_cast<std::uint64_t>(w.hi()));
+        }
+    }
+    CHECK(lane_like > 1000);
+}
