@@ -141,6 +141,18 @@ void bisect_mark(SubpatchArena& arena, SubpatchShape sh, const Mark& m, int dir,
     ParamBox lo = m.box, hi = m.box;
     side(lo, dir) = Interval(D.lo(), mid);
     side(hi, dir) = Interval(mid, D.hi());
+    // Both halves from one de Casteljau triangle where restrict_copy would
+    // restrict each at the same local u (its end 0 or 1 thin on the other).
+    Interval u0, u;
+    if (D.lo() < mid && mid < D.hi() && to_local(D, side(lo, dir), u0, u)) {
+        out[0].coef = arena.size();
+        out[1].coef = out[0].coef + sh.size();
+        arena.resize(out[1].coef + sh.size());
+        split_subpatch(&arena[m.coef], sh, dir, u, &arena[out[0].coef], &arena[out[1].coef]);
+        out[0].box = lo;
+        out[1].box = hi;
+        return;
+    }
     out[0].box = restrict_copy(arena, sh, m, lo, out[0].coef);
     out[1].box = restrict_copy(arena, sh, m, hi, out[1].coef);
 }

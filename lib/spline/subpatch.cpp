@@ -3,6 +3,7 @@
 
 #include <seamless/interval/lanes.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -104,6 +105,34 @@ void restrict_rows_lanes(Interval* c, SubpatchShape sh, int dir, Degree n, const
         }
 }
 
+// Both parts of a split at u of every row of direction dir from one de
+// Casteljau triangle: b_0^(k) go to lo (position k), b_{n-k}^(k) to hi
+// (position n - k). The left and right passes above form every b_j^(k) as
+// v b_j^(k-1) + u b_{j+1}^(k-1) alike, so these are their bits.
+template <class Degree>
+void split_rows_lanes(const Interval* c, SubpatchShape sh, int dir, Degree n, const PassWeights& w,
+                      Interval* lo, Interval* hi) {
+    using lanes::up;
+    const int rows = dir == 0 ? sh.q + 1 : sh.p + 1;
+    const int stride = dir == 0 ? sh.q + 1 : 1;
+    const int next = dir == 0 ? 1 : sh.q + 1;
+    const int block = (sh.p + 1) * (sh.q + 1);
+    for (int d = 0; d < sh.dim; ++d)
+        for (int r = 0; r < rows; ++r) {
+            const int at = d * block + r * next;
+            Lanes x[BezierPatch::kMaxOrder];
+            for (int i = 0; i <= n; ++i) x[i] = lanes::load(c[at + i * stride]);
+            lo[at] = c[at];
+            hi[at + n * stride] = c[at + n * stride];
+            for (int k = 1; k <= n; ++k) {
+                for (int i = 0; i <= n - k; ++i)
+                    x[i] = up(weight_up(w.vl, w.vh, x[i]) + weight_up(w.ul, w.uh, x[i + 1]));
+                lo[at + k * stride] = lanes::store(x[0]);
+                hi[at + (n - k) * stride] = lanes::store(x[n - k]);
+            }
+        }
+}
+
 // Calls f(row pointer, n, stride) for every row of direction dir.
 template <class F> void for_rows(Interval* c, SubpatchShape sh, int dir, F f) {
     for (int d = 0; d < sh.dim; ++d) {
@@ -150,6 +179,23 @@ void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Inte
     if (cut_hi) for_rows(c, sh, dir, [&](Interval* r, int n, int st) { left_part(r, n, st, u1); });
     if (!cut_lo) return;
     for_rows(c, sh, dir, [&](Interval* row, int n, int st) { right_part(row, n, st, r); });
+}
+
+void split_subpatch(const Interval* c, SubpatchShape sh, int dir, Interval u, Interval* lo,
+                    Interval* hi) {
+    u = intersect(u, Interval(0.0, 1.0));
+    assert(!u.is_empty());
+    const bool at_end = u.is_thin() && (u.lo() == 0 || u.lo() == 1); // a pass skipped
+    if (!at_end && lanes::moderate(c, sh.size(), 0x1p1000)) {
+        const PassWeights w(u);
+        with_degree(dir == 0 ? sh.p : sh.q,
+                    [&](auto n) { split_rows_lanes(c, sh, dir, n, w, lo, hi); });
+        return;
+    }
+    std::copy_n(c, sh.size(), lo);
+    std::copy_n(c, sh.size(), hi);
+    restrict_subpatch(lo, sh, dir, Interval(0.0), u);
+    restrict_subpatch(hi, sh, dir, u, Interval(1.0));
 }
 
 IVec<3> subpatch_hull(const Interval* c, SubpatchShape sh) {

@@ -51,6 +51,13 @@ void control_coefficients(const BezierPatch& b, SubpatchShape sh, Interval* out)
 // in them. A thin u0 = 0 or u1 = 1 skips its de Casteljau pass.
 void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Interval u1);
 
+// The subpatch c split at local u in direction dir: lo over [0, u], hi over
+// [u, 1], bit for bit restrict_subpatch(copy, sh, dir, 0, u) and
+// restrict_subpatch(copy, sh, dir, u, 1), from one de Casteljau triangle per
+// row instead of two (a bisection's halves).
+void split_subpatch(const Interval* c, SubpatchShape sh, int dir, Interval u, Interval* lo,
+                    Interval* hi);
+
 // Enclosure of the camera-space point X / W over the subpatch's box: the hull
 // of the projected control points (convex hull property; it needs weights
 // > 0: where a w coefficient is not certainly positive the hull is entire).
