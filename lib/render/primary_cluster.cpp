@@ -254,8 +254,9 @@ bool clip_cluster(const Interval* c, SubpatchShape sh, Interval a, Interval b, I
         Interval col[K], row[K];
         coefficient_hulls(c, sh, e, k, col, row, lanes);
         u = intersect(u, clip(col, sh.p));
+        if (u.is_empty()) return false; // no need for the rows' clip
         v = intersect(v, clip(row, sh.q));
-        if (u.is_empty() || v.is_empty()) return false;
+        if (v.is_empty()) return false;
     }
     if (D) cluster_differences(c, sh, a, b, *D, lanes);
     return true;
