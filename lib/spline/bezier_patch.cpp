@@ -68,6 +68,13 @@ HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t) {
 }
 
 void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out) {
+    // Bicubic: the same operations, unrolled in registers (fixed_degree.h).
+    if (b.p == 3 && b.q == 3) return enclose_homogeneous_fixed<3, 3>(b, s, t, dims, out);
+    enclose_homogeneous_any_degree(b, s, t, dims, out);
+}
+
+void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,
+                                    Interval* out) {
     assert(s >= 0 && s <= 1 && t >= 0 && t <= 1);
     constexpr double u = 0x1p-53;
     const double rs = 1.0 - s, rt = 1.0 - t;

@@ -6,6 +6,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <random>
 
 using namespace seamless;
@@ -45,6 +48,33 @@ TEST_CASE("evaluate() of a bicubic patch gives the generic sums' point, bit for 
                 CHECK(norm(q.point - sp.point) <= 1e-13);
                 CHECK(norm(q.du - sp.du) <= 1e-12);
                 CHECK(norm(q.dv - sp.dv) <= 1e-12);
+            }
+        }
+    }
+}
+
+TEST_CASE(
+    "enclose_homogeneous() of a bicubic patch gives the generic loops' enclosures, bit for bit",
+    "[spline][fixed_degree]") {
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    const double special[] = {0.0, -0.0, 1e-310, -1e300, 1e308, std::nan("")};
+    for (int n = 0; n < 200; ++n) {
+        BezierPatch b = random_bicubic(rng, n % 2 == 1);
+        // Some patches with signed zeros, subnormals, huge values (overflow) and NaN.
+        if (n % 10 == 9) b.at(n % 4, (n / 4) % 4)[n % 4] = special[(n / 10) % 6];
+        for (int k = 0; k < 20; ++k) {
+            const double s = k == 0 ? 0.0 : k == 1 ? 1.0 : U(rng), t = k == 0 ? 1.0 : U(rng);
+            for (int dims = 3; dims <= 4; ++dims) {
+                Interval fast[4], generic[4];
+                enclose_homogeneous(b, s, t, dims, fast);
+                enclose_homogeneous_any_degree(b, s, t, dims, generic);
+                for (int c = 0; c < dims; ++c) {
+                    CHECK(std::bit_cast<std::uint64_t>(fast[c].lo()) ==
+                          std::bit_cast<std::uint64_t>(generic[c].lo()));
+                    CHECK(std::bit_cast<std::uint64_t>(fast[c].hi()) ==
+                          std::bit_cast<std::uint64_t>(generic[c].hi()));
+                }
             }
         }
     }
