@@ -13,7 +13,8 @@
 namespace seamless {
 
 // B_i^N(s) and d/ds B_i^N(s), i = 0..N, as bezier_patch.cpp's bernstein().
-template <int N> void bernstein_fixed(double s, double* B, double* dB) {
+// Inlined: a call per polynomial cost a call and the arrays' round trip through memory.
+template <int N> [[gnu::always_inline]] inline void bernstein_fixed(double s, double* B, double* dB) {
     double tmp[N + 1];
     tmp[0] = 1.0;
     const double r = 1.0 - s;
