@@ -64,7 +64,7 @@ HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t);
 // cheaper than interval Horner on the power form at a point.
 void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out);
 // The same by the loops for any degree (enclose_homogeneous takes
-// enclose_homogeneous_fixed of fixed_degree.h for bicubic patches: the same values).
+// enclose_homogeneous_fixed of fixed_degree.h for equal degrees 1 to 3: the same values).
 void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,
                                     Interval* out);
 
