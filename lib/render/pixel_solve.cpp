@@ -80,6 +80,10 @@ Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit, double cs, do
 IVec<2> RaySystem::at(double s, double t) const {
     Interval X[3];
     enclose_homogeneous(pp_.patch, s, t, 3, X);
+    return at(X);
+}
+
+IVec<2> RaySystem::at(const Interval* X) const {
     return IVec<2>{{X[0] - Interval(a_) * X[2], X[1] - Interval(b_) * X[2]}};
 }
 
@@ -173,12 +177,12 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
 }
 
 bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& box, ParamBox& rest,
-                   RenderStats& st) {
+                   RenderStats& st, const Interval* Xc) {
     // One Hansen-Sengupta step over the whole box; empty means no zero
     // there (Theorem 6 ii).
     const IVec<2> X{{box.s, box.t}};
     const RVec<2> c = mid(X);
-    const IVec<2> Fc = sys.at(c[0], c[1]);
+    const IVec<2> Fc = Xc ? sys.at(Xc) : sys.at(c[0], c[1]);
     const HansenSenguptaStep<2> whole = J.step(Fc, X, c);
     ++st.hs_steps;
     if (whole.box.is_empty()) return false;
@@ -200,6 +204,18 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     started_.assign(n, 0);
     evaluated_.assign(n, 0);
     depth_.assign(n, 0);
+    centre_.resize(n);
+    centred_.assign(n, 0);
+}
+
+const Interval* SharedMarks::centre(size_t k) {
+    if (!centred_[k]) {
+        const Mark& m = marks_[k];
+        const RVec<2> c = mid(IVec<2>{{m.box.s, m.box.t}}); // may_hold_zero's centre
+        enclose_homogeneous(ps_->patches[m.patch].patch, c[0], c[1], 3, centre_[k].data());
+        centred_[k] = 1;
+    }
+    return centre_[k].data();
 }
 
 const MarkJacobian& SharedMarks::jacobian(size_t k) {
@@ -232,6 +248,9 @@ bool SharedMarks::refine(size_t k) {
     marks_.push_back(half[1]);
     known_[k] = 0;
     known_.push_back(0);
+    centred_[k] = 0;
+    centred_.push_back(0);
+    centre_.emplace_back();
     jacobians_.emplace_back();
     start_.push_back(start_[k]);
     started_.push_back(started_[k]);
@@ -374,7 +393,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
         // Newton left the box (the ray passes beside this part of the
         // patch): with a regular Jacobian one Hansen-Sengupta step over the
         // box mostly proves the miss, at a tenth of the clip's cost.
-        if (J.regular && !may_hold_zero(sys, J, mark.box, rest, st)) return;
+        if (J.regular && !may_hold_zero(sys, J, mark.box, rest, st, shared.centre(k))) return;
     }
     ParamBox box;
     if (!clip_box(shared.coefs(), pp.shape, Interval(a), Interval(b), mark, box)) return;

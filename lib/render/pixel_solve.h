@@ -60,6 +60,8 @@ class RaySystem {
         : pp_(pp), a_(a), b_(b), sys_(storage) {}
     // G at (s, t) in [0,1]^2, enclosed (enclose_homogeneous of bezier_patch.h).
     IVec<2> at(double s, double t) const;
+    // G from X, Y, Z enclosed at a point (X[0..2]; one point for many rays).
+    IVec<2> at(const Interval* X) const;
     // The power forms of G, G_s, G_t, built on the first call.
     const ClusterSystem& forms();
 
@@ -106,9 +108,10 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
                 const double* start = nullptr, const SurfacePoint* at_start = nullptr);
 // The part after Newton: false when one Hansen-Sengupta step with J over box
 // proves that the ray meets the patch nowhere in box (Theorem 6 ii); else
-// rest receives the part of box holding every hit (Theorem 6 i).
+// rest receives the part of box holding every hit (Theorem 6 i). Xc: X, Y, Z
+// at box's centre, enclosed, when known (SharedMarks::centre); else computed.
 bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& box, ParamBox& rest,
-                   RenderStats& st);
+                   RenderStats& st, const Interval* Xc = nullptr);
 NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
                                RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
                                const MarkJacobian* J = nullptr, ParamBox* rest = nullptr,
@@ -154,6 +157,9 @@ class SharedMarks {
         at_[k] = sp;
         evaluated_[k] = 1;
     }
+    // X, Y, Z of mark k's patch at its box's centre, enclosed: the same for
+    // every ray of B (may_hold_zero's G there), computed on first need.
+    const Interval* centre(size_t k);
     static constexpr int kMaxDepth = 3; // bisections of one mark of B
 
   private:
@@ -164,7 +170,8 @@ class SharedMarks {
     std::vector<MarkJacobian> jacobians_;
     std::vector<std::array<double, 2>> start_;
     std::vector<SurfacePoint> at_;
-    std::vector<char> known_, started_, depth_, evaluated_;
+    std::vector<std::array<Interval, 3>> centre_;
+    std::vector<char> known_, started_, depth_, evaluated_, centred_;
 };
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)

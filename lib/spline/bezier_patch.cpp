@@ -68,6 +68,18 @@ HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t) {
 }
 
 void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out) {
+    // Bicubic, biquadratic, bilinear: the same operations, unrolled in
+    // registers (fixed_degree.h).
+    if (b.p == b.q) {
+        if (b.p == 3) return enclose_homogeneous_fixed<3, 3>(b, s, t, dims, out);
+        if (b.p == 2) return enclose_homogeneous_fixed<2, 2>(b, s, t, dims, out);
+        if (b.p == 1) return enclose_homogeneous_fixed<1, 1>(b, s, t, dims, out);
+    }
+    enclose_homogeneous_any_degree(b, s, t, dims, out);
+}
+
+void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,
+                                    Interval* out) {
     assert(s >= 0 && s <= 1 && t >= 0 && t <= 1);
     constexpr double u = 0x1p-53;
     const double rs = 1.0 - s, rt = 1.0 - t;
@@ -110,8 +122,13 @@ Vec3 evaluate_point(const BezierPatch& b, double s, double t) {
 }
 
 SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
-    // Bicubic: the same operations as below, unrolled (fixed_degree.h).
-    if (b.p == 3 && b.q == 3) return evaluate_fixed<3, 3, true>(b, s, t);
+    // Bicubic, biquadratic, bilinear: the same operations as below, unrolled
+    // (fixed_degree.h).
+    if (b.p == b.q) {
+        if (b.p == 3) return evaluate_fixed<3, 3, true>(b, s, t);
+        if (b.p == 2) return evaluate_fixed<2, 2, true>(b, s, t);
+        if (b.p == 1) return evaluate_fixed<1, 1, true>(b, s, t);
+    }
     HPoint X, Xu, Xv;
     homogeneous_derivatives(b, s, t, X, Xu, Xv);
     // Quotient rule: P = X/W, P_s = (X_s - P W_s) / W.

@@ -63,6 +63,10 @@ HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t);
 // error is below 4u (p + q) M, plus underflow_allowance(3 (p + q)) for underflow. Far
 // cheaper than interval Horner on the power form at a point.
 void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out);
+// The same by the loops for any degree (enclose_homogeneous takes
+// enclose_homogeneous_fixed of fixed_degree.h for equal degrees 1 to 3: the same values).
+void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,
+                                    Interval* out);
 
 // De Casteljau subdivision at local parameter s (in u) or t (in v); the halves
 // keep the source surface and their part of the parameter rectangle.

@@ -8,10 +8,13 @@
 
 #include <seamless/spline/bezier_patch.h>
 
+#include <cmath>
+
 namespace seamless {
 
 // B_i^N(s) and d/ds B_i^N(s), i = 0..N, as bezier_patch.cpp's bernstein().
-template <int N> void bernstein_fixed(double s, double* B, double* dB) {
+// Inlined: a call per polynomial cost a call and the arrays' round trip through memory.
+template <int N> [[gnu::always_inline]] inline void bernstein_fixed(double s, double* B, double* dB) {
     double tmp[N + 1];
     tmp[0] = 1.0;
     const double r = 1.0 - s;
@@ -84,6 +87,49 @@ SurfacePoint evaluate_fixed(const BezierPatch& b, double s, double t) {
             Xv = Xv + Bu[i] * rowv;
         }
         return {X, Xu, Xv};
+    }
+}
+
+// enclose_homogeneous() (bezier_patch.h) of fixed degrees: the same
+// operations per coordinate in the same order (so the same enclosures), the
+// four coordinates two lanes at a time, (x, y) and (z, w), held in registers
+// (the generic loops' stack arrays cost a store-forwarding stall per level).
+template <int P, int Q>
+void enclose_homogeneous_fixed(const BezierPatch& b, double s, double t, int dims, Interval* out) {
+    using Lanes = double __attribute__((vector_size(16)));
+    constexpr double u = 0x1p-53;
+    constexpr int levels = P + Q;
+    const double rs = 1.0 - s, rt = 1.0 - t;
+    const Lanes sign = {-0.0, -0.0};
+    Lanes M[2] = {}, col[P + 1][2];
+    for (int i = 0; i <= P; ++i) {
+        Lanes row[Q + 1][2];
+        for (int j = 0; j <= Q; ++j) {
+            const HPoint& h = b.at(i, j);
+            row[j][0] = Lanes{h.x, h.y};
+            row[j][1] = Lanes{h.z, h.w};
+            for (int k = 0; k < 2; ++k) {
+                // |x| by clearing the sign; M < a ? a : M is std::max(M, a).
+                using Bits = long long __attribute__((vector_size(16)));
+                const Lanes a = Lanes(Bits(row[j][k]) & ~Bits(sign));
+                M[k] = M[k] < a ? a : M[k];
+            }
+        }
+        for (int l = 1; l <= Q; ++l)
+            for (int j = 0; j <= Q - l; ++j)
+                for (int k = 0; k < 2; ++k) row[j][k] = rt * row[j][k] + t * row[j + 1][k];
+        col[i][0] = row[0][0];
+        col[i][1] = row[0][1];
+    }
+    for (int l = 1; l <= P; ++l)
+        for (int i = 0; i <= P - l; ++i)
+            for (int k = 0; k < 2; ++k) col[i][k] = rs * col[i][k] + s * col[i + 1][k];
+    for (int c = 0; c < dims; ++c) {
+        const double v = col[0][c / 2][c % 2];
+        double e = 4 * u * levels * M[c / 2][c % 2] + underflow_allowance(3.0 * levels);
+        e = next_up(next_up(e));
+        out[c] = std::isfinite(v) && std::isfinite(e) ? Interval(next_down(v - e), next_up(v + e))
+                                                      : Interval::entire();
     }
 }
 

@@ -79,6 +79,29 @@ struct TeapotMarks {
             if (may_meet(m, aB, bB)) marks.push_back(m);
         return marks;
     }
+    // `count` random 3 x 3 sub-screens with shared marks: pixel(a, b, marks)
+    // for each of their rays in paint order. Returns how many of them had a
+    // mark bisected (SharedMarks::refine).
+    template <class Pixel>
+    int subscreens(unsigned seed, int count, SharedMarks& shared, Pixel&& pixel) {
+        std::mt19937 rng(seed);
+        std::uniform_int_distribution<int> X(0, W - 4), Y(0, H - 4);
+        int bisected = 0;
+        for (int n = 0; n < count; ++n) {
+            const int x0 = X(rng), y0 = Y(rng);
+            Interval aB, bB;
+            const std::vector<Mark> marks = meeting(x0, y0, x0 + 2, y0 + 2, aB, bB);
+            if (marks.empty()) continue;
+            const size_t coef_end = coefs.size();
+            shared.reset(ps, coefs, marks.data(), marks.size(), aB, bB);
+            for (int y = y0; y <= y0 + 2; ++y)
+                for (int x = x0; x <= x0 + 2; ++x)
+                    pixel(ps.frame.screen_a(x + 0.5), ps.frame.screen_b(y + 0.5), marks);
+            bisected += shared.size() > marks.size(); // a silhouette's mark bisected for B
+            coefs.resize(coef_end);
+        }
+        return bisected;
+    }
 };
 
 } // namespace
@@ -205,37 +228,25 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     // its own (no clip, no shared Jacobian): the same surface, or background.
     TeapotMarks tm;
     const ProjectedScene& ps = tm.ps;
-    std::mt19937 rng(17);
-    std::uniform_int_distribution<int> X(0, tm.W - 4), Y(0, tm.H - 4);
     PixelScratch scratch;
     SharedMarks shared;
     RenderStats st;
-    int surface = 0, background = 0, bisected = 0;
-    for (int n = 0; n < 120; ++n) {
-        const int x0 = X(rng), y0 = Y(rng), x1 = x0 + 2, y1 = y0 + 2;
-        Interval aB, bB;
-        const std::vector<Mark> marks = tm.meeting(x0, y0, x1, y1, aB, bB);
-        if (marks.empty()) continue;
-        shared.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                const double a = ps.frame.screen_a(x + 0.5), b = ps.frame.screen_b(y + 0.5);
-                const PixelHit h = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &shared);
-                const PixelHit ref = solve_pixel(ps, a, b, marks.data(), marks.size(), scratch, st);
-                REQUIRE((h.patch < 0) == (ref.patch < 0));
-                if (ref.patch < 0) {
-                    ++background;
-                    continue;
-                }
-                ++surface;
-                // At a seam two patches may share the nearest point: compare points.
-                Vec3 P, N, Pr, Nr;
-                surface_frame(ps.patches[h.patch].patch, h.s, h.t, P, N);
-                surface_frame(ps.patches[ref.patch].patch, ref.s, ref.t, Pr, Nr);
-                CHECK(norm(P - Pr) < 1e-6 * norm(Pr));
-            }
-        bisected += shared.size() > marks.size(); // a silhouette's mark bisected for B
-    }
+    int surface = 0, background = 0;
+    const int bisected = tm.subscreens(17, 120, shared, [&](double a, double b, const auto& marks) {
+        const PixelHit h = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &shared);
+        const PixelHit ref = solve_pixel(ps, a, b, marks.data(), marks.size(), scratch, st);
+        REQUIRE((h.patch < 0) == (ref.patch < 0));
+        if (ref.patch < 0) {
+            ++background;
+            return;
+        }
+        ++surface;
+        // At a seam two patches may share the nearest point: compare points.
+        Vec3 P, N, Pr, Nr;
+        surface_frame(ps.patches[h.patch].patch, h.s, h.t, P, N);
+        surface_frame(ps.patches[ref.patch].patch, ref.s, ref.t, Pr, Nr);
+        CHECK(norm(P - Pr) < 1e-6 * norm(Pr));
+    });
     CHECK(surface > 200);
     CHECK(bisected > 10);
     CHECK(background > 50);
@@ -288,4 +299,39 @@ TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the st
     }
     CHECK(hits > 300);
     CHECK(reused > 300);
+}
+
+TEST_CASE("A mark's kept centre enclosure decides may_hold_zero as the ray's own evaluation",
+          "[pixel_solve]") {
+    // SharedMarks::centre keeps X, Y, Z at each mark's box centre for all rays
+    // of B (recomputed for the halves of a bisected mark): the Hansen-Sengupta
+    // step over the box must come out bit for bit as with G evaluated per ray.
+    TeapotMarks tm;
+    const ProjectedScene& ps = tm.ps;
+    PixelScratch scratch;
+    SharedMarks shared;
+    RenderStats st;
+    int compared = 0, misses = 0;
+    const int bisected = tm.subscreens(29, 60, shared, [&](double a, double b, const auto&) {
+        solve_pixel(ps, a, b, nullptr, 0, scratch, st, &shared); // bisects marks
+        for (size_t k = 0; k < shared.size(); ++k) {
+            const Mark& m = shared.marks()[k];
+            const MarkJacobian& J = shared.jacobian(k);
+            RaySystem sys(ps.patches[m.patch], a, b, scratch.sys);
+            ParamBox r0, r1;
+            const bool own = may_hold_zero(sys, J, m.box, r0, st);
+            const bool kept = may_hold_zero(sys, J, m.box, r1, st, shared.centre(k));
+            REQUIRE(own == kept);
+            ++compared;
+            if (!own) {
+                ++misses;
+                continue;
+            }
+            CHECK(r0.s == r1.s);
+            CHECK(r0.t == r1.t);
+        }
+    });
+    CHECK(compared > 500);
+    CHECK(misses > 100);
+    CHECK(bisected > 5);
 }

@@ -1,35 +1,41 @@
 // SPDX-License-Identifier: MIT
-// evaluate() of a bicubic patch runs the fixed-degree path (fixed_degree.h):
-// the same values as the generic Bernstein sums, bit for bit.
+// evaluate() and enclose_homogeneous() of a bicubic, biquadratic or bilinear
+// patch run the fixed-degree paths (fixed_degree.h): the same values as the
+// generic loops, bit for bit.
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/spline/fixed_degree.h>
 
 #include <catch2/catch.hpp>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <random>
 
 using namespace seamless;
 
 namespace {
 
-BezierPatch random_bicubic(std::mt19937& rng, bool rational) {
+BezierPatch random_patch(std::mt19937& rng, bool rational, int degree = 3) {
     std::uniform_real_distribution<double> P(-3.0, 3.0), W(0.2, 5.0);
     BezierPatch b;
+    b.p = b.q = degree;
     b.rational = rational;
-    for (int i = 0; i <= 3; ++i)
-        for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= degree; ++i)
+        for (int j = 0; j <= degree; ++j)
             b.at(i, j) = HPoint::from({P(rng), P(rng), P(rng)}, rational ? W(rng) : 1.0);
     return b;
 }
 
 } // namespace
 
-TEST_CASE("evaluate() of a bicubic patch gives the generic sums' point, bit for bit",
+TEST_CASE("evaluate() of a bicubic, biquadratic or bilinear patch gives the generic sums' point, "
+          "bit for bit",
           "[spline][fixed_degree]") {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> U(0.0, 1.0);
-    for (int n = 0; n < 200; ++n) {
-        const BezierPatch b = random_bicubic(rng, n % 2 == 1);
+    for (int n = 0; n < 600; ++n) {
+        const BezierPatch b = random_patch(rng, n % 2 == 1, 3 - n / 200);
         for (int k = 0; k < 20; ++k) {
             const double s = k == 0 ? 0.0 : k == 1 ? 1.0 : U(rng), t = k == 0 ? 1.0 : U(rng);
             // evaluate_homogeneous runs the generic loops of any degree.
@@ -40,11 +46,40 @@ TEST_CASE("evaluate() of a bicubic patch gives the generic sums' point, bit for 
             CHECK(sp.point.y == p.y);
             CHECK(sp.point.z == p.z);
             // The polynomial path (no quotient) is within rounding of it.
-            if (!b.rational) {
+            if (!b.rational && b.p == 3) {
                 const SurfacePoint q = evaluate_fixed<3, 3, false>(b, s, t);
                 CHECK(norm(q.point - sp.point) <= 1e-13);
                 CHECK(norm(q.du - sp.du) <= 1e-12);
                 CHECK(norm(q.dv - sp.dv) <= 1e-12);
+            }
+        }
+    }
+}
+
+TEST_CASE("enclose_homogeneous() of a bicubic, biquadratic or bilinear patch gives the generic "
+          "loops' enclosures, bit for bit",
+          "[spline][fixed_degree]") {
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    const double special[] = {0.0, -0.0, 1e-310, -1e300, 1e308, std::nan("")};
+    for (int n = 0; n < 600; ++n) {
+        const int degree = 3 - n / 200;
+        BezierPatch b = random_patch(rng, n % 2 == 1, degree);
+        // Some patches with signed zeros, subnormals, huge values (overflow) and NaN.
+        if (n % 10 == 9)
+            b.at(n % (degree + 1), (n / 4) % (degree + 1))[n % 4] = special[(n / 10) % 6];
+        for (int k = 0; k < 20; ++k) {
+            const double s = k == 0 ? 0.0 : k == 1 ? 1.0 : U(rng), t = k == 0 ? 1.0 : U(rng);
+            for (int dims = 3; dims <= 4; ++dims) {
+                Interval fast[4], generic[4];
+                enclose_homogeneous(b, s, t, dims, fast);
+                enclose_homogeneous_any_degree(b, s, t, dims, generic);
+                for (int c = 0; c < dims; ++c) {
+                    CHECK(std::bit_cast<std::uint64_t>(fast[c].lo()) ==
+                          std::bit_cast<std::uint64_t>(generic[c].lo()));
+                    CHECK(std::bit_cast<std::uint64_t>(fast[c].hi()) ==
+                          std::bit_cast<std::uint64_t>(generic[c].hi()));
+                }
             }
         }
     }
