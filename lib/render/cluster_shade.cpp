@@ -192,7 +192,7 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
                 if (blocked || tries >= kBlockerTries || ts_->triangle_patch[t] == patch) return;
                 const auto& tri = ts_->tess.mesh.triangles[t];
                 const auto& V = ts_->tess.mesh.positions;
-                if (!pyramid_may_meet_triangle(light.position, Pw, V[tri[0]], V[tri[1]], V[tri[2]]))
+                if (!light_pyramid_may_meet(*ts_, static_cast<int>(l), light.position, Pw, t))
                     return;
                 Interval q;
                 const TriangleMeeting m = meet_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q);

@@ -73,13 +73,11 @@ class PyramidHull {
 // never entered: its triangles lie at the cluster's end points.
 // hint: a triangle that met an earlier cluster to the same light, tried first
 // (shadows are coherent); set to the one found.
-bool may_block(const TriangleScene& ts, const IVec<3>& Pw, Vec3 light, int skip, int& hint) {
+bool may_block(const TriangleScene& ts, const IVec<3>& Pw, int l, Vec3 light, int skip, int& hint) {
     const PyramidHull ch(light, Pw);
     const PatchTrees& trees = ts.tess.trees;
-    const auto& V = ts.tess.mesh.positions;
     const auto meets = [&](int t) {
-        const auto& tri = ts.tess.mesh.triangles[t];
-        if (!pyramid_may_meet_triangle(light, Pw, V[tri[0]], V[tri[1]], V[tri[2]])) return false;
+        if (!light_pyramid_may_meet(ts, l, light, Pw, t)) return false;
         hint = t;
         return true;
     };
@@ -120,7 +118,7 @@ void lights_reaching_box(const Scene& scene, const TriangleScene& ts, const IVec
         const Light& light = scene.lights[l];
         lit[l] = 0;
         if (!light.on()) continue;
-        lit[l] = may_block(ts, Pw, light.position, patch, hints[l]) ? 0 : 1;
+        lit[l] = may_block(ts, Pw, static_cast<int>(l), light.position, patch, hints[l]) ? 0 : 1;
     }
 }
 

@@ -131,6 +131,32 @@ TriangleScene build_triangle_scene(const Scene& scene) {
     return ts;
 }
 
+void add_light_planes(const Scene& scene, TriangleScene& ts) {
+    const TriangleMesh& mesh = ts.tess.mesh;
+    const size_t F = static_cast<size_t>(mesh.triangle_count());
+    ts.light_planes.resize(scene.lights.size() * F);
+    for (size_t l = 0; l < scene.lights.size(); ++l)
+        for (size_t f = 0; f < F; ++f) {
+            const auto& tri = mesh.triangles[f];
+            ts.light_planes[l * F + f] =
+                apex_triangle(scene.lights[l].position, mesh.positions[tri[0]],
+                              mesh.positions[tri[1]], mesh.positions[tri[2]]);
+        }
+}
+
+bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVec<3>& ends, int f) {
+    const TriangleMesh& mesh = ts.tess.mesh;
+    const size_t F = static_cast<size_t>(mesh.triangle_count());
+    if (!ts.light_planes.empty()) {
+        const ApexTriangle& p = ts.light_planes[static_cast<size_t>(l) * F + f];
+        assert(p.apex == apex);
+        return pyramid_may_meet_triangle(p, ends);
+    }
+    const auto& tri = mesh.triangles[f];
+    return pyramid_may_meet_triangle(apex, ends, mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                     mesh.positions[tri[2]]);
+}
+
 bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
                  int skip_patch, TraceHit& hit, long long* tests) {
     const TriangleMesh& mesh = ts.tess.mesh;
