@@ -84,30 +84,18 @@ bool may_block(const TriangleScene& ts, const IVec<3>& Pw, int l, Vec3 light, in
     if (hint >= 0 && hint < ts.tess.mesh.triangle_count() && ts.triangle_patch[hint] != skip &&
         meets(hint))
         return true;
-    const auto tree_may_block = [&](int root) {
-        constexpr int kStack = 256;
-        assert(trees.depth < kStack - 2);
-        int stack[kStack];
-        int top = 0;
-        stack[top++] = root;
-        while (top > 0) {
-            const PatchNode& n = trees.nodes[stack[--top]];
-            if (n.triangle_hull.empty() || !ch.may_meet(n.triangle_hull)) continue;
-            if (n.triangle >= 0 && meets(n.triangle)) return true;
-            for (int c : n.child)
-                if (c >= 0) stack[top++] = c;
-        }
-        return false;
+    const auto tree_may_block = [&](int p) {
+        return visit_flat_tree(
+            ts.flat_trees, p, [&](const Box3& b) { return ch.may_meet(b); }, meets);
     };
     const RootHierarchy& h = ts.root_hierarchy;
     if (h.nodes.empty()) {
         for (size_t p = 0; p < trees.roots.size(); ++p)
-            if (static_cast<int>(p) != skip && tree_may_block(trees.roots[p])) return true;
+            if (static_cast<int>(p) != skip && tree_may_block(static_cast<int>(p))) return true;
         return false;
     }
     return visit_roots(
-        h, skip, [&](const Box3& b) { return ch.may_meet(b); },
-        [&](int p) { return tree_may_block(trees.roots[p]); });
+        h, skip, [&](const Box3& b) { return ch.may_meet(b); }, tree_may_block);
 }
 
 } // namespace

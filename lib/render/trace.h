@@ -7,6 +7,7 @@
 #pragma once
 
 #include <seamless/base/vec.h>
+#include <seamless/render/flat_patch_trees.h>
 #include <seamless/render/ray_cluster.h>
 #include <seamless/render/root_hierarchy.h>
 #include <seamless/render/scene.h>
@@ -31,6 +32,8 @@ struct TriangleScene {
     // Hierarchy over the patch trees' roots for shadow rays (any_hit); empty:
     // the roots one after another.
     RootHierarchy root_hierarchy;
+    // tess.trees laid out for the hull comparisons of rays and clusters.
+    FlatPatchTrees flat_trees;
     // Secondary rays start this far (model units) from their surface point, so
     // that rounding never lets a ray meet the triangles it leaves from.
     // build_triangle_scene sets 1e-6 d_max.
