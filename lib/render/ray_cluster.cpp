@@ -84,9 +84,17 @@ ClusterHull::ClusterHull(const RayCluster& c) : box_(cluster_box(c)) {
 bool ClusterHull::may_meet(const Box3& b) const {
     if (!b.overlaps(box_)) return false;
     for (int k = 0; k < 2; ++k) {
-        Interval p(0.0);
-        for (int i = 0; i < 3; ++i) p += Interval(axis_[k][i]) * Interval(b.lo[i], b.hi[i]);
-        if (p.hi() < proj_[k].lo() || p.lo() > proj_[k].hi()) return false;
+        // Interval(0) + sum of Interval(a) * Interval(lo, hi) over the axes,
+        // with the product's sign case known from a (finite, as the box's
+        // bounds are): the same bounds as the interval operations.
+        double lo = 0, hi = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double a = axis_[k][i];
+            const bool up = a >= 0;
+            lo = next_down(lo + next_down(a * (up ? b.lo[i] : b.hi[i])));
+            hi = next_up(hi + next_up(a * (up ? b.hi[i] : b.lo[i])));
+        }
+        if (hi < proj_[k].lo() || lo > proj_[k].hi()) return false;
     }
     return true;
 }
