@@ -85,8 +85,8 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
     const auto& M = ts_->tess.mesh;
     int cover = -1, candidates = 0;
     Interval cq, cb, cd;
-    visit_candidate_triangles(
-        ts_->tess.trees, [&](const Box3& b) { return ch.may_meet(b); },
+    visit_flat_candidates(
+        ts_->flat_trees, [&](const Box3& b) { return ch.may_meet(b); },
         [&](int t) {
             if (ts_->triangle_patch[t] == skip_patch) return;
             const auto& tri = M.triangles[t];
@@ -114,8 +114,8 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
     before.q = Interval(0.0, cq.hi());
     const ClusterHull chb(before);
     bool other = false;
-    visit_candidate_triangles(
-        ts_->tess.trees, [&](const Box3& b) { return !other && chb.may_meet(b); },
+    visit_flat_candidates(
+        ts_->flat_trees, [&](const Box3& b) { return !other && chb.may_meet(b); },
         [&](int t) {
             if (other || t == cover || ts_->triangle_patch[t] == skip_patch) return;
             const auto& tri = M.triangles[t];
@@ -185,14 +185,14 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
         bool maybe = false, blocked = false;
         int tries = 0;
         int seeds[kBlockerTries];
-        visit_candidate_triangles(
-            ts_->tess.trees,
+        visit_flat_candidates(
+            ts_->flat_trees,
             [&](const Box3& b) { return !blocked && tries < kBlockerTries && ch.may_meet(b); },
             [&](int t) {
                 if (blocked || tries >= kBlockerTries || ts_->triangle_patch[t] == patch) return;
                 const auto& tri = ts_->tess.mesh.triangles[t];
                 const auto& V = ts_->tess.mesh.positions;
-                if (!pyramid_may_meet_triangle(light.position, Pw, V[tri[0]], V[tri[1]], V[tri[2]]))
+                if (!light_pyramid_may_meet(*ts_, static_cast<int>(l), light.position, Pw, t))
                     return;
                 Interval q;
                 const TriangleMeeting m = meet_triangle(rc, V[tri[0]], V[tri[1]], V[tri[2]], q);

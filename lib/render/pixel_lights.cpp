@@ -73,43 +73,29 @@ class PyramidHull {
 // never entered: its triangles lie at the cluster's end points.
 // hint: a triangle that met an earlier cluster to the same light, tried first
 // (shadows are coherent); set to the one found.
-bool may_block(const TriangleScene& ts, const IVec<3>& Pw, Vec3 light, int skip, int& hint) {
+bool may_block(const TriangleScene& ts, const IVec<3>& Pw, int l, Vec3 light, int skip, int& hint) {
     const PyramidHull ch(light, Pw);
     const PatchTrees& trees = ts.tess.trees;
-    const auto& V = ts.tess.mesh.positions;
     const auto meets = [&](int t) {
-        const auto& tri = ts.tess.mesh.triangles[t];
-        if (!pyramid_may_meet_triangle(light, Pw, V[tri[0]], V[tri[1]], V[tri[2]])) return false;
+        if (!light_pyramid_may_meet(ts, l, light, Pw, t)) return false;
         hint = t;
         return true;
     };
     if (hint >= 0 && hint < ts.tess.mesh.triangle_count() && ts.triangle_patch[hint] != skip &&
         meets(hint))
         return true;
-    const auto tree_may_block = [&](int root) {
-        constexpr int kStack = 256;
-        assert(trees.depth < kStack - 2);
-        int stack[kStack];
-        int top = 0;
-        stack[top++] = root;
-        while (top > 0) {
-            const PatchNode& n = trees.nodes[stack[--top]];
-            if (n.triangle_hull.empty() || !ch.may_meet(n.triangle_hull)) continue;
-            if (n.triangle >= 0 && meets(n.triangle)) return true;
-            for (int c : n.child)
-                if (c >= 0) stack[top++] = c;
-        }
-        return false;
+    const auto tree_may_block = [&](int p) {
+        return visit_flat_tree(
+            ts.flat_trees, p, [&](const Box3& b) { return ch.may_meet(b); }, meets);
     };
     const RootHierarchy& h = ts.root_hierarchy;
     if (h.nodes.empty()) {
         for (size_t p = 0; p < trees.roots.size(); ++p)
-            if (static_cast<int>(p) != skip && tree_may_block(trees.roots[p])) return true;
+            if (static_cast<int>(p) != skip && tree_may_block(static_cast<int>(p))) return true;
         return false;
     }
     return visit_roots(
-        h, skip, [&](const Box3& b) { return ch.may_meet(b); },
-        [&](int p) { return tree_may_block(trees.roots[p]); });
+        h, skip, [&](const Box3& b) { return ch.may_meet(b); }, tree_may_block);
 }
 
 } // namespace
@@ -120,7 +106,7 @@ void lights_reaching_box(const Scene& scene, const TriangleScene& ts, const IVec
         const Light& light = scene.lights[l];
         lit[l] = 0;
         if (!light.on()) continue;
-        lit[l] = may_block(ts, Pw, light.position, patch, hints[l]) ? 0 : 1;
+        lit[l] = may_block(ts, Pw, static_cast<int>(l), light.position, patch, hints[l]) ? 0 : 1;
     }
 }
 

@@ -84,9 +84,17 @@ ClusterHull::ClusterHull(const RayCluster& c) : box_(cluster_box(c)) {
 bool ClusterHull::may_meet(const Box3& b) const {
     if (!b.overlaps(box_)) return false;
     for (int k = 0; k < 2; ++k) {
-        Interval p(0.0);
-        for (int i = 0; i < 3; ++i) p += Interval(axis_[k][i]) * Interval(b.lo[i], b.hi[i]);
-        if (p.hi() < proj_[k].lo() || p.lo() > proj_[k].hi()) return false;
+        // Interval(0) + sum of Interval(a) * Interval(lo, hi) over the axes,
+        // with the product's sign case known from a (finite, as the box's
+        // bounds are): the same bounds as the interval operations.
+        double lo = 0, hi = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double a = axis_[k][i];
+            const bool up = a >= 0;
+            lo = next_down(lo + next_down(a * (up ? b.lo[i] : b.hi[i])));
+            hi = next_up(hi + next_up(a * (up ? b.hi[i] : b.lo[i])));
+        }
+        if (hi < proj_[k].lo() || lo > proj_[k].hi()) return false;
     }
     return true;
 }
@@ -199,28 +207,43 @@ bool same_side(Interval x, Interval y) {
 
 } // namespace
 
-bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2, Vec3 T3) {
+ApexTriangle apex_triangle(Vec3 apex, Vec3 T1, Vec3 T2, Vec3 T3) {
+    ApexTriangle p;
+    p.apex = apex;
+    p.T1 = T1;
     const IV3 L = iv(apex), A = iv(T1), B = iv(T2), C = iv(T3);
-    const IV3 E{ends[0], ends[1], ends[2]};
-    // The triangle's plane: apex and every end point strictly on one side.
-    const IV3 n = icross(isub(B, A), isub(C, A));
-    const Interval apex_side = idot(n, isub(L, A));
-    if (same_side(apex_side, idot(n, isub(E, A)))) return false;
-    // The apex itself lies on every side plane: only when it is certainly off
-    // the triangle's plane is it outside the triangle, and the box strictly
-    // beyond a side plane puts every other point of the hull outside too.
-    if (apex_side.contains(0.0)) return true;
-    // The side planes through the apex: the box strictly outside one of them
-    // (the linear form's range over the box is exact up to rounding: each
-    // coordinate of E enters once).
+    p.normal = icross(isub(B, A), isub(C, A));
+    p.apex_side = idot(p.normal, isub(L, A));
     const IV3 V[3] = {A, B, C};
     for (int e = 0; e < 3; ++e) {
         const IV3 &P = V[e], &Q = V[(e + 1) % 3], &R = V[(e + 2) % 3];
-        const IV3 m = icross(isub(P, L), isub(Q, L));
-        const Interval inner = idot(m, isub(R, L)), box = idot(m, isub(E, L));
+        p.side[e] = icross(isub(P, L), isub(Q, L));
+        p.inner[e] = idot(p.side[e], isub(R, L));
+    }
+    return p;
+}
+
+bool pyramid_may_meet_triangle(const ApexTriangle& p, const IVec<3>& ends) {
+    const IV3 E{ends[0], ends[1], ends[2]};
+    // The triangle's plane: apex and every end point strictly on one side.
+    if (same_side(p.apex_side, idot(p.normal, isub(E, iv(p.T1))))) return false;
+    // The apex itself lies on every side plane: only when it is certainly off
+    // the triangle's plane is it outside the triangle, and the box strictly
+    // beyond a side plane puts every other point of the hull outside too.
+    if (p.apex_side.contains(0.0)) return true;
+    // The side planes through the apex: the box strictly outside one of them
+    // (the linear form's range over the box is exact up to rounding: each
+    // coordinate of E enters once).
+    const IV3 EL = isub(E, iv(p.apex));
+    for (int e = 0; e < 3; ++e) {
+        const Interval inner = p.inner[e], box = idot(p.side[e], EL);
         if ((inner.lo() > 0 && box.hi() < 0) || (inner.hi() < 0 && box.lo() > 0)) return false;
     }
     return true;
+}
+
+bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2, Vec3 T3) {
+    return pyramid_may_meet_triangle(apex_triangle(apex, T1, T2, T3), ends);
 }
 
 std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& triangles) {

@@ -68,6 +68,23 @@ TriangleMeeting meet_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, In
 // may_hit_triangle for these clusters, whose direction box is wide.
 bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2, Vec3 T3);
 
+// The part of pyramid_may_meet_triangle that depends on the apex and the
+// triangle only, not on the box: the triangle's plane, the apex's side of it
+// and the three side planes through the apex. A light's shadow pyramids all
+// share it, so INTRACY forms it once per light and triangle (trace.h).
+struct ApexTriangle {
+    Vec3 apex, T1;
+    std::array<Interval, 3> normal; // (T2 - T1) x (T3 - T1)
+    Interval apex_side;             // normal . (apex - T1)
+    std::array<Interval, 3>
+        side[3];       // edge e: (P - apex) x (Q - apex), P Q R = edge e's corners, then the third
+    Interval inner[3]; // side[e] . (R - apex)
+};
+ApexTriangle apex_triangle(Vec3 apex, Vec3 T1, Vec3 T2, Vec3 T3);
+// pyramid_may_meet_triangle(apex, ends, T1, T2, T3) for p = apex_triangle(apex,
+// T1, T2, T3): the same interval operations, so the same answer.
+bool pyramid_may_meet_triangle(const ApexTriangle& p, const IVec<3>& ends);
+
 // Neighbours across the edges of a triangle mesh: out[3 t + e] is the triangle
 // traversing edge e of triangle t (its vertices e and e + 1 mod 3) in the
 // opposite direction, or -1 where there is none, or where the edge is not a

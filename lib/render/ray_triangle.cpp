@@ -9,6 +9,11 @@ namespace seamless {
 
 TriangleRay::TriangleRay(Vec3 o, Vec3 d) : origin(o), dir(d) {
     inv_dir = {1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
+    finite_slabs = true;
+    for (int i = 0; i < 3; ++i) {
+        finite_slabs = finite_slabs && d[i] != 0 && std::isfinite(inv_dir[i]);
+        far_hi[i] = !(d[i] < 0);
+    }
     const Vec3 a{std::abs(d.x), std::abs(d.y), std::abs(d.z)};
     kz = a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
     kx = (kz + 1) % 3;

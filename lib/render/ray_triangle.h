@@ -23,6 +23,10 @@ struct TriangleRay {
     // the winding is kept), and the shear that maps d onto the kz axis.
     int kx = 0, ky = 1, kz = 2;
     double sx = 0, sy = 0, sz = 1;
+    // Slab test: true when every 1 / d is finite and nonzero d (no NaN can
+    // arise); then far_hi[i] says whether the slab is left at hi (d > 0).
+    bool finite_slabs = false;
+    bool far_hi[3] = {true, true, true};
 
     TriangleRay(Vec3 o, Vec3 d);
 };
@@ -38,6 +42,19 @@ inline bool ray_hits_box(const TriangleRay& ray, const Box3& box, double t_max) 
     constexpr double eps = std::numeric_limits<double>::epsilon() * 0.5;
     constexpr double widen = 1 + 2 * (3 * eps) / (1 - 3 * eps);
     double t0 = 0, t1 = t_max;
+    if (ray.finite_slabs) {
+        // The entry and exit of each slab known from the sign of d (rounding
+        // is monotone), and t0 only grows and t1 only shrinks, so one
+        // comparison at the end decides as the loop below: fewer branches.
+        for (int i = 0; i < 3; ++i) {
+            const double o = ray.origin[i], inv = ray.inv_dir[i];
+            const double tn = ((ray.far_hi[i] ? box.lo[i] : box.hi[i]) - o) * inv;
+            const double tf = ((ray.far_hi[i] ? box.hi[i] : box.lo[i]) - o) * inv * widen;
+            t0 = tn > t0 ? tn : t0;
+            t1 = tf < t1 ? tf : t1;
+        }
+        return !(t0 > t1);
+    }
     for (int i = 0; i < 3; ++i) {
         const double o = ray.origin[i], lo = box.lo[i], hi = box.hi[i];
         if (ray.dir[i] == 0) {

@@ -18,21 +18,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // the nodes whose triangle hull the ray meets before t_max (which the visitor
 // may shrink); visit(triangle) returns true to stop.
 template <class Visit>
-bool visit_tree(const PatchTrees& trees, int r, const TriangleRay& ray, const double& t_max,
+bool visit_tree(const TriangleScene& ts, int r, const TriangleRay& ray, const double& t_max,
                 Visit&& visit) {
-    constexpr int kStack = 256;
-    assert(trees.depth < kStack - 2);
-    int stack[kStack];
-    int top = 0;
-    stack[top++] = trees.roots[r];
-    while (top > 0) {
-        const PatchNode& n = trees.nodes[stack[--top]];
-        if (n.triangle_hull.empty() || !ray_hits_box(ray, n.triangle_hull, t_max)) continue;
-        if (n.triangle >= 0 && visit(n.triangle)) return true;
-        for (int c : n.child)
-            if (c >= 0) stack[top++] = c;
-    }
-    return false;
+    return visit_flat_tree(
+        ts.flat_trees, r, [&](const Box3& b) { return ray_hits_box(ray, b, t_max); }, visit);
 }
 
 // The patches (leaves of the root hierarchy, root_hierarchy.h) but the
@@ -57,7 +46,7 @@ bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const doub
     if (ts.root_hierarchy.nodes.empty()) {
         const int roots = static_cast<int>(trees.roots.size());
         for (int r = 0; r < roots; ++r)
-            if (r != skip_patch && visit_tree(trees, r, ray, t_max, visit)) return true;
+            if (r != skip_patch && visit_tree(ts, r, ray, t_max, visit)) return true;
         return false;
     }
     thread_local std::vector<int> met; // grows once per thread, then reused
@@ -68,7 +57,7 @@ bool visit_triangles(const TriangleScene& ts, const TriangleRay& ray, const doub
     });
     std::sort(met.begin(), met.end());
     for (int r : met)
-        if (visit_tree(trees, r, ray, t_max, visit)) return true;
+        if (visit_tree(ts, r, ray, t_max, visit)) return true;
     return false;
 }
 
@@ -79,7 +68,7 @@ bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray, 
                                int skip_patch, Visit&& visit) {
     if (ts.root_hierarchy.nodes.empty()) return visit_triangles(ts, ray, t_max, skip_patch, visit);
     return visit_roots_met(ts.root_hierarchy, ray, t_max, skip_patch,
-                           [&](int r) { return visit_tree(ts.tess.trees, r, ray, t_max, visit); });
+                           [&](int r) { return visit_tree(ts, r, ray, t_max, visit); });
 }
 
 // Shadow ray, reflected or refracted ray from P (step 3.2): the intensity of
@@ -127,8 +116,35 @@ TriangleScene build_triangle_scene(const Scene& scene) {
         for (int f = sp.first_triangle; f < sp.first_triangle + sp.triangle_count; ++f)
             ts.triangle_patch[f] = sp.patch;
     ts.root_hierarchy = build_root_hierarchy(ts.tess.trees);
+    ts.flat_trees = flatten_patch_trees(ts.tess.trees);
     ts.ray_epsilon = 1e-6 * ts.tess.stats.d_max;
     return ts;
+}
+
+void add_light_planes(const Scene& scene, TriangleScene& ts) {
+    const TriangleMesh& mesh = ts.tess.mesh;
+    const size_t F = static_cast<size_t>(mesh.triangle_count());
+    ts.light_planes.resize(scene.lights.size() * F);
+    for (size_t l = 0; l < scene.lights.size(); ++l)
+        for (size_t f = 0; f < F; ++f) {
+            const auto& tri = mesh.triangles[f];
+            ts.light_planes[l * F + f] =
+                apex_triangle(scene.lights[l].position, mesh.positions[tri[0]],
+                              mesh.positions[tri[1]], mesh.positions[tri[2]]);
+        }
+}
+
+bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVec<3>& ends, int f) {
+    const TriangleMesh& mesh = ts.tess.mesh;
+    const size_t F = static_cast<size_t>(mesh.triangle_count());
+    if (!ts.light_planes.empty()) {
+        const ApexTriangle& p = ts.light_planes[static_cast<size_t>(l) * F + f];
+        assert(p.apex == apex);
+        return pyramid_may_meet_triangle(p, ends);
+    }
+    const auto& tri = mesh.triangles[f];
+    return pyramid_may_meet_triangle(apex, ends, mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                     mesh.positions[tri[2]]);
 }
 
 bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <seamless/base/vec.h>
+#include <seamless/render/flat_patch_trees.h>
+#include <seamless/render/ray_cluster.h>
 #include <seamless/render/root_hierarchy.h>
 #include <seamless/render/scene.h>
 #include <seamless/tessellate/tessellation.h>
@@ -30,11 +32,23 @@ struct TriangleScene {
     // Hierarchy over the patch trees' roots for shadow rays (any_hit); empty:
     // the roots one after another.
     RootHierarchy root_hierarchy;
+    // tess.trees laid out for the hull comparisons of rays and clusters.
+    FlatPatchTrees flat_trees;
     // Secondary rays start this far (model units) from their surface point, so
     // that rounding never lets a ray meet the triangles it leaves from.
     // build_triangle_scene sets 1e-6 d_max.
     double ray_epsilon = 0;
+    // apex_triangle(light l, triangle f) at [l * triangle_count + f] for the
+    // shadow pyramids of SHADE step 2 (add_light_planes); empty: not formed.
+    std::vector<ApexTriangle> light_planes;
 };
+
+// Forms ts.light_planes for the scene's lights (INTRACY, once per render).
+void add_light_planes(const Scene& scene, TriangleScene& ts);
+
+// pyramid_may_meet_triangle from light l (at `apex`, scene.lights[l].position)
+// over the box `ends` against triangle f, with ts.light_planes when formed.
+bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVec<3>& ends, int f);
 
 // Whether SHADE needs secondary rays for this scene: a light that is on and a
 // used material with a diffuse or specular term (shadow rays), or a used

@@ -22,6 +22,11 @@ TEST_CASE("A light certified for a box of hit points reaches every point of the 
           "[pixel_lights]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "scene3.json");
     const TriangleScene ts = build_triangle_scene(scene);
+    // The light planes formed once per render (add_light_planes) decide as
+    // the planes formed per test.
+    TriangleScene tp = ts;
+    add_light_planes(scene, tp);
+    REQUIRE(tp.light_planes.size() == scene.lights.size() * ts.tess.mesh.triangles.size());
     Camera cam = scene.camera;
     cam.width = 160;
     cam.height = 120;
@@ -30,7 +35,8 @@ TEST_CASE("A light certified for a box of hit points reaches every point of the 
     std::uniform_real_distribution<double> u(0, 1);
     const size_t nl = scene.lights.size();
     std::vector<char> lit(nl);
-    std::vector<int> hints(nl, -1);
+    std::vector<int> hints(nl, -1), hints_planes(nl, -1);
+    std::vector<char> lit_planes(nl);
     int certified = 0, refused = 0, refused_blocked = 0;
     for (int y = 0; y < cam.height; y += 3)
         for (int x = 0; x < cam.width; x += 3) {
@@ -54,6 +60,8 @@ TEST_CASE("A light certified for a box of hit points reaches every point of the 
                 }
             if (!one || patch < 0) continue;
             lights_reaching_box(scene, ts, Pw, patch, lit.data(), hints.data());
+            lights_reaching_box(scene, tp, Pw, patch, lit_planes.data(), hints_planes.data());
+            CHECK(lit == lit_planes);
             for (size_t l = 0; l < nl; ++l) {
                 // Shadow rays from the box's corners and from random points of it.
                 bool any_blocked = false;

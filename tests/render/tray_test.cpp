@@ -17,7 +17,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <random>
+#include <utility>
 
 using namespace seamless;
 
@@ -71,6 +74,48 @@ TEST_CASE("Ray-box slab test", "[tray]") {
     flat.extend(Vec3{0, 0, 0});
     flat.extend(Vec3{1, 1, 0});
     CHECK(ray_hits_box(TriangleRay({-0.3, 0.1, 1}, {1.3, 0.9, -1}), flat, kInf));
+}
+
+TEST_CASE("The slab test of rays with finite slabs decides as the per-axis loop", "[tray]") {
+    // The loop with a swap per axis and an exit after each (the slab test for
+    // every ray), against ray_hits_box's branch for rays whose 1 / d are finite.
+    const auto loop = [](const TriangleRay& ray, const Box3& box, double t_max) {
+        constexpr double eps = std::numeric_limits<double>::epsilon() * 0.5;
+        constexpr double widen = 1 + 2 * (3 * eps) / (1 - 3 * eps);
+        double t0 = 0, t1 = t_max;
+        for (int i = 0; i < 3; ++i) {
+            double tn = (box.lo[i] - ray.origin[i]) * ray.inv_dir[i],
+                   tf = (box.hi[i] - ray.origin[i]) * ray.inv_dir[i];
+            if (tn > tf) std::swap(tn, tf);
+            tf *= widen;
+            t0 = std::max(t0, tn);
+            t1 = std::min(t1, tf);
+            if (t0 > t1) return false;
+        }
+        return true;
+    };
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int hits = 0, misses = 0;
+    for (int k = 0; k < 20000; ++k) {
+        // Grid coordinates, so that origins often lie on slab planes.
+        const auto g = [&] { return std::round(8 * u(rng)) / 4; };
+        const Vec3 o{g(), g(), g()}, d{u(rng), u(rng), k % 7 == 0 ? 1e-300 : u(rng)};
+        const TriangleRay ray(o, d);
+        REQUIRE(ray.finite_slabs);
+        Box3 box;
+        box.extend(Vec3{g(), g(), g()});
+        box.extend(Vec3{g(), g(), g()});
+        const double t_max = k % 3 == 0 ? kInf : 2 * std::abs(u(rng));
+        const bool expected = loop(ray, box, t_max);
+        CHECK(ray_hits_box(ray, box, t_max) == expected);
+        hits += expected;
+        misses += !expected;
+    }
+    CHECK(hits > 1000);
+    CHECK(misses > 1000);
+    CHECK_FALSE(TriangleRay({0, 0, 0}, {1, 0, 1e-320}).finite_slabs); // 1 / d overflows
+    CHECK_FALSE(TriangleRay({0, 0, 0}, {1, 0, 1}).finite_slabs);
 }
 
 TEST_CASE("Watertight ray-triangle test", "[tray]") {
