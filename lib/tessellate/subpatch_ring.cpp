@@ -8,15 +8,15 @@
 
 namespace seamless {
 
-void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const EdgeGraph& graph,
-                  int patch, const ParamRect& r, bool crack_free, std::vector<int>& scratch,
-                  std::vector<SideVertex>& inside, std::vector<RingVertex>& ring) {
+void collect_ring(const EdgeRegistry& reg, const EdgeGraph& graph, int i, const ParamRect& r,
+                  bool crack_free, std::vector<int>& scratch, std::vector<SideVertex>& inside,
+                  std::vector<RingVertex>& ring) {
     ring.clear();
     const int cs[4] = {r.s0, r.s1, r.s1, r.s0}, ct[4] = {r.t0, r.t0, r.t1, r.t1};
     for (int k = 0; k < 4; ++k) {
         ring.push_back({cs[k], ct[k], param_of(cs[k]), param_of(ct[k]), -1, -1});
         if (!crack_free) continue;
-        const SideOnLine side = side_on_line(reg, match, patch, r, k);
+        const SideOnLine& side = reg.sides[4 * static_cast<size_t>(i) + k];
         scratch.clear();
         points_inside(reg, side, scratch);
         inside.clear();
@@ -53,8 +53,7 @@ void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const Edg
 
 SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
                             const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
-                            const BoundaryMatch& match, const EdgeGraph& graph, bool crack_free,
-                            int threads) {
+                            const EdgeGraph& graph, bool crack_free, int threads) {
     // Each subpatch's ring and centre point on its own, in parallel; the rings
     // of a block end to end in one array (not one allocation per subpatch).
     const int count = static_cast<int>(subpatches.size());
@@ -71,7 +70,7 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
         for (int i = begin; i < end; ++i) {
             const Subpatch& sp = subpatches[i];
             const ParamRect& r = sp.rect;
-            collect_ring(reg, match, graph, sp.patch, r, crack_free, scratch, inside, ring);
+            collect_ring(reg, graph, i, r, crack_free, scratch, inside, ring);
             block.insert(block.end(), ring.begin(), ring.end());
             out.start[i + 1] = static_cast<int>(ring.size());
             const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));

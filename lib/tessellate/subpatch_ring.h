@@ -32,11 +32,11 @@ struct SideVertex {
     int grid = 0, foreign = -1;
 };
 
-// The ring of subpatch `r` of `patch` into `ring`; `scratch` and `inside`
-// are the caller's scratch storage.
-void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const EdgeGraph& graph,
-                  int patch, const ParamRect& r, bool crack_free, std::vector<int>& scratch,
-                  std::vector<SideVertex>& inside, std::vector<RingVertex>& ring);
+// The ring of subpatch `i` (rect `r`; its sides reg.sides[4 i + k]) into
+// `ring`; `scratch` and `inside` are the caller's scratch storage.
+void collect_ring(const EdgeRegistry& reg, const EdgeGraph& graph, int i, const ParamRect& r,
+                  bool crack_free, std::vector<int>& scratch, std::vector<SideVertex>& inside,
+                  std::vector<RingVertex>& ring);
 
 // Every subpatch's ring, laid end to end in subpatch order, and its centre.
 struct SubpatchRings {
@@ -50,7 +50,6 @@ struct SubpatchRings {
 // left to the numbering.
 SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
                             const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
-                            const BoundaryMatch& match, const EdgeGraph& graph, bool crack_free,
-                            int threads);
+                            const EdgeGraph& graph, bool crack_free, int threads);
 
 } // namespace seamless

@@ -89,8 +89,8 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     TriangleMesh& mesh = out.mesh;
     for (const BSplineSurface& s : model.surfaces) mesh.surface_names.push_back(s.name);
     // (d0) Each subpatch's ring and centre point on its own, in parallel.
-    SubpatchRings rings = collect_rings(patches, out.subpatches, reg, match, graph,
-                                        options.crack_free, options.threads);
+    SubpatchRings rings =
+        collect_rings(patches, out.subpatches, reg, graph, options.crack_free, options.threads);
     phase.rings += lap();
     // (d1) Their vertices, numbered as first met in subpatch order (each ring,
     // then its centre).

@@ -8,6 +8,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
+#include <vector>
+
 using namespace seamless;
 
 TEST_CASE("teaset boundaries match as the model notes describe", "[shared_edges]") {
@@ -93,5 +97,63 @@ TEST_CASE("vertices inside a coarse side lie on its straight segment (Q0 = (Q1+Q
             }
         CHECK(found);
         if (v > 200) break;
+    }
+}
+
+namespace {
+
+// The segments of the line a side lies on, as a set (line numbers aside).
+std::vector<std::array<int, 3>> segments_of(const EdgeRegistry& reg, int line) {
+    std::vector<std::array<int, 3>> out;
+    for (int i = reg.offsets[line]; i < reg.offsets[line + 1]; ++i)
+        out.push_back({reg.segments[i].side, reg.segments[i].a, reg.segments[i].b});
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("the edge registry is the same for any thread count and subpatch order",
+          "[shared_edges]") {
+    const Model m = load_model(test::model_path("teapot.json"));
+    const auto patches = bezier_patches(m);
+    TessellationOptions o;
+    o.tolerance = 0.01;
+    const Tessellation t = tessellate(m, patches, o);
+    const BoundaryMatch bm = match_boundaries(patches, 1e-12 * t.stats.d_max);
+    const EdgeRegistry one = build_edge_registry(bm, t.subpatches, 1);
+    const EdgeRegistry two = build_edge_registry(bm, t.subpatches, 2);
+    CHECK(one.offsets == two.offsets);
+    CHECK(one.interior_keys == two.interior_keys);
+    CHECK(one.interior_lines == two.interior_lines);
+    REQUIRE(one.segments.size() == two.segments.size());
+    for (size_t i = 0; i < one.segments.size(); ++i) {
+        CHECK(one.segments[i].a == two.segments[i].a);
+        CHECK(one.segments[i].b == two.segments[i].b);
+        CHECK(one.segments[i].side == two.segments[i].side);
+    }
+    // Subpatches in reverse order (patches interleaved with nothing in order):
+    // every side on the same line content, found by side_on_line too.
+    std::vector<Subpatch> reversed(t.subpatches.rbegin(), t.subpatches.rend());
+    const EdgeRegistry rev = build_edge_registry(bm, reversed, 2);
+    REQUIRE(one.sides.size() == 4 * t.subpatches.size());
+    REQUIRE(rev.sides.size() == one.sides.size());
+    const size_t n = t.subpatches.size();
+    for (size_t i = 0; i < n; ++i) {
+        const Subpatch& sp = t.subpatches[i];
+        for (int k = 0; k < 4; ++k) {
+            const SideOnLine& a = one.sides[4 * i + k];
+            const SideOnLine& b = rev.sides[4 * (n - 1 - i) + k];
+            const SideOnLine c = side_on_line(one, bm, sp.patch, sp.rect, k);
+            CHECK(a.line == c.line);
+            CHECK((a.a == b.a && a.b == b.b && a.side == b.side && a.reversed == b.reversed));
+            CHECK((a.line < 0) == (b.line < 0));
+            if (a.line < 0) continue;
+            CHECK((a.line < one.boundary_lines) == (b.line < rev.boundary_lines));
+            CHECK(segments_of(one, a.line) == segments_of(rev, b.line));
+            // The side is one of its line's segments.
+            const auto segs = segments_of(one, a.line);
+            CHECK(std::find(segs.begin(), segs.end(), std::array<int, 3>{a.side, a.a, a.b}) !=
+                  segs.end());
+        }
     }
 }
