@@ -2,6 +2,7 @@
 #include <seamless/base/disjoint_sets.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/first_met.h>
 #include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/shared_edges.h>
 
@@ -253,12 +254,9 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
     std::vector<std::vector<int>> count(np); // per interior line of the patch
     std::vector<int> edge_count(4 * static_cast<size_t>(np), 0);
     pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
-        std::vector<std::uint64_t> table; // open addressing: key, then its line
+        FirstMet<std::uint64_t, MixHash> met;
         for (int p = begin; p < end; ++p) {
-            const size_t sides = 4 * static_cast<size_t>(first[p + 1] - first[p]);
-            size_t size = 16;
-            while (size < 2 * sides) size *= 2;
-            table.assign(2 * size, kNoKey);
+            met.reset(4 * static_cast<size_t>(first[p + 1] - first[p]));
             std::vector<std::uint64_t>& k_p = keys[p];
             std::vector<int>& c_p = count[p];
             for (int j = first[p]; j < first[p + 1]; ++j) {
@@ -271,16 +269,11 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
                         if (side.line >= 0) ++edge_count[side.side];
                         continue;
                     }
-                    size_t h =
-                        static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & (size - 1);
-                    while (table[2 * h] != kNoKey && table[2 * h] != key) h = (h + 1) & (size - 1);
-                    if (table[2 * h] == kNoKey) {
-                        table[2 * h] = key;
-                        table[2 * h + 1] = k_p.size();
+                    side.line = met.emplace(key, static_cast<int>(k_p.size())); // local for now
+                    if (side.line == static_cast<int>(k_p.size())) {
                         k_p.push_back(key);
                         c_p.push_back(0);
                     }
-                    side.line = static_cast<int>(table[2 * h + 1]); // local for now
                     ++c_p[side.line];
                 }
             }

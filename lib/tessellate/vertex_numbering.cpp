@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/first_met.h>
 #include <seamless/tessellate/vertex_numbering.h>
 
 #include <cstdint>
-#include <unordered_map>
 
 namespace seamless {
 namespace {
@@ -57,21 +57,25 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
     });
     const auto interior = [&](int j, int patch) { return key[j].kind == 2 && key[j].id == patch; };
     pull_blocks(np, 1, threads, nullptr, [&](int begin, int end) {
-        std::unordered_map<std::uint64_t, int> seen; // (s, t) -> first slot
+        FirstMet<std::uint64_t, MixHash> seen; // (s, t) -> first slot
         for (int p = begin; p < end; ++p) {
-            seen.clear();
-            for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j) {
+            const int j0 = ring_start[leaf_start[p]], j1 = ring_start[leaf_start[p + 1]];
+            seen.reset(j1 - j0);
+            for (int j = j0; j < j1; ++j) {
                 if (!interior(j, p)) continue;
                 const std::uint64_t st = (static_cast<std::uint64_t>(key[j].a) << 32) |
                                          static_cast<std::uint32_t>(key[j].b);
-                first[j] = seen.try_emplace(st, j).first->second;
+                first[j] = seen.emplace(st, j);
             }
         }
     });
-    std::unordered_map<VertexKey, int, VertexKeyHash> shared;
+    std::vector<int> shared_slots;
     for (int p = 0; p < np; ++p)
         for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j)
-            if (!interior(j, p)) first[j] = shared.try_emplace(key[j], j).first->second;
+            if (!interior(j, p)) shared_slots.push_back(j);
+    FirstMet<VertexKey, VertexKeyHash> shared;
+    shared.reset(shared_slots.size());
+    for (int j : shared_slots) first[j] = shared.emplace(key[j], j);
     std::vector<int> base(count + 1, 0);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
