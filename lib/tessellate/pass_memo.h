@@ -7,6 +7,7 @@
 #include <seamless/tessellate/fan_certification.h>
 #include <seamless/tessellate/patch_tree.h>
 #include <seamless/tessellate/subdivision.h>
+#include <seamless/tessellate/subpatch_ring.h>
 
 #include <vector>
 
@@ -30,6 +31,12 @@ struct PassMemo {
     // storage already touched instead of faulting in new pages on one thread.
     std::vector<PatchNode> spare_nodes;
     std::vector<Subpatch> spare_subpatches;
+    // The previous pass's rings and where each patch's subpatches started:
+    // the next pass copies those of patches whose rings cannot have changed
+    // (subpatch_ring.h). Kept only without seam vertices (their numbers in
+    // the edge graph would shift).
+    SubpatchRings rings;
+    std::vector<int> leaf_start;
     bool keep = false; // fill them (only a tolerance takes more than one pass)
     PassMemo(size_t patches, bool keep)
         : verdicts(patches), bounds(patches), parts(patches), changed(patches, 1), keep(keep) {}

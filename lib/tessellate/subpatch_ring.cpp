@@ -53,7 +53,8 @@ void collect_ring(const EdgeRegistry& reg, const EdgeGraph& graph, int i, const 
 
 SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
                             const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
-                            const EdgeGraph& graph, bool crack_free, int threads) {
+                            const EdgeGraph& graph, bool crack_free, int threads,
+                            const PreviousRings& previous) {
     // Each subpatch's ring and centre point on its own, in parallel; the rings
     // of a block end to end in one array (not one allocation per subpatch).
     const int count = static_cast<int>(subpatches.size());
@@ -69,6 +70,18 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
         std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock];
         for (int i = begin; i < end; ++i) {
             const Subpatch& sp = subpatches[i];
+            if (previous.rings && (*previous.same)[sp.patch]) {
+                const SubpatchRings& old = *previous.rings;
+                const int o =
+                    (*previous.previous_start)[sp.patch] + i - (*previous.leaf_start)[sp.patch];
+                const auto first = old.vertices.begin() + old.start[o];
+                const size_t before = block.size();
+                block.insert(block.end(), first, old.vertices.begin() + old.start[o + 1]);
+                for (size_t j = before; j < block.size(); ++j) block[j].vertex = -1;
+                out.start[i + 1] = old.start[o + 1] - old.start[o];
+                out.centre_point[i] = old.centre_point[o];
+                continue;
+            }
             const ParamRect& r = sp.rect;
             collect_ring(reg, graph, i, r, crack_free, scratch, inside, ring);
             block.insert(block.end(), ring.begin(), ring.end());

@@ -46,10 +46,21 @@ struct SubpatchRings {
     std::vector<int> centre;        // its mesh vertex (vertex_numbering.h)
 };
 
+// A previous pass's rings, copied where they cannot have changed: patch p's
+// subpatches, when same[p], are the previous pass's from previous_start[p]
+// on (leaf_start: where they start now), and so are their sides' lines.
+struct PreviousRings {
+    const SubpatchRings* rings = nullptr;
+    const std::vector<int>* previous_start = nullptr;
+    const std::vector<int>* leaf_start = nullptr;
+    const std::vector<char>* same = nullptr;
+};
+
 // In parallel, the same arrays for any thread count; vertex and centre are
 // left to the numbering.
 SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
                             const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
-                            const EdgeGraph& graph, bool crack_free, int threads);
+                            const EdgeGraph& graph, bool crack_free, int threads,
+                            const PreviousRings& previous = {});
 
 } // namespace seamless

@@ -89,8 +89,27 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     TriangleMesh& mesh = out.mesh;
     for (const BSplineSurface& s : model.surfaces) mesh.surface_names.push_back(s.name);
     // (d0) Each subpatch's ring and centre point on its own, in parallel.
-    SubpatchRings rings =
-        collect_rings(patches, out.subpatches, reg, graph, options.crack_free, options.threads);
+    // A patch's rings are the previous pass's when neither it nor a patch
+    // across its edges was split again (its sides' lines hold the same
+    // segments), and no seam vertices are involved.
+    const int np = static_cast<int>(patches.size());
+    std::vector<char> same(np, 0);
+    PreviousRings previous;
+    if (!memo.leaf_start.empty() && graph.points.empty()) {
+        std::vector<char> dirty(match.group_ref.size(), 0);
+        for (int pe = 0; pe < 4 * np; ++pe)
+            if (match.edge_group[pe] >= 0 && memo.changed[pe / 4]) dirty[match.edge_group[pe]] = 1;
+        for (int p = 0; p < np; ++p) {
+            same[p] = !memo.changed[p];
+            for (int e = 0; e < 4; ++e) {
+                const int g = match.edge_group[4 * p + e];
+                if (g >= 0 && dirty[g]) same[p] = 0;
+            }
+        }
+        previous = {&memo.rings, &memo.leaf_start, &ranges.leaf_start, &same};
+    }
+    SubpatchRings rings = collect_rings(patches, out.subpatches, reg, graph, options.crack_free,
+                                        options.threads, previous);
     phase.rings += lap();
     // (d1) Their vertices, numbered as first met in subpatch order (each ring,
     // then its centre).
@@ -113,7 +132,15 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     }
     phase.bounds += lap();
     // Another pass will follow: the mesh of this one is not needed.
-    if (!last && st.above_tolerance > 0) return out;
+    if (!last && st.above_tolerance > 0) {
+        if (memo.keep && graph.points.empty()) {
+            memo.rings = std::move(rings);
+            memo.leaf_start = ranges.leaf_start;
+        } else {
+            memo.leaf_start.clear();
+        }
+        return out;
+    }
 
     // (d3) Normals at the fans' vertices, in parallel.
     const FanNormals normals = fan_normals(patches, out.subpatches, rings, options.threads);
