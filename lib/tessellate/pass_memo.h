@@ -31,11 +31,12 @@ struct PassMemo {
     // storage already touched instead of faulting in new pages on one thread.
     std::vector<PatchNode> spare_nodes;
     std::vector<Subpatch> spare_subpatches;
-    // The previous pass's rings and where each patch's subpatches started:
-    // the next pass copies those of patches whose rings cannot have changed
-    // (subpatch_ring.h). Kept only without seam vertices (their numbers in
-    // the edge graph would shift).
+    // The previous pass's rings, their vertices' positions and where each
+    // patch's subpatches started: the next pass copies those of patches whose
+    // rings cannot have changed (subpatch_ring.h). Kept only without seam
+    // vertices or aliases (the edge graph's numbers and keys could change).
     SubpatchRings rings;
+    std::vector<Vec3> positions; // the rings' vertices (vertex_numbering.h)
     std::vector<int> leaf_start;
     bool keep = false; // fill them (only a tolerance takes more than one pass)
     PassMemo(size_t patches, bool keep)

@@ -49,11 +49,14 @@ struct SubpatchRings {
 // A previous pass's rings, copied where they cannot have changed: patch p's
 // subpatches, when same[p], are the previous pass's from previous_start[p]
 // on (leaf_start: where they start now), and so are their sides' lines.
+// With `positions` (the previous pass's vertices, rings.vertices[].vertex
+// their indices) the numbering takes their positions from there too.
 struct PreviousRings {
     const SubpatchRings* rings = nullptr;
     const std::vector<int>* previous_start = nullptr;
     const std::vector<int>* leaf_start = nullptr;
     const std::vector<char>* same = nullptr;
+    const std::vector<Vec3>* positions = nullptr;
 };
 
 // In parallel, the same arrays for any thread count; vertex and centre are

@@ -91,11 +91,12 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     // (d0) Each subpatch's ring and centre point on its own, in parallel.
     // A patch's rings are the previous pass's when neither it nor a patch
     // across its edges was split again (its sides' lines hold the same
-    // segments), and no seam vertices are involved.
+    // segments), and no seam vertices or aliases are involved; so are their
+    // vertices' positions (each the exact point of its key).
     const int np = static_cast<int>(patches.size());
     std::vector<char> same(np, 0);
     PreviousRings previous;
-    if (!memo.leaf_start.empty() && graph.points.empty()) {
+    if (!memo.leaf_start.empty() && graph.points.empty() && graph.alias.empty()) {
         std::vector<char> dirty(match.group_ref.size(), 0);
         for (int pe = 0; pe < 4 * np; ++pe)
             if (match.edge_group[pe] >= 0 && memo.changed[pe / 4]) dirty[match.edge_group[pe]] = 1;
@@ -106,14 +107,14 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
                 if (g >= 0 && dirty[g]) same[p] = 0;
             }
         }
-        previous = {&memo.rings, &memo.leaf_start, &ranges.leaf_start, &same};
+        previous = {&memo.rings, &memo.leaf_start, &ranges.leaf_start, &same, &memo.positions};
     }
     SubpatchRings rings = collect_rings(patches, out.subpatches, reg, graph, options.crack_free,
                                         options.threads, previous);
     phase.rings += lap();
     // (d1) Their vertices, numbered as first met in subpatch order (each ring,
     // then its centre).
-    number_vertices(out.subpatches, ranges.leaf_start, graph, options.threads, vr, rings);
+    number_vertices(out.subpatches, ranges.leaf_start, graph, options.threads, vr, rings, previous);
     phase.numbering += lap();
 
     // (d2) Each subpatch's certified bound on its own, in parallel.
@@ -133,8 +134,9 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     phase.bounds += lap();
     // Another pass will follow: the mesh of this one is not needed.
     if (!last && st.above_tolerance > 0) {
-        if (memo.keep && graph.points.empty()) {
+        if (memo.keep && graph.points.empty() && graph.alias.empty()) {
             memo.rings = std::move(rings);
+            memo.positions = std::move(vr.positions);
             memo.leaf_start = ranges.leaf_start;
         } else {
             memo.leaf_start.clear();

@@ -39,7 +39,7 @@ void number_one_by_one(const std::vector<Subpatch>& subpatches, const EdgeGraph&
 // uses of the patch-boundary points, a small share of the slots.
 void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
                         const EdgeGraph& graph, int threads, VertexRegistry& vr,
-                        SubpatchRings& rings) {
+                        SubpatchRings& rings, const PreviousRings& previous) {
     const int count = static_cast<int>(subpatches.size());
     const int np = static_cast<int>(leaf_start.size()) - 1;
     const std::vector<int>& ring_start = rings.start;
@@ -90,11 +90,24 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             int id = base[i];
-            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
-                if (first[j] == j) {
-                    ring[j].vertex = id;
-                    vr.positions[id++] = exact_position(*vr.patches, *vr.match, key[j]);
-                }
+            const int p = subpatches[i].patch;
+            if (previous.positions && (*previous.same)[p]) {
+                // The same ring, slot by slot, and the same keys.
+                const SubpatchRings& old = *previous.rings;
+                const int o = (*previous.previous_start)[p] + i - leaf_start[p];
+                const RingVertex* old_ring = old.vertices.data() + old.start[o] - ring_start[i];
+                for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                    if (first[j] == j) {
+                        ring[j].vertex = id;
+                        vr.positions[id++] = (*previous.positions)[old_ring[j].vertex];
+                    }
+            } else {
+                for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                    if (first[j] == j) {
+                        ring[j].vertex = id;
+                        vr.positions[id++] = exact_position(*vr.patches, *vr.match, key[j]);
+                    }
+            }
             rings.centre[i] = id;
             vr.positions[id] = rings.centre_point[i];
         }
@@ -109,12 +122,12 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
 } // namespace
 
 void number_vertices(const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
-                     const EdgeGraph& graph, int threads, VertexRegistry& vr,
-                     SubpatchRings& rings) {
+                     const EdgeGraph& graph, int threads, VertexRegistry& vr, SubpatchRings& rings,
+                     const PreviousRings& previous) {
     if (vr.crack_free && vr.straight_segments)
         number_one_by_one(subpatches, graph, vr, rings);
     else
-        number_in_parallel(subpatches, leaf_start, graph, threads, vr, rings);
+        number_in_parallel(subpatches, leaf_start, graph, threads, vr, rings, previous);
 }
 
 } // namespace seamless
