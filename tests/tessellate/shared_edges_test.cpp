@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Shared boundaries and the crack-free vertex rule (paper section 6, Fig. 3).
+#include "tessellate/teapot_pass.h"
 #include "test_util.h"
 
 #include <seamless/model/model.h>
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <tuple>
 #include <vector>
 
 using namespace seamless;
@@ -114,12 +116,8 @@ std::vector<std::array<int, 3>> segments_of(const EdgeRegistry& reg, int line) {
 
 TEST_CASE("the edge registry is the same for any thread count and subpatch order",
           "[shared_edges]") {
-    const Model m = load_model(test::model_path("teapot.json"));
-    const auto patches = bezier_patches(m);
-    TessellationOptions o;
-    o.tolerance = 0.01;
-    const Tessellation t = tessellate(m, patches, o);
-    const BoundaryMatch bm = match_boundaries(patches, 1e-12 * t.stats.d_max);
+    const test::TeapotPass in;
+    const auto& [t, bm] = std::tie(in.t, in.match);
     const EdgeRegistry one = build_edge_registry(bm, t.subpatches, 1);
     const EdgeRegistry two = build_edge_registry(bm, t.subpatches, 2);
     CHECK(one.offsets == two.offsets);

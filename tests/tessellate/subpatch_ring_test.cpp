@@ -1,15 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The subpatches' rings (subpatch_ring.h), collected afresh and copied from a
 // previous pass.
-#include "test_util.h"
+#include "tessellate/teapot_pass.h"
 
-#include <seamless/model/model.h>
-#include <seamless/tessellate/edge_graph.h>
 #include <seamless/tessellate/subpatch_ring.h>
-#include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>
 
+#include <tuple>
 #include <vector>
 
 using namespace seamless;
@@ -35,18 +33,10 @@ void check_same(const SubpatchRings& a, const SubpatchRings& b) {
 } // namespace
 
 TEST_CASE("rings copied from a previous pass are the rings collected afresh", "[subpatch_ring]") {
-    const Model m = load_model(test::model_path("teapot.json"));
-    const auto patches = bezier_patches(m);
-    TessellationOptions o;
-    o.tolerance = 0.01;
-    const Tessellation t = tessellate(m, patches, o);
-    const BoundaryMatch bm = match_boundaries(patches, t.stats.seam_tolerance);
-    const EdgeRegistry reg = build_edge_registry(bm, t.subpatches, 2);
-    const EdgeGraph g = build_edge_graph(patches, bm, reg, t.stats.seam_tolerance);
+    const test::TeapotPass in;
+    const auto& [patches, t, reg, g, leaf_start] =
+        std::tie(in.patches, in.t, in.reg, in.graph, in.leaf_start);
     const int np = static_cast<int>(patches.size());
-    std::vector<int> leaf_start(np + 1, 0);
-    for (const Subpatch& sp : t.subpatches) ++leaf_start[sp.patch + 1];
-    for (int p = 0; p < np; ++p) leaf_start[p + 1] += leaf_start[p];
     for (int threads : {1, 2}) {
         const SubpatchRings fresh = collect_rings(patches, t.subpatches, reg, g, true, threads);
         // A previous pass whose numbering left its marks on the vertices.

@@ -1,34 +1,24 @@
 // SPDX-License-Identifier: MIT
 // The vertex numbering (vertex_numbering.h): the same numbers and positions
 // whether a previous pass's positions are taken or every point is evaluated.
-#include "test_util.h"
+#include "tessellate/teapot_pass.h"
 
-#include <seamless/model/model.h>
-#include <seamless/tessellate/edge_graph.h>
 #include <seamless/tessellate/subpatch_ring.h>
-#include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/vertex_numbering.h>
 
 #include <catch2/catch.hpp>
 
+#include <tuple>
 #include <vector>
 
 using namespace seamless;
 
 TEST_CASE("vertices of rings kept from a previous pass keep their numbers and positions",
           "[vertex_numbering]") {
-    const Model m = load_model(test::model_path("teapot.json"));
-    const auto patches = bezier_patches(m);
-    TessellationOptions o;
-    o.tolerance = 0.01;
-    const Tessellation t = tessellate(m, patches, o);
-    const BoundaryMatch bm = match_boundaries(patches, t.stats.seam_tolerance);
-    const EdgeRegistry reg = build_edge_registry(bm, t.subpatches, 2);
-    const EdgeGraph g = build_edge_graph(patches, bm, reg, t.stats.seam_tolerance);
+    const test::TeapotPass in;
+    const auto& [patches, t, bm, reg, g, leaf_start] =
+        std::tie(in.patches, in.t, in.match, in.reg, in.graph, in.leaf_start);
     const int np = static_cast<int>(patches.size());
-    std::vector<int> leaf_start(np + 1, 0);
-    for (const Subpatch& sp : t.subpatches) ++leaf_start[sp.patch + 1];
-    for (int p = 0; p < np; ++p) leaf_start[p + 1] += leaf_start[p];
     const auto registry = [&] {
         VertexRegistry vr;
         vr.patches = &patches;
