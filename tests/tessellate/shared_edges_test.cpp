@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <array>
-#include <tuple>
 #include <vector>
 
 using namespace seamless;
@@ -117,7 +116,8 @@ std::vector<std::array<int, 3>> segments_of(const EdgeRegistry& reg, int line) {
 TEST_CASE("the edge registry is the same for any thread count and subpatch order",
           "[shared_edges]") {
     const test::TeapotPass in;
-    const auto& [t, bm] = std::tie(in.t, in.match);
+    const auto& t = in.t;
+    const auto& bm = in.match;
     const EdgeRegistry one = build_edge_registry(bm, t.subpatches, 1);
     const EdgeRegistry two = build_edge_registry(bm, t.subpatches, 2);
     CHECK(one.offsets == two.offsets);

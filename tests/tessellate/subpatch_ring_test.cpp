@@ -7,7 +7,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <tuple>
 #include <vector>
 
 using namespace seamless;
@@ -34,8 +33,11 @@ void check_same(const SubpatchRings& a, const SubpatchRings& b) {
 
 TEST_CASE("rings copied from a previous pass are the rings collected afresh", "[subpatch_ring]") {
     const test::TeapotPass in;
-    const auto& [patches, t, reg, g, leaf_start] =
-        std::tie(in.patches, in.t, in.reg, in.graph, in.leaf_start);
+    const auto& patches = in.patches;
+    const auto& t = in.t;
+    const auto& reg = in.reg;
+    const auto& g = in.graph;
+    const auto& leaf_start = in.leaf_start;
     const int np = static_cast<int>(patches.size());
     for (int threads : {1, 2}) {
         const SubpatchRings fresh = collect_rings(patches, t.subpatches, reg, g, true, threads);

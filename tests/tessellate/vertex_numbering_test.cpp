@@ -8,7 +8,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <tuple>
 #include <vector>
 
 using namespace seamless;
@@ -16,8 +15,12 @@ using namespace seamless;
 TEST_CASE("vertices of rings kept from a previous pass keep their numbers and positions",
           "[vertex_numbering]") {
     const test::TeapotPass in;
-    const auto& [patches, t, bm, reg, g, leaf_start] =
-        std::tie(in.patches, in.t, in.match, in.reg, in.graph, in.leaf_start);
+    const auto& patches = in.patches;
+    const auto& t = in.t;
+    const auto& bm = in.match;
+    const auto& reg = in.reg;
+    const auto& g = in.graph;
+    const auto& leaf_start = in.leaf_start;
     const int np = static_cast<int>(patches.size());
     const auto registry = [&] {
         VertexRegistry vr;
