@@ -223,8 +223,50 @@ SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int pat
     return side;
 }
 
+namespace {
+
+// Patch p's part of build_edge_registry's step (1) from the previous registry
+// `old` (its subpatches from o on there): its interior lines' keys in their
+// order there, the sides on each, its sides (interior lines local) and the
+// sides on its patch edges. Returns its first interior line there.
+int reuse_patch(const EdgeRegistry& old, const std::vector<Subpatch>& subpatches,
+                const std::vector<int>& by_patch, const std::vector<int>& first, int p, int o,
+                std::vector<std::uint64_t>& keys, std::vector<int>& count,
+                std::vector<int>& edge_count, std::vector<SideOnLine>& sides) {
+    // Its lines: the keys with patch p, numbered l0, l0 + 1, ... there.
+    const auto r0 =
+        std::lower_bound(old.interior_keys.begin(), old.interior_keys.end(), line_key(p, 0, 0)) -
+        old.interior_keys.begin();
+    const auto r1 = std::lower_bound(old.interior_keys.begin(), old.interior_keys.end(),
+                                     line_key(p + 1, 0, 0)) -
+                    old.interior_keys.begin();
+    const int nl = static_cast<int>(r1 - r0);
+    int l0 = 0;
+    if (nl > 0)
+        l0 = *std::min_element(old.interior_lines.begin() + r0, old.interior_lines.begin() + r1);
+    keys.resize(nl);
+    count.resize(nl);
+    for (auto r = r0; r < r1; ++r) keys[old.interior_lines[r] - l0] = old.interior_keys[r];
+    for (int l = 0; l < nl; ++l) count[l] = old.offsets[l0 + l + 1] - old.offsets[l0 + l];
+    for (int j = first[p]; j < first[p + 1]; ++j) {
+        const int i = by_patch[j], io = o + j - first[p];
+        for (int k = 0; k < 4; ++k) {
+            SideOnLine side = old.sides[4 * static_cast<size_t>(io) + k];
+            if (on_patch_edge(subpatches[i].rect, k)) {
+                if (side.line >= 0) ++edge_count[side.side];
+            } else {
+                side.line -= l0;
+            }
+            sides[4 * static_cast<size_t>(i) + k] = side;
+        }
+    }
+    return l0;
+}
+
+} // namespace
+
 EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches,
-                                 int threads) {
+                                 int threads, const PreviousRegistry& previous) {
     EdgeRegistry reg;
     const int B = static_cast<int>(m.group_ref.size());
     reg.boundary_lines = B;
@@ -253,9 +295,17 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
     std::vector<std::vector<std::uint64_t>> keys(np);
     std::vector<std::vector<int>> count(np); // per interior line of the patch
     std::vector<int> edge_count(4 * static_cast<size_t>(np), 0);
+    // Per patch taken from the previous registry: its first line there, else -1.
+    std::vector<int> old_l0(np, -1);
     pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
         FirstMet<std::uint64_t, MixHash> met;
         for (int p = begin; p < end; ++p) {
+            if (previous.registry && (*previous.same)[p]) {
+                old_l0[p] = reuse_patch(*previous.registry, subpatches, by_patch, first, p,
+                                        (*previous.previous_start)[p], keys[p], count[p],
+                                        edge_count, reg.sides);
+                continue;
+            }
             met.reset(4 * static_cast<size_t>(first[p + 1] - first[p]));
             std::vector<std::uint64_t>& k_p = keys[p];
             std::vector<int>& c_p = count[p];
@@ -332,6 +382,15 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
                 reg.offsets[l0 + l] = fill[l] = at;
                 at += count[p][l];
             }
+            // A patch taken from the previous registry: its interior lines'
+            // runs as they were (sorted).
+            const bool reused = old_l0[p] >= 0;
+            if (reused) {
+                const EdgeRegistry& old = *previous.registry;
+                std::copy(old.segments.begin() + old.offsets[old_l0[p]],
+                          old.segments.begin() + old.offsets[old_l0[p] + nl],
+                          reg.segments.begin() + seg_base[p]);
+            }
             int edge_fill[4];
             for (int e = 0; e < 4; ++e) edge_fill[e] = edge_start[4 * p + e];
             for (int j = first[p]; j < first[p + 1]; ++j) {
@@ -343,16 +402,17 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
                     if (on_patch_edge(subpatches[i].rect, k)) {
                         reg.segments[edge_fill[side.side % 4]++] = seg;
                     } else {
-                        reg.segments[fill[side.line]++] = seg;
+                        if (!reused) reg.segments[fill[side.line]++] = seg;
                         side.line += l0;
                     }
                 }
             }
             // Line l's run ends where its fill stopped (the next line's
             // offset may belong to another patch, not written yet).
-            for (int l = 0; l < nl; ++l)
-                std::sort(reg.segments.begin() + reg.offsets[l0 + l],
-                          reg.segments.begin() + fill[l], by_side_then_a);
+            if (!reused)
+                for (int l = 0; l < nl; ++l)
+                    std::sort(reg.segments.begin() + reg.offsets[l0 + l],
+                              reg.segments.begin() + fill[l], by_side_then_a);
             std::vector<std::uint64_t>().swap(keys[p]);
         }
     });

@@ -85,9 +85,20 @@ struct EdgeRegistry {
 SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int patch,
                         const ParamRect& r, int k);
 
-// The same registry for any number of worker threads (parallel.h).
+// A previous pass's registry of the same patches and BoundaryMatch, its
+// subpatches in patch order: patch p's subpatches, when same[p], are the
+// previous pass's from previous_start[p] on, so are its sides and its
+// interior lines' segments (they belong to that patch alone).
+struct PreviousRegistry {
+    const EdgeRegistry* registry = nullptr;
+    const std::vector<int>* previous_start = nullptr;
+    const std::vector<char>* same = nullptr;
+};
+
+// The same registry for any number of worker threads (parallel.h), and
+// with or without a previous pass's (then `subpatches` are in patch order).
 EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches,
-                                 int threads = 1);
+                                 int threads = 1, const PreviousRegistry& previous = {});
 
 // Line coordinates strictly inside (a, b) where subpatches on other sides of
 // the line have corners, ascending; appended to `out`.

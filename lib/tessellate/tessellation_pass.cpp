@@ -64,7 +64,17 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     const BoundaryMatch match = match_boundaries(patches, st.seam_tolerance);
     st.shared_edges = match.shared_edges;
     st.collapsed_edges = match.collapsed_edges;
-    const EdgeRegistry reg = build_edge_registry(match, out.subpatches, options.threads);
+    // A patch not split again keeps its sides and interior lines (the
+    // previous pass's registry, PassMemo).
+    const int np = static_cast<int>(patches.size());
+    std::vector<char> kept(np, 0);
+    PreviousRegistry previous_registry;
+    if (!memo.leaf_start.empty()) {
+        for (int p = 0; p < np; ++p) kept[p] = !memo.changed[p];
+        previous_registry = {&memo.registry, &memo.leaf_start, &kept};
+    }
+    EdgeRegistry reg =
+        build_edge_registry(match, out.subpatches, options.threads, previous_registry);
     // (c') The rest of the boundaries by geometry: one edge graph of the model.
     const EdgeGraph graph =
         options.crack_free ? build_edge_graph(patches, match, reg, st.seam_tolerance) : EdgeGraph{};
@@ -93,10 +103,9 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     // across its edges was split again (its sides' lines hold the same
     // segments), and no seam vertices or aliases are involved; so are their
     // vertices' positions (each the exact point of its key).
-    const int np = static_cast<int>(patches.size());
     std::vector<char> same(np, 0);
     PreviousRings previous;
-    if (!memo.leaf_start.empty() && graph.points.empty() && graph.alias.empty()) {
+    if (memo.rings_kept && graph.points.empty() && graph.alias.empty()) {
         std::vector<char> dirty(match.group_ref.size(), 0);
         for (int pe = 0; pe < 4 * np; ++pe)
             if (match.edge_group[pe] >= 0 && memo.changed[pe / 4]) dirty[match.edge_group[pe]] = 1;
@@ -134,12 +143,14 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     phase.bounds += lap();
     // Another pass will follow: the mesh of this one is not needed.
     if (!last && st.above_tolerance > 0) {
-        if (memo.keep && graph.points.empty() && graph.alias.empty()) {
-            memo.rings = std::move(rings);
-            memo.positions = std::move(vr.positions);
+        if (memo.keep) {
             memo.leaf_start = ranges.leaf_start;
-        } else {
-            memo.leaf_start.clear();
+            memo.registry = std::move(reg);
+            memo.rings_kept = graph.points.empty() && graph.alias.empty();
+            if (memo.rings_kept) {
+                memo.rings = std::move(rings);
+                memo.positions = std::move(vr.positions);
+            }
         }
         return out;
     }

@@ -155,3 +155,34 @@ TEST_CASE("the edge registry is the same for any thread count and subpatch order
         }
     }
 }
+
+TEST_CASE("a registry taking patches from a previous pass's is the registry built afresh",
+          "[shared_edges]") {
+    const test::TeapotPass in;
+    const EdgeRegistry& fresh = in.reg;
+    const int np = static_cast<int>(in.patches.size());
+    for (int every : {1, 2, 5}) {
+        std::vector<char> same(np, 0);
+        for (int p = 0; p < np; p += every) same[p] = 1;
+        const PreviousRegistry previous{&fresh, &in.leaf_start, &same};
+        for (int threads : {1, 2}) {
+            const EdgeRegistry again =
+                build_edge_registry(in.match, in.t.subpatches, threads, previous);
+            CHECK(again.offsets == fresh.offsets);
+            CHECK(again.interior_keys == fresh.interior_keys);
+            CHECK(again.interior_lines == fresh.interior_lines);
+            REQUIRE(again.segments.size() == fresh.segments.size());
+            for (size_t i = 0; i < fresh.segments.size(); ++i)
+                CHECK((again.segments[i].a == fresh.segments[i].a &&
+                       again.segments[i].b == fresh.segments[i].b &&
+                       again.segments[i].side == fresh.segments[i].side));
+            REQUIRE(again.sides.size() == fresh.sides.size());
+            for (size_t i = 0; i < fresh.sides.size(); ++i)
+                CHECK((again.sides[i].line == fresh.sides[i].line &&
+                       again.sides[i].a == fresh.sides[i].a &&
+                       again.sides[i].b == fresh.sides[i].b &&
+                       again.sides[i].side == fresh.sides[i].side &&
+                       again.sides[i].reversed == fresh.sides[i].reversed));
+        }
+    }
+}
