@@ -58,8 +58,27 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
     const auto interior = [&](int j, int patch) { return key[j].kind == 2 && key[j].id == patch; };
     pull_blocks(np, 1, threads, nullptr, [&](int begin, int end) {
         FirstMet<std::uint64_t, MixHash> seen; // (s, t) -> first slot
+        std::vector<int> first_of;             // previous vertex number -> first slot
         for (int p = begin; p < end; ++p) {
             const int j0 = ring_start[leaf_start[p]], j1 = ring_start[leaf_start[p + 1]];
+            const int o = previous.positions ? (*previous.previous_start)[p] : 0;
+            const int n = leaf_start[p + 1] - leaf_start[p];
+            if (previous.positions && (*previous.same)[p] && n > 0) {
+                // The previous pass numbered the same rings: one number per
+                // key, and the patch's interior points were numbered in its
+                // own subpatches, after the centre of the subpatch before.
+                const SubpatchRings& old = *previous.rings;
+                const int lo = o == 0 ? 0 : old.centre[o - 1] + 1;
+                first_of.assign(old.centre[o + n - 1] + 1 - lo, -1);
+                const RingVertex* old_ring = old.vertices.data() + old.start[o] - j0;
+                for (int j = j0; j < j1; ++j) {
+                    if (!interior(j, p)) continue;
+                    int& f = first_of[old_ring[j].vertex - lo];
+                    if (f < 0) f = j;
+                    first[j] = f;
+                }
+                continue;
+            }
             seen.reset(j1 - j0);
             for (int j = j0; j < j1; ++j) {
                 if (!interior(j, p)) continue;
