@@ -277,7 +277,8 @@ struct Row {
     MeshFigures occ, ours;
 };
 
-Row compare(const std::string& name, const Model& model, double D, int runs) {
+// `our_runs`: seamless's alternating 1- and 2-thread runs (default `runs`).
+Row compare(const std::string& name, const Model& model, double D, int runs, int our_runs = 0) {
     Row row;
     row.name = name;
     row.d_max = d_max(model);
@@ -297,7 +298,7 @@ Row compare(const std::string& name, const Model& model, double D, int runs) {
     opt.tolerance = D;
     std::vector<double> t1, t2;
     Tessellation t;
-    for (int r = 0; r < runs; ++r)
+    for (int r = 0; r < (our_runs > 0 ? our_runs : runs); ++r)
         for (int threads : {1, 2}) {
             opt.threads = threads;
             const double t0 = now();
@@ -394,7 +395,8 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<ModelSweep>
           "seamless; mesh->surface: corners, edge midpoints and centroid of every triangle, "
           "Newton-projected on its surface) and checked by `lib/mesh/check.h` (welded by "
           "position; degenerate triangles; crack = a border edge running along another; border "
-          "edges include the model's own boundary). Seconds: median of the runs; OpenCASCADE on "
+          "edges include the model's own boundary). Seconds: median of the runs (seamless at "
+          "teapot D = 1e-4 d_max: at least 11 alternating 1- and 2-thread runs); OpenCASCADE on "
           "1 thread and with `InParallel` on 2.\n\n"
           "| model | D | mesher | triangles | degenerate | cracks | border edges | "
           "surf->mesh | mesh->surf | certified bound | s, 1 thread | s, 2 threads |\n"
@@ -587,8 +589,10 @@ int main(int argc, char** argv) {
         const Model teacup = load_model(models / "teacup.json");
         const Model fuse = load_model(fuselage);
         for (double D : {0.01, 0.001, 0.0001}) rows.push_back(compare("teapot", teapot, D, runs));
-        // Issue 11's two-thread speed-up goal is stated at D = 1e-4 d_max.
-        rows.push_back(compare("teapot", teapot, 1e-4 * d_max(teapot), runs));
+        // Issue 11's two-thread speed-up goal is stated at D = 1e-4 d_max. Its
+        // ratio of two medians moved 1.47-1.83 between idle runs of 3: at least
+        // 11 alternating 1- and 2-thread runs here.
+        rows.push_back(compare("teapot", teapot, 1e-4 * d_max(teapot), runs, std::max(runs, 11)));
         for (double D : {0.01, 0.001, 0.0001}) rows.push_back(compare("teacup", teacup, D, runs));
         // The fuselage (d_max 206) at the teapot's D relative to d_max, about.
         for (double D : {0.2, 0.02, 0.002}) rows.push_back(compare("fuselage", fuse, D, runs));

@@ -7,6 +7,7 @@
 #include <seamless/tessellate/fan_certification.h>
 #include <seamless/tessellate/patch_tree.h>
 #include <seamless/tessellate/subdivision.h>
+#include <seamless/tessellate/subpatch_ring.h>
 
 #include <vector>
 
@@ -30,7 +31,17 @@ struct PassMemo {
     // storage already touched instead of faulting in new pages on one thread.
     std::vector<PatchNode> spare_nodes;
     std::vector<Subpatch> spare_subpatches;
-    bool keep = false; // fill them (only a tolerance takes more than one pass)
+    // Where each patch's subpatches started in the previous pass, its edge
+    // registry, rings and their vertices' positions: the next pass copies the
+    // parts of patches that cannot have changed (shared_edges.h,
+    // subpatch_ring.h). Rings only without seam vertices or aliases (the edge
+    // graph's numbers and keys could change).
+    std::vector<int> leaf_start;
+    EdgeRegistry registry;
+    bool rings_kept = false;
+    SubpatchRings rings;
+    std::vector<Vec3> positions; // the rings' vertices (vertex_numbering.h)
+    bool keep = false;           // fill them (only a tolerance takes more than one pass)
     PassMemo(size_t patches, bool keep)
         : verdicts(patches), bounds(patches), parts(patches), changed(patches, 1), keep(keep) {}
 };

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/disjoint_sets.h>
 #include <seamless/base/parallel.h>
+#include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/first_met.h>
 #include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/shared_edges.h>
 
@@ -31,10 +33,12 @@ constexpr std::uint64_t line_key(int patch, int dir, int c) {
            static_cast<std::uint64_t>(c);
 }
 
-// Side k of rect on its line; creates interior lines in `lines` when given.
+constexpr std::uint64_t kNoKey = ~std::uint64_t{0};
+
+// Side k of rect on its line. A side inside the patch gets its line's key in
+// `key` (its line is left to the caller); a side on a patch edge, kNoKey.
 SideOnLine locate_side(const BoundaryMatch& m, int patch, const ParamRect& r, int k,
-                       const std::unordered_map<std::uint64_t, int>* lines,
-                       std::unordered_map<std::uint64_t, int>* create, int boundary_lines) {
+                       std::uint64_t& key) {
     SideOnLine out;
     int edge = -1, dir = 0, c = 0, tag = 0;
     switch (k) {
@@ -51,6 +55,7 @@ SideOnLine locate_side(const BoundaryMatch& m, int patch, const ParamRect& r, in
         out.a = r.t0, out.b = r.t1, dir = 1, c = r.s0, tag = 1, edge = r.s0 == 0 ? 3 : -1;
         break;
     }
+    key = kNoKey;
     if (edge >= 0) {
         const int pe = 4 * patch + edge;
         if (m.collapsed[pe]) {
@@ -66,17 +71,8 @@ SideOnLine locate_side(const BoundaryMatch& m, int patch, const ParamRect& r, in
         }
         return out;
     }
-    const std::uint64_t key = line_key(patch, dir, c);
+    key = line_key(patch, dir, c);
     out.side = tag;
-    if (create) {
-        auto [it, fresh] =
-            create->try_emplace(key, boundary_lines + static_cast<int>(create->size()));
-        out.line = it->second;
-    } else {
-        auto it = lines->find(key);
-        assert(it != lines->end());
-        out.line = it->second;
-    }
     return out;
 }
 
@@ -102,10 +98,11 @@ const LineSegment* containing(const EdgeRegistry& reg, int line, int x) {
     return nullptr;
 }
 
-// Interior line (patch, direction, coordinate), -1 when no subpatch side lies on it.
-int find_interior_line(const EdgeRegistry& reg, int patch, int dir, int c) {
-    auto it = reg.interior_line.find(line_key(patch, dir, c));
-    return it == reg.interior_line.end() ? -1 : it->second;
+// Interior line with this key, -1 when no subpatch side lies on it.
+int find_interior_line(const EdgeRegistry& reg, std::uint64_t key) {
+    auto it = std::lower_bound(reg.interior_keys.begin(), reg.interior_keys.end(), key);
+    if (it == reg.interior_keys.end() || *it != key) return -1;
+    return reg.interior_lines[it - reg.interior_keys.begin()];
 }
 
 } // namespace
@@ -219,72 +216,210 @@ BoundaryMatch match_boundaries(const std::vector<BezierPatch>& patches, double t
 
 SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int patch,
                         const ParamRect& r, int k) {
-    return locate_side(m, patch, r, k, &reg.interior_line, nullptr, reg.boundary_lines);
+    std::uint64_t key = kNoKey;
+    SideOnLine side = locate_side(m, patch, r, k, key);
+    if (key != kNoKey) side.line = find_interior_line(reg, key);
+    assert(key == kNoKey || side.line >= 0);
+    return side;
 }
 
+namespace {
+
+// Patch p's part of build_edge_registry's step (1) from the previous registry
+// `old` (its subpatches from o on there): its interior lines' keys in their
+// order there, the sides on each, its sides (interior lines local) and the
+// sides on its patch edges. Returns its first interior line there.
+int reuse_patch(const EdgeRegistry& old, const std::vector<Subpatch>& subpatches,
+                const std::vector<int>& by_patch, const std::vector<int>& first, int p, int o,
+                std::vector<std::uint64_t>& keys, std::vector<int>& count,
+                std::vector<int>& edge_count, std::vector<SideOnLine>& sides) {
+    // Its lines: the keys with patch p, numbered l0, l0 + 1, ... there.
+    const auto r0 =
+        std::lower_bound(old.interior_keys.begin(), old.interior_keys.end(), line_key(p, 0, 0)) -
+        old.interior_keys.begin();
+    const auto r1 = std::lower_bound(old.interior_keys.begin(), old.interior_keys.end(),
+                                     line_key(p + 1, 0, 0)) -
+                    old.interior_keys.begin();
+    const int nl = static_cast<int>(r1 - r0);
+    int l0 = 0;
+    if (nl > 0)
+        l0 = *std::min_element(old.interior_lines.begin() + r0, old.interior_lines.begin() + r1);
+    keys.resize(nl);
+    count.resize(nl);
+    for (auto r = r0; r < r1; ++r) keys[old.interior_lines[r] - l0] = old.interior_keys[r];
+    for (int l = 0; l < nl; ++l) count[l] = old.offsets[l0 + l + 1] - old.offsets[l0 + l];
+    for (int j = first[p]; j < first[p + 1]; ++j) {
+        const int i = by_patch[j], io = o + j - first[p];
+        for (int k = 0; k < 4; ++k) {
+            SideOnLine side = old.sides[4 * static_cast<size_t>(io) + k];
+            if (on_patch_edge(subpatches[i].rect, k)) {
+                if (side.line >= 0) ++edge_count[side.side];
+            } else {
+                side.line -= l0;
+            }
+            sides[4 * static_cast<size_t>(i) + k] = side;
+        }
+    }
+    return l0;
+}
+
+} // namespace
+
 EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches,
-                                 int threads) {
+                                 int threads, const PreviousRegistry& previous) {
     EdgeRegistry reg;
-    reg.boundary_lines = static_cast<int>(m.group_ref.size());
-    // Interior lines are numbered as first met in subpatch order. A patch's
-    // lines are its own: each run of one patch's subpatches numbers its lines
-    // on its own (in parallel), the runs' new lines then get global numbers
-    // in run order (a patch met again in a later run finds its lines known).
+    const int B = static_cast<int>(m.group_ref.size());
+    reg.boundary_lines = B;
     const int n = static_cast<int>(subpatches.size());
-    std::vector<int> run_start{0};
-    for (int i = 1; i <= n; ++i)
-        if (i == n || subpatches[i].patch != subpatches[i - 1].patch) run_start.push_back(i);
-    const int runs = static_cast<int>(run_start.size()) - 1;
-    std::vector<SideOnLine> sides; // line: local, or boundary
-    reserve_huge(sides, 4 * static_cast<size_t>(n), threads);
-    sides.resize(4 * static_cast<size_t>(n));
-    std::vector<std::vector<std::uint64_t>> run_keys(std::max(runs, 0));
-    parallel_chunks(runs, threads, [&](int begin, int end) {
-        std::unordered_map<std::uint64_t, int> local;
-        for (int r = begin; r < end; ++r) {
-            local.clear();
-            for (int i = run_start[r]; i < run_start[r + 1]; ++i)
-                for (int k = 0; k < 4; ++k)
-                    sides[4 * i + k] = locate_side(m, subpatches[i].patch, subpatches[i].rect, k,
-                                                   nullptr, &local, 0);
-            run_keys[r].resize(local.size());
-            for (const auto& [key, id] : local) run_keys[r][id] = key;
+    const int np = static_cast<int>(m.collapsed.size()) / 4;
+    // The subpatches by patch (in patch order already when they come from a
+    // tessellation): a patch's interior lines are its own, so each patch's
+    // sides are put on lines on its own, in parallel, without shared tables.
+    std::vector<int> first(np + 1, 0), by_patch(n);
+    for (const Subpatch& sp : subpatches) ++first[sp.patch + 1];
+    for (int p = 0; p < np; ++p) first[p + 1] += first[p];
+    {
+        std::vector<int> fill(first.begin(), first.end() - 1);
+        for (int i = 0; i < n; ++i) by_patch[fill[subpatches[i].patch]++] = i;
+    }
+    // Largest patches first (pull_blocks).
+    std::vector<int> order(np);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return first[a + 1] - first[a] > first[b + 1] - first[b];
+    });
+    reserve_huge(reg.sides, 4 * static_cast<size_t>(n), threads);
+    reg.sides.resize(4 * static_cast<size_t>(n));
+    // (1) Per patch: its sides, its interior lines' keys (sorted: the lines'
+    // order), the sides on each of them and on each of its patch edges.
+    std::vector<std::vector<std::uint64_t>> keys(np);
+    std::vector<std::vector<int>> count(np); // per interior line of the patch
+    std::vector<int> edge_count(4 * static_cast<size_t>(np), 0);
+    // Per patch taken from the previous registry: its first line there, else -1.
+    std::vector<int> old_l0(np, -1);
+    pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
+        FirstMet<std::uint64_t, MixHash> met;
+        for (int p = begin; p < end; ++p) {
+            if (previous.registry && (*previous.same)[p]) {
+                old_l0[p] = reuse_patch(*previous.registry, subpatches, by_patch, first, p,
+                                        (*previous.previous_start)[p], keys[p], count[p],
+                                        edge_count, reg.sides);
+                continue;
+            }
+            met.reset(4 * static_cast<size_t>(first[p + 1] - first[p]));
+            std::vector<std::uint64_t>& k_p = keys[p];
+            std::vector<int>& c_p = count[p];
+            for (int j = first[p]; j < first[p + 1]; ++j) {
+                const int i = by_patch[j];
+                for (int k = 0; k < 4; ++k) {
+                    std::uint64_t key = kNoKey;
+                    SideOnLine& side = reg.sides[4 * i + k];
+                    side = locate_side(m, p, subpatches[i].rect, k, key);
+                    if (key == kNoKey) {
+                        if (side.line >= 0) ++edge_count[side.side];
+                        continue;
+                    }
+                    side.line = met.emplace(key, static_cast<int>(k_p.size())); // local for now
+                    if (side.line == static_cast<int>(k_p.size())) {
+                        k_p.push_back(key);
+                        c_p.push_back(0);
+                    }
+                    ++c_p[side.line];
+                }
+            }
         }
     });
-    std::vector<std::vector<int>> run_lines(std::max(runs, 0));
-    for (int r = 0; r < runs; ++r)
-        for (std::uint64_t key : run_keys[r])
-            run_lines[r].push_back(
-                reg.interior_line
-                    .try_emplace(key,
-                                 reg.boundary_lines + static_cast<int>(reg.interior_line.size()))
-                    .first->second);
-    parallel_chunks(runs, threads, [&](int begin, int end) {
-        for (int r = begin; r < end; ++r)
-            for (int i = run_start[r]; i < run_start[r + 1]; ++i)
-                for (int k = 0; k < 4; ++k) {
-                    SideOnLine& side = sides[4 * i + k];
-                    if (side.line >= 0 && !on_patch_edge(subpatches[i].rect, k))
-                        side.line = run_lines[r][side.line];
-                }
-    });
-    const int lines = reg.boundary_lines + static_cast<int>(reg.interior_line.size());
+    // (2) The lines' numbers and offsets: the boundary lines first (each
+    // patch edge's sides a run of its line), then each patch's interior lines.
+    std::vector<int> line_base(np + 1, B);
+    for (int p = 0; p < np; ++p) line_base[p + 1] = line_base[p] + static_cast<int>(keys[p].size());
+    const int lines = line_base[np];
     reg.offsets.assign(lines + 1, 0);
-    for (const SideOnLine& side : sides)
-        if (side.line >= 0) ++reg.offsets[side.line + 1];
-    for (int l = 0; l < lines; ++l) reg.offsets[l + 1] += reg.offsets[l];
-    reg.segments.resize(reg.offsets[lines]);
-    std::vector<int> fill(reg.offsets.begin(), reg.offsets.end() - 1);
-    for (const SideOnLine& side : sides)
-        if (side.line >= 0)
-            reg.segments[fill[side.line]++] = LineSegment{side.a, side.b, side.side};
-    parallel_chunks(lines, threads, [&](int begin, int end) {
+    for (int pe = 0; pe < 4 * np; ++pe)
+        if (m.edge_group[pe] >= 0) reg.offsets[m.edge_group[pe] + 1] += edge_count[pe];
+    for (int l = 0; l < B; ++l) reg.offsets[l + 1] += reg.offsets[l];
+    std::vector<int> edge_start(4 * static_cast<size_t>(np), 0);
+    {
+        std::vector<int> fill(reg.offsets.begin(), reg.offsets.begin() + B);
+        for (int pe = 0; pe < 4 * np; ++pe)
+            if (m.edge_group[pe] >= 0) {
+                edge_start[pe] = fill[m.edge_group[pe]];
+                fill[m.edge_group[pe]] += edge_count[pe];
+            }
+    }
+    std::vector<int> seg_base(np + 1, reg.offsets[B]);
+    for (int p = 0; p < np; ++p) {
+        int sum = 0;
+        for (int c : count[p]) sum += c;
+        seg_base[p + 1] = seg_base[p] + sum;
+    }
+    reg.offsets[lines] = seg_base[np];
+    reg.segments.resize(seg_base[np]);
+    reg.interior_keys.resize(lines - B);
+    reg.interior_lines.resize(lines - B);
+    // (3) Per patch: its lines' offsets, its sides into their runs, its
+    // interior lines sorted; then the boundary lines sorted.
+    const auto by_side_then_a = [](const LineSegment& x, const LineSegment& y) {
+        return x.side != y.side ? x.side < y.side : x.a < y.a;
+    };
+    pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
+        std::vector<int> fill, key_order;
+        for (int p = begin; p < end; ++p) {
+            const int nl = static_cast<int>(keys[p].size()), l0 = line_base[p];
+            // Its lines' keys ascending, for look-ups (a patch's keys follow
+            // the previous patch's).
+            std::vector<int>& by_key = key_order;
+            by_key.resize(nl);
+            std::iota(by_key.begin(), by_key.end(), 0);
+            std::sort(by_key.begin(), by_key.end(),
+                      [&](int x, int y) { return keys[p][x] < keys[p][y]; });
+            for (int r = 0; r < nl; ++r) {
+                reg.interior_keys[l0 - B + r] = keys[p][by_key[r]];
+                reg.interior_lines[l0 - B + r] = l0 + by_key[r];
+            }
+            fill.resize(nl);
+            for (int l = 0, at = seg_base[p]; l < nl; ++l) {
+                reg.offsets[l0 + l] = fill[l] = at;
+                at += count[p][l];
+            }
+            // A patch taken from the previous registry: its interior lines'
+            // runs as they were (sorted).
+            const bool reused = old_l0[p] >= 0;
+            if (reused) {
+                const EdgeRegistry& old = *previous.registry;
+                std::copy(old.segments.begin() + old.offsets[old_l0[p]],
+                          old.segments.begin() + old.offsets[old_l0[p] + nl],
+                          reg.segments.begin() + seg_base[p]);
+            }
+            int edge_fill[4];
+            for (int e = 0; e < 4; ++e) edge_fill[e] = edge_start[4 * p + e];
+            for (int j = first[p]; j < first[p + 1]; ++j) {
+                const int i = by_patch[j];
+                for (int k = 0; k < 4; ++k) {
+                    SideOnLine& side = reg.sides[4 * i + k];
+                    if (side.line < 0) continue;
+                    const LineSegment seg{side.a, side.b, side.side};
+                    if (on_patch_edge(subpatches[i].rect, k)) {
+                        reg.segments[edge_fill[side.side % 4]++] = seg;
+                    } else {
+                        if (!reused) reg.segments[fill[side.line]++] = seg;
+                        side.line += l0;
+                    }
+                }
+            }
+            // Line l's run ends where its fill stopped (the next line's
+            // offset may belong to another patch, not written yet).
+            if (!reused)
+                for (int l = 0; l < nl; ++l)
+                    std::sort(reg.segments.begin() + reg.offsets[l0 + l],
+                              reg.segments.begin() + fill[l], by_side_then_a);
+            std::vector<std::uint64_t>().swap(keys[p]);
+        }
+    });
+    parallel_chunks(B, threads, [&](int begin, int end) {
         for (int l = begin; l < end; ++l)
             std::sort(reg.segments.begin() + reg.offsets[l],
-                      reg.segments.begin() + reg.offsets[l + 1],
-                      [](const LineSegment& x, const LineSegment& y) {
-                          return x.side != y.side ? x.side < y.side : x.a < y.a;
-                      });
+                      reg.segments.begin() + reg.offsets[l + 1], by_side_then_a);
     });
     return reg;
 }
@@ -391,10 +526,10 @@ bool straight_point(VertexRegistry& vr, VertexKey key, Vec3& p) {
     // At most one subpatch side holds a grid point strictly inside.
     const LineSegment* seg = nullptr;
     bool along_s = true;
-    const int h = find_interior_line(*vr.edges, patch, 0, t);
+    const int h = find_interior_line(*vr.edges, line_key(patch, 0, t));
     if (h >= 0) seg = containing(*vr.edges, h, s);
     if (!seg) {
-        const int v = find_interior_line(*vr.edges, patch, 1, s);
+        const int v = find_interior_line(*vr.edges, line_key(patch, 1, s));
         if (v >= 0) seg = containing(*vr.edges, v, t), along_s = false;
     }
     if (!seg) return false;

@@ -59,15 +59,6 @@ struct LineSegment {
     int side = 0;
 };
 
-// Every line of the subdivision: the patch-interior split lines (patch, u or
-// v, grid coordinate) and the global boundary edges, with the subpatch sides on them.
-struct EdgeRegistry {
-    int boundary_lines = 0; // line g < boundary_lines is global edge g
-    std::unordered_map<std::uint64_t, int> interior_line; // key: patch, direction, coordinate
-    std::vector<int> offsets;                             // per line into segments (CSR)
-    std::vector<LineSegment> segments;                    // per line sorted by (side, a)
-};
-
 // Where a subpatch side lies: line, interval in line coordinates, side tag, and
 // whether the line's coordinate runs against the patch's parameter.
 struct SideOnLine {
@@ -75,13 +66,39 @@ struct SideOnLine {
     int a = 0, b = 0, side = 0;
     bool reversed = false;
 };
+
+// Every line of the subdivision: the global boundary edges and the
+// patch-interior split lines (patch, u or v, grid coordinate), with the
+// subpatch sides on them. Flat arrays: a patch's interior lines are
+// consecutive, numbered as first met in its subpatches; interior_keys
+// ascending, interior_lines[i] the line with key interior_keys[i].
+struct EdgeRegistry {
+    int boundary_lines = 0;                   // line g < boundary_lines is global edge g
+    std::vector<std::uint64_t> interior_keys; // key: patch, direction, coordinate
+    std::vector<int> interior_lines;
+    std::vector<int> offsets;          // per line into segments (CSR)
+    std::vector<LineSegment> segments; // per line sorted by (side, a)
+    std::vector<SideOnLine> sides;     // per subpatch i and side k: sides[4 i + k]
+};
+
 // Side k of rect (0 bottom t = t0, 1 right s = s1, 2 top t = t1, 3 left s = s0).
 SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int patch,
                         const ParamRect& r, int k);
 
-// The same registry for any number of worker threads (parallel.h).
+// A previous pass's registry of the same patches and BoundaryMatch, its
+// subpatches in patch order: patch p's subpatches, when same[p], are the
+// previous pass's from previous_start[p] on, so are its sides and its
+// interior lines' segments (they belong to that patch alone).
+struct PreviousRegistry {
+    const EdgeRegistry* registry = nullptr;
+    const std::vector<int>* previous_start = nullptr;
+    const std::vector<char>* same = nullptr;
+};
+
+// The same registry for any number of worker threads (parallel.h), and
+// with or without a previous pass's (then `subpatches` are in patch order).
 EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpatch>& subpatches,
-                                 int threads = 1);
+                                 int threads = 1, const PreviousRegistry& previous = {});
 
 // Line coordinates strictly inside (a, b) where subpatches on other sides of
 // the line have corners, ascending; appended to `out`.

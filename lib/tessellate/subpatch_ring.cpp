@@ -8,15 +8,15 @@
 
 namespace seamless {
 
-void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const EdgeGraph& graph,
-                  int patch, const ParamRect& r, bool crack_free, std::vector<int>& scratch,
-                  std::vector<SideVertex>& inside, std::vector<RingVertex>& ring) {
+void collect_ring(const EdgeRegistry& reg, const EdgeGraph& graph, int i, const ParamRect& r,
+                  bool crack_free, std::vector<int>& scratch, std::vector<SideVertex>& inside,
+                  std::vector<RingVertex>& ring) {
     ring.clear();
     const int cs[4] = {r.s0, r.s1, r.s1, r.s0}, ct[4] = {r.t0, r.t0, r.t1, r.t1};
     for (int k = 0; k < 4; ++k) {
         ring.push_back({cs[k], ct[k], param_of(cs[k]), param_of(ct[k]), -1, -1});
         if (!crack_free) continue;
-        const SideOnLine side = side_on_line(reg, match, patch, r, k);
+        const SideOnLine& side = reg.sides[4 * static_cast<size_t>(i) + k];
         scratch.clear();
         points_inside(reg, side, scratch);
         inside.clear();
@@ -53,8 +53,8 @@ void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const Edg
 
 SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
                             const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
-                            const BoundaryMatch& match, const EdgeGraph& graph, bool crack_free,
-                            int threads) {
+                            const EdgeGraph& graph, bool crack_free, int threads,
+                            const PreviousRings& previous) {
     // Each subpatch's ring and centre point on its own, in parallel; the rings
     // of a block end to end in one array (not one allocation per subpatch).
     const int count = static_cast<int>(subpatches.size());
@@ -70,8 +70,20 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
         std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock];
         for (int i = begin; i < end; ++i) {
             const Subpatch& sp = subpatches[i];
+            if (previous.rings && (*previous.same)[sp.patch]) {
+                const SubpatchRings& old = *previous.rings;
+                const int o =
+                    (*previous.previous_start)[sp.patch] + i - (*previous.leaf_start)[sp.patch];
+                const auto first = old.vertices.begin() + old.start[o];
+                const size_t before = block.size();
+                block.insert(block.end(), first, old.vertices.begin() + old.start[o + 1]);
+                for (size_t j = before; j < block.size(); ++j) block[j].vertex = -1;
+                out.start[i + 1] = old.start[o + 1] - old.start[o];
+                out.centre_point[i] = old.centre_point[o];
+                continue;
+            }
             const ParamRect& r = sp.rect;
-            collect_ring(reg, match, graph, sp.patch, r, crack_free, scratch, inside, ring);
+            collect_ring(reg, graph, i, r, crack_free, scratch, inside, ring);
             block.insert(block.end(), ring.begin(), ring.end());
             out.start[i + 1] = static_cast<int>(ring.size());
             const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));

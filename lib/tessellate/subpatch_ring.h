@@ -32,11 +32,11 @@ struct SideVertex {
     int grid = 0, foreign = -1;
 };
 
-// The ring of subpatch `r` of `patch` into `ring`; `scratch` and `inside`
-// are the caller's scratch storage.
-void collect_ring(const EdgeRegistry& reg, const BoundaryMatch& match, const EdgeGraph& graph,
-                  int patch, const ParamRect& r, bool crack_free, std::vector<int>& scratch,
-                  std::vector<SideVertex>& inside, std::vector<RingVertex>& ring);
+// The ring of subpatch `i` (rect `r`; its sides reg.sides[4 i + k]) into
+// `ring`; `scratch` and `inside` are the caller's scratch storage.
+void collect_ring(const EdgeRegistry& reg, const EdgeGraph& graph, int i, const ParamRect& r,
+                  bool crack_free, std::vector<int>& scratch, std::vector<SideVertex>& inside,
+                  std::vector<RingVertex>& ring);
 
 // Every subpatch's ring, laid end to end in subpatch order, and its centre.
 struct SubpatchRings {
@@ -46,11 +46,24 @@ struct SubpatchRings {
     std::vector<int> centre;        // its mesh vertex (vertex_numbering.h)
 };
 
+// A previous pass's rings, copied where they cannot have changed: patch p's
+// subpatches, when same[p], are the previous pass's from previous_start[p]
+// on (leaf_start: where they start now), and so are their sides' lines.
+// With `positions` (the previous pass's vertices, rings.vertices[].vertex
+// their indices) the numbering takes their positions from there too.
+struct PreviousRings {
+    const SubpatchRings* rings = nullptr;
+    const std::vector<int>* previous_start = nullptr;
+    const std::vector<int>* leaf_start = nullptr;
+    const std::vector<char>* same = nullptr;
+    const std::vector<Vec3>* positions = nullptr;
+};
+
 // In parallel, the same arrays for any thread count; vertex and centre are
 // left to the numbering.
 SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
                             const std::vector<Subpatch>& subpatches, const EdgeRegistry& reg,
-                            const BoundaryMatch& match, const EdgeGraph& graph, bool crack_free,
-                            int threads);
+                            const EdgeGraph& graph, bool crack_free, int threads,
+                            const PreviousRings& previous = {});
 
 } // namespace seamless

@@ -70,24 +70,61 @@ struct EdgeUses {
     std::vector<Use> uses;
 };
 
+// In parallel: the triangles in kUseBlocks blocks; each block counts its uses
+// per bucket, then writes them after the earlier blocks' in each bucket: the
+// same triangle order in every bucket for any thread count.
+constexpr int kUseBlocks = 8;
+
 EdgeUses edge_uses(const TriangleMesh& mesh, int threads) {
     EdgeUses e;
-    e.start.assign(mesh.positions.size() + 1, 0);
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const int a = t[k], b = t[(k + 1) % 3];
-            if (a != b) ++e.start[std::min(a, b) + 1];
-        }
-    for (size_t v = 1; v < e.start.size(); ++v) e.start[v] += e.start[v - 1];
-    reserve_huge(e.uses, e.start.back(), threads);
-    e.uses.resize(e.start.back());
-    std::vector<int> fill(e.start.begin(), e.start.end() - 1);
-    for (size_t f = 0; f < mesh.triangles.size(); ++f)
+    const int nv = static_cast<int>(mesh.positions.size());
+    const int nt = static_cast<int>(mesh.triangles.size());
+    const auto block_begin = [nt](int b) {
+        return static_cast<int>(static_cast<long long>(nt) * b / kUseBlocks);
+    };
+    const auto each_use = [&mesh](int f, auto&& use) {
         for (int k = 0; k < 3; ++k) {
             const int a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
-            if (a != b)
-                e.uses[fill[std::min(a, b)]++] = {std::max(a, b), mesh.triangle_surface[f], a < b};
+            if (a != b) use(a, b);
         }
+    };
+    // at[b][v]: block b's uses in bucket v, then where they start.
+    std::vector<std::vector<int>> at(kUseBlocks);
+    parallel_chunks(kUseBlocks, threads, [&](int begin, int end) {
+        for (int b = begin; b < end; ++b) {
+            std::vector<int>& n = at[b];
+            n.assign(nv, 0);
+            for (int f = block_begin(b); f < block_begin(b + 1); ++f)
+                each_use(f, [&n](int a, int c) { ++n[std::min(a, c)]; });
+        }
+    });
+    e.start.assign(nv + 1, 0);
+    parallel_chunks(nv, threads, [&](int begin, int end) {
+        for (int v = begin; v < end; ++v)
+            for (int b = 0; b < kUseBlocks; ++b) e.start[v + 1] += at[b][v];
+    });
+    for (int v = 0; v < nv; ++v) e.start[v + 1] += e.start[v];
+    parallel_chunks(nv, threads, [&](int begin, int end) {
+        for (int v = begin; v < end; ++v)
+            for (int b = 0, x = e.start[v]; b < kUseBlocks; ++b) {
+                const int n = at[b][v];
+                at[b][v] = x;
+                x += n;
+            }
+    });
+    reserve_huge(e.uses, e.start.back(), threads);
+    e.uses.resize(e.start.back());
+    parallel_chunks(kUseBlocks, threads, [&](int begin, int end) {
+        for (int b = begin; b < end; ++b) {
+            std::vector<int>& fill = at[b];
+            for (int f = block_begin(b); f < block_begin(b + 1); ++f) {
+                const int surface = mesh.triangle_surface[f];
+                each_use(f, [&](int a, int c) {
+                    e.uses[fill[std::min(a, c)]++] = {std::max(a, c), surface, a < c};
+                });
+            }
+        }
+    });
     return e;
 }
 

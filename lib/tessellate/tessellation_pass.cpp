@@ -64,7 +64,17 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     const BoundaryMatch match = match_boundaries(patches, st.seam_tolerance);
     st.shared_edges = match.shared_edges;
     st.collapsed_edges = match.collapsed_edges;
-    const EdgeRegistry reg = build_edge_registry(match, out.subpatches, options.threads);
+    // A patch not split again keeps its sides and interior lines (the
+    // previous pass's registry, PassMemo).
+    const int np = static_cast<int>(patches.size());
+    std::vector<char> kept(np, 0);
+    PreviousRegistry previous_registry;
+    if (!memo.leaf_start.empty()) {
+        for (int p = 0; p < np; ++p) kept[p] = !memo.changed[p];
+        previous_registry = {&memo.registry, &memo.leaf_start, &kept};
+    }
+    EdgeRegistry reg =
+        build_edge_registry(match, out.subpatches, options.threads, previous_registry);
     // (c') The rest of the boundaries by geometry: one edge graph of the model.
     const EdgeGraph graph =
         options.crack_free ? build_edge_graph(patches, match, reg, st.seam_tolerance) : EdgeGraph{};
@@ -89,12 +99,31 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     TriangleMesh& mesh = out.mesh;
     for (const BSplineSurface& s : model.surfaces) mesh.surface_names.push_back(s.name);
     // (d0) Each subpatch's ring and centre point on its own, in parallel.
-    SubpatchRings rings = collect_rings(patches, out.subpatches, reg, match, graph,
-                                        options.crack_free, options.threads);
+    // A patch's rings are the previous pass's when neither it nor a patch
+    // across its edges was split again (its sides' lines hold the same
+    // segments), and no seam vertices or aliases are involved; so are their
+    // vertices' positions (each the exact point of its key).
+    std::vector<char> same(np, 0);
+    PreviousRings previous;
+    if (memo.rings_kept && graph.points.empty() && graph.alias.empty()) {
+        std::vector<char> dirty(match.group_ref.size(), 0);
+        for (int pe = 0; pe < 4 * np; ++pe)
+            if (match.edge_group[pe] >= 0 && memo.changed[pe / 4]) dirty[match.edge_group[pe]] = 1;
+        for (int p = 0; p < np; ++p) {
+            same[p] = !memo.changed[p];
+            for (int e = 0; e < 4; ++e) {
+                const int g = match.edge_group[4 * p + e];
+                if (g >= 0 && dirty[g]) same[p] = 0;
+            }
+        }
+        previous = {&memo.rings, &memo.leaf_start, &ranges.leaf_start, &same, &memo.positions};
+    }
+    SubpatchRings rings = collect_rings(patches, out.subpatches, reg, graph, options.crack_free,
+                                        options.threads, previous);
     phase.rings += lap();
     // (d1) Their vertices, numbered as first met in subpatch order (each ring,
     // then its centre).
-    number_vertices(out.subpatches, ranges.leaf_start, graph, options.threads, vr, rings);
+    number_vertices(out.subpatches, ranges.leaf_start, graph, options.threads, vr, rings, previous);
     phase.numbering += lap();
 
     // (d2) Each subpatch's certified bound on its own, in parallel.
@@ -113,7 +142,18 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     }
     phase.bounds += lap();
     // Another pass will follow: the mesh of this one is not needed.
-    if (!last && st.above_tolerance > 0) return out;
+    if (!last && st.above_tolerance > 0) {
+        if (memo.keep) {
+            memo.leaf_start = ranges.leaf_start;
+            memo.registry = std::move(reg);
+            memo.rings_kept = graph.points.empty() && graph.alias.empty();
+            if (memo.rings_kept) {
+                memo.rings = std::move(rings);
+                memo.positions = std::move(vr.positions);
+            }
+        }
+        return out;
+    }
 
     // (d3) Normals at the fans' vertices, in parallel.
     const FanNormals normals = fan_normals(patches, out.subpatches, rings, options.threads);

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/first_met.h>
 #include <seamless/tessellate/vertex_numbering.h>
 
 #include <cstdint>
-#include <unordered_map>
 
 namespace seamless {
 namespace {
@@ -39,7 +39,7 @@ void number_one_by_one(const std::vector<Subpatch>& subpatches, const EdgeGraph&
 // uses of the patch-boundary points, a small share of the slots.
 void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
                         const EdgeGraph& graph, int threads, VertexRegistry& vr,
-                        SubpatchRings& rings) {
+                        SubpatchRings& rings, const PreviousRings& previous) {
     const int count = static_cast<int>(subpatches.size());
     const int np = static_cast<int>(leaf_start.size()) - 1;
     const std::vector<int>& ring_start = rings.start;
@@ -57,21 +57,44 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
     });
     const auto interior = [&](int j, int patch) { return key[j].kind == 2 && key[j].id == patch; };
     pull_blocks(np, 1, threads, nullptr, [&](int begin, int end) {
-        std::unordered_map<std::uint64_t, int> seen; // (s, t) -> first slot
+        FirstMet<std::uint64_t, MixHash> seen; // (s, t) -> first slot
+        std::vector<int> first_of;             // previous vertex number -> first slot
         for (int p = begin; p < end; ++p) {
-            seen.clear();
-            for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j) {
+            const int j0 = ring_start[leaf_start[p]], j1 = ring_start[leaf_start[p + 1]];
+            const int o = previous.positions ? (*previous.previous_start)[p] : 0;
+            const int n = leaf_start[p + 1] - leaf_start[p];
+            if (previous.positions && (*previous.same)[p] && n > 0) {
+                // The previous pass numbered the same rings: one number per
+                // key, and the patch's interior points were numbered in its
+                // own subpatches, after the centre of the subpatch before.
+                const SubpatchRings& old = *previous.rings;
+                const int lo = o == 0 ? 0 : old.centre[o - 1] + 1;
+                first_of.assign(old.centre[o + n - 1] + 1 - lo, -1);
+                const RingVertex* old_ring = old.vertices.data() + old.start[o] - j0;
+                for (int j = j0; j < j1; ++j) {
+                    if (!interior(j, p)) continue;
+                    int& f = first_of[old_ring[j].vertex - lo];
+                    if (f < 0) f = j;
+                    first[j] = f;
+                }
+                continue;
+            }
+            seen.reset(j1 - j0);
+            for (int j = j0; j < j1; ++j) {
                 if (!interior(j, p)) continue;
                 const std::uint64_t st = (static_cast<std::uint64_t>(key[j].a) << 32) |
                                          static_cast<std::uint32_t>(key[j].b);
-                first[j] = seen.try_emplace(st, j).first->second;
+                first[j] = seen.emplace(st, j);
             }
         }
     });
-    std::unordered_map<VertexKey, int, VertexKeyHash> shared;
+    std::vector<int> shared_slots;
     for (int p = 0; p < np; ++p)
         for (int j = ring_start[leaf_start[p]]; j < ring_start[leaf_start[p + 1]]; ++j)
-            if (!interior(j, p)) first[j] = shared.try_emplace(key[j], j).first->second;
+            if (!interior(j, p)) shared_slots.push_back(j);
+    FirstMet<VertexKey, VertexKeyHash> shared;
+    shared.reset(shared_slots.size());
+    for (int j : shared_slots) first[j] = shared.emplace(key[j], j);
     std::vector<int> base(count + 1, 0);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
@@ -86,11 +109,24 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             int id = base[i];
-            for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
-                if (first[j] == j) {
-                    ring[j].vertex = id;
-                    vr.positions[id++] = exact_position(*vr.patches, *vr.match, key[j]);
-                }
+            const int p = subpatches[i].patch;
+            if (previous.positions && (*previous.same)[p]) {
+                // The same ring, slot by slot, and the same keys.
+                const SubpatchRings& old = *previous.rings;
+                const int o = (*previous.previous_start)[p] + i - leaf_start[p];
+                const RingVertex* old_ring = old.vertices.data() + old.start[o] - ring_start[i];
+                for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                    if (first[j] == j) {
+                        ring[j].vertex = id;
+                        vr.positions[id++] = (*previous.positions)[old_ring[j].vertex];
+                    }
+            } else {
+                for (int j = ring_start[i]; j < ring_start[i + 1]; ++j)
+                    if (first[j] == j) {
+                        ring[j].vertex = id;
+                        vr.positions[id++] = exact_position(*vr.patches, *vr.match, key[j]);
+                    }
+            }
             rings.centre[i] = id;
             vr.positions[id] = rings.centre_point[i];
         }
@@ -105,12 +141,12 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
 } // namespace
 
 void number_vertices(const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
-                     const EdgeGraph& graph, int threads, VertexRegistry& vr,
-                     SubpatchRings& rings) {
+                     const EdgeGraph& graph, int threads, VertexRegistry& vr, SubpatchRings& rings,
+                     const PreviousRings& previous) {
     if (vr.crack_free && vr.straight_segments)
         number_one_by_one(subpatches, graph, vr, rings);
     else
-        number_in_parallel(subpatches, leaf_start, graph, threads, vr, rings);
+        number_in_parallel(subpatches, leaf_start, graph, threads, vr, rings, previous);
 }
 
 } // namespace seamless

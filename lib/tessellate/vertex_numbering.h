@@ -16,7 +16,11 @@ namespace seamless {
 // straight segments one by one (a vertex on a straight segment places the
 // segment's ends first); otherwise in parallel, the same numbers.
 // `leaf_start`: where each patch's subpatches start (one more entry: the end).
+// Without straight segments, the vertices of subpatches whose rings are a
+// previous pass's (`previous`, with positions) take its positions: each is
+// the exact point of the same key.
 void number_vertices(const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
-                     const EdgeGraph& graph, int threads, VertexRegistry& vr, SubpatchRings& rings);
+                     const EdgeGraph& graph, int threads, VertexRegistry& vr, SubpatchRings& rings,
+                     const PreviousRings& previous = {});
 
 } // namespace seamless

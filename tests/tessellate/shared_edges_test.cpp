@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Shared boundaries and the crack-free vertex rule (paper section 6, Fig. 3).
+#include "tessellate/teapot_pass.h"
 #include "test_util.h"
 
 #include <seamless/model/model.h>
@@ -7,6 +8,10 @@
 #include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <vector>
 
 using namespace seamless;
 
@@ -93,5 +98,91 @@ TEST_CASE("vertices inside a coarse side lie on its straight segment (Q0 = (Q1+Q
             }
         CHECK(found);
         if (v > 200) break;
+    }
+}
+
+namespace {
+
+// The segments of the line a side lies on, as a set (line numbers aside).
+std::vector<std::array<int, 3>> segments_of(const EdgeRegistry& reg, int line) {
+    std::vector<std::array<int, 3>> out;
+    for (int i = reg.offsets[line]; i < reg.offsets[line + 1]; ++i)
+        out.push_back({reg.segments[i].side, reg.segments[i].a, reg.segments[i].b});
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("the edge registry is the same for any thread count and subpatch order",
+          "[shared_edges]") {
+    const test::TeapotPass in;
+    const auto& t = in.t;
+    const auto& bm = in.match;
+    const EdgeRegistry one = build_edge_registry(bm, t.subpatches, 1);
+    const EdgeRegistry two = build_edge_registry(bm, t.subpatches, 2);
+    CHECK(one.offsets == two.offsets);
+    CHECK(one.interior_keys == two.interior_keys);
+    CHECK(one.interior_lines == two.interior_lines);
+    REQUIRE(one.segments.size() == two.segments.size());
+    for (size_t i = 0; i < one.segments.size(); ++i) {
+        CHECK(one.segments[i].a == two.segments[i].a);
+        CHECK(one.segments[i].b == two.segments[i].b);
+        CHECK(one.segments[i].side == two.segments[i].side);
+    }
+    // Subpatches in reverse order (patches interleaved with nothing in order):
+    // every side on the same line content, found by side_on_line too.
+    std::vector<Subpatch> reversed(t.subpatches.rbegin(), t.subpatches.rend());
+    const EdgeRegistry rev = build_edge_registry(bm, reversed, 2);
+    REQUIRE(one.sides.size() == 4 * t.subpatches.size());
+    REQUIRE(rev.sides.size() == one.sides.size());
+    const size_t n = t.subpatches.size();
+    for (size_t i = 0; i < n; ++i) {
+        const Subpatch& sp = t.subpatches[i];
+        for (int k = 0; k < 4; ++k) {
+            const SideOnLine& a = one.sides[4 * i + k];
+            const SideOnLine& b = rev.sides[4 * (n - 1 - i) + k];
+            const SideOnLine c = side_on_line(one, bm, sp.patch, sp.rect, k);
+            CHECK(a.line == c.line);
+            CHECK((a.a == b.a && a.b == b.b && a.side == b.side && a.reversed == b.reversed));
+            CHECK((a.line < 0) == (b.line < 0));
+            if (a.line < 0) continue;
+            CHECK((a.line < one.boundary_lines) == (b.line < rev.boundary_lines));
+            CHECK(segments_of(one, a.line) == segments_of(rev, b.line));
+            // The side is one of its line's segments.
+            const auto segs = segments_of(one, a.line);
+            CHECK(std::find(segs.begin(), segs.end(), std::array<int, 3>{a.side, a.a, a.b}) !=
+                  segs.end());
+        }
+    }
+}
+
+TEST_CASE("a registry taking patches from a previous pass's is the registry built afresh",
+          "[shared_edges]") {
+    const test::TeapotPass in;
+    const EdgeRegistry& fresh = in.reg;
+    const int np = static_cast<int>(in.patches.size());
+    for (int every : {1, 2, 5}) {
+        std::vector<char> same(np, 0);
+        for (int p = 0; p < np; p += every) same[p] = 1;
+        const PreviousRegistry previous{&fresh, &in.leaf_start, &same};
+        for (int threads : {1, 2}) {
+            const EdgeRegistry again =
+                build_edge_registry(in.match, in.t.subpatches, threads, previous);
+            CHECK(again.offsets == fresh.offsets);
+            CHECK(again.interior_keys == fresh.interior_keys);
+            CHECK(again.interior_lines == fresh.interior_lines);
+            REQUIRE(again.segments.size() == fresh.segments.size());
+            for (size_t i = 0; i < fresh.segments.size(); ++i)
+                CHECK((again.segments[i].a == fresh.segments[i].a &&
+                       again.segments[i].b == fresh.segments[i].b &&
+                       again.segments[i].side == fresh.segments[i].side));
+            REQUIRE(again.sides.size() == fresh.sides.size());
+            for (size_t i = 0; i < fresh.sides.size(); ++i)
+                CHECK((again.sides[i].line == fresh.sides[i].line &&
+                       again.sides[i].a == fresh.sides[i].a &&
+                       again.sides[i].b == fresh.sides[i].b &&
+                       again.sides[i].side == fresh.sides[i].side &&
+                       again.sides[i].reversed == fresh.sides[i].reversed));
+        }
     }
 }

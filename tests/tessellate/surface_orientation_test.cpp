@@ -85,3 +85,26 @@ TEST_CASE("surface orientation: flipped triangles keep corner normals and uvs wi
     }
     CHECK(disagree == 0);
 }
+
+TEST_CASE("surface orientation: the same flips for any thread count", "[tessellate][orientation]") {
+    // Faces reversed, and an open box (a face left out: its rim edges used once).
+    for (bool open : {false, true}) {
+        std::vector<BSplineSurface> f = bulged_box_faces();
+        f[1] = reverse(f[1], 0);
+        f[4] = reverse(f[4], 0);
+        if (open) f.pop_back();
+        TessellationOptions o;
+        o.orient_surfaces = false;
+        const Tessellation t = tessellate(model_of(f, "box"), o);
+        TriangleMesh one = t.mesh;
+        const OrientationResult r1 = orient_surfaces(one, 1);
+        CHECK(r1.flipped_surfaces > 0);
+        for (int threads : {2, 3}) {
+            TriangleMesh m = t.mesh;
+            const OrientationResult r = orient_surfaces(m, threads);
+            CHECK(r.flipped_surfaces == r1.flipped_surfaces);
+            CHECK(r.conflicts == r1.conflicts);
+            CHECK(m.triangles == one.triangles);
+        }
+    }
+}
