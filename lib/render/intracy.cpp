@@ -413,7 +413,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
         ts = std::make_unique<TriangleScene>(build_triangle_scene(scene));
         st.triangles = ts->tess.mesh.triangle_count();
         neighbours = triangle_neighbours(ts->tess.mesh.triangles);
-        add_light_planes(scene, *ts);
+        add_light_planes(scene, *ts, opt.threads);
     }
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

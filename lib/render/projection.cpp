@@ -42,8 +42,6 @@ ProjectedScene project_scene(const Scene& scene, int width, int height, int thre
     ps.lighting.levels = scene.levels;
     for (const Light& l : scene.lights)
         if (l.on()) ps.lighting.lights.push_back({ps.frame.to_camera(l.position), l.color});
-    // World-space forms only for SHADE's light and secondary clusters.
-    const bool world = needs_secondary_rays(scene);
     std::vector<BezierPatch> patches;
     std::vector<int> surface;
     for (size_t k = 0; k < scene.model.surfaces.size(); ++k)
@@ -57,10 +55,6 @@ ProjectedScene project_scene(const Scene& scene, int width, int height, int thre
     for_each_item(static_cast<int>(patches.size()), threads, [&](int i) {
         ProjectedPatch& pp = ps.patches[i];
         BezierPatch& b = patches[i];
-        if (world) {
-            patch_forms(b, pp.world);
-            pp.has_world = true;
-        }
         for (int u = 0; u <= b.p; ++u)
             for (int v = 0; v <= b.q; ++v) b.at(u, v) = ps.frame.to_camera(b.at(u, v));
         set_camera_patch(pp, b);

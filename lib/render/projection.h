@@ -17,12 +17,7 @@ namespace seamless {
 struct ProjectedPatch {
     BezierPatch patch; // homogeneous control points in camera coordinates
     PatchForms forms;  // power forms of `patch` (section 4)
-    PatchForms world;  // power forms of the patch in world coordinates (SHADE's
-                       // light and secondary clusters: a world box of points
-                       // straight from them, not a rotated camera box); only
-                       // when the scene needs them (needs_secondary_rays)
-    bool has_world = false;
-    IVec3 hull; // enclosure of the whole patch, camera coordinates
+    IVec3 hull;        // enclosure of the whole patch, camera coordinates
     // Upper bounds on |d X_k / ds| and |d X_k / dt| over [0,1]^2, k = 0..3 (the
     // sums of the magnitudes of forms.Xs's and forms.Xt's coefficients, rounded
     // up): the mean value form of a single ray's hit depth (pixel_solve.cpp).

@@ -2,6 +2,7 @@
 #include <seamless/render/trace.h>
 
 #include <seamless/render/optics.h>
+#include <seamless/render/parallel.h>
 #include <seamless/render/ray_triangle.h>
 #include <seamless/render/shading.h>
 
@@ -121,17 +122,22 @@ TriangleScene build_triangle_scene(const Scene& scene) {
     return ts;
 }
 
-void add_light_planes(const Scene& scene, TriangleScene& ts) {
+void add_light_planes(const Scene& scene, TriangleScene& ts, int threads) {
     const TriangleMesh& mesh = ts.tess.mesh;
     const size_t F = static_cast<size_t>(mesh.triangle_count());
     ts.light_planes.resize(scene.lights.size() * F);
-    for (size_t l = 0; l < scene.lights.size(); ++l)
-        for (size_t f = 0; f < F; ++f) {
+    // Blocks of triangles in parallel: each writes its own entries.
+    constexpr size_t kBlock = 1024;
+    const size_t blocks = (F + kBlock - 1) / kBlock;
+    for_each_item(static_cast<int>(scene.lights.size() * blocks), threads, [&](int item) {
+        const size_t l = static_cast<size_t>(item) / blocks, b = static_cast<size_t>(item) % blocks;
+        for (size_t f = b * kBlock; f < std::min(F, (b + 1) * kBlock); ++f) {
             const auto& tri = mesh.triangles[f];
             ts.light_planes[l * F + f] =
                 apex_triangle(scene.lights[l].position, mesh.positions[tri[0]],
                               mesh.positions[tri[1]], mesh.positions[tri[2]]);
         }
+    });
 }
 
 bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVec<3>& ends, int f) {

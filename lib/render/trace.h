@@ -43,8 +43,9 @@ struct TriangleScene {
     std::vector<ApexTriangle> light_planes;
 };
 
-// Forms ts.light_planes for the scene's lights (INTRACY, once per render).
-void add_light_planes(const Scene& scene, TriangleScene& ts);
+// Forms ts.light_planes for the scene's lights (INTRACY, once per render), on
+// `threads` workers (render.h's RenderOptions::threads; the same planes on any).
+void add_light_planes(const Scene& scene, TriangleScene& ts, int threads);
 
 // pyramid_may_meet_triangle from light l (at `apex`, scene.lights[l].position)
 // over the box `ends` against triangle f, with ts.light_planes when formed.

@@ -13,6 +13,7 @@
 
 #include "test_util.h"
 
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -25,8 +26,16 @@ TEST_CASE("A light certified for a box of hit points reaches every point of the 
     // The light planes formed once per render (add_light_planes) decide as
     // the planes formed per test.
     TriangleScene tp = ts;
-    add_light_planes(scene, tp);
+    add_light_planes(scene, tp, 1);
     REQUIRE(tp.light_planes.size() == scene.lights.size() * ts.tess.mesh.triangles.size());
+    {
+        // The same planes, bit for bit, when formed on two threads.
+        TriangleScene t2 = ts;
+        add_light_planes(scene, t2, 2);
+        REQUIRE(t2.light_planes.size() == tp.light_planes.size());
+        CHECK(std::memcmp(t2.light_planes.data(), tp.light_planes.data(),
+                          tp.light_planes.size() * sizeof(ApexTriangle)) == 0);
+    }
     Camera cam = scene.camera;
     cam.width = 160;
     cam.height = 120;

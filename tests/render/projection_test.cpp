@@ -59,7 +59,6 @@ TEST_CASE("project_scene: the same patches on 1 and 2 threads, forms as patch_fo
                 world.push_back(b);
         REQUIRE(one.patches.size() == world.size());
         REQUIRE(two.patches.size() == world.size());
-        const bool secondary = needs_secondary_rays(scene);
         for (size_t k = 0; k < world.size(); ++k) {
             const ProjectedPatch &p = one.patches[k], &q = two.patches[k];
             for (int i = 0; i <= p.patch.p; ++i)
@@ -71,12 +70,6 @@ TEST_CASE("project_scene: the same patches on 1 and 2 threads, forms as patch_fo
                     }
             check_same_forms(p.forms, q.forms);
             check_same_forms(p.forms, patch_forms(p.patch));
-            CHECK(p.has_world == secondary);
-            CHECK(q.has_world == secondary);
-            if (secondary) {
-                check_same_forms(p.world, q.world);
-                check_same_forms(p.world, patch_forms(world[k]));
-            }
             for (int c = 0; c < 3; ++c) CHECK(same(p.hull[c], q.hull[c]));
             for (int c = 0; c < 4; ++c) {
                 CHECK(p.slope_s[c] == q.slope_s[c]);
