@@ -4,6 +4,7 @@
 // (at most half full), linear probing. The storage is kept across reset().
 #pragma once
 
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -19,12 +20,19 @@ template <class Key, class Hash> class FirstMet {
         mask_ = size - 1;
         keys_.resize(size);
         values_.assign(size, -1);
+        used_ = 0;
     }
     // The value stored with `key`; stores `value` (>= 0) when the key is new.
     int emplace(const Key& key, int value) {
         std::size_t h = Hash{}(key)&mask_;
         while (values_[h] >= 0 && !(keys_[h] == key)) h = (h + 1) & mask_;
-        if (values_[h] < 0) keys_[h] = key, values_[h] = value;
+        if (values_[h] < 0) {
+            // More keys than reset() made room for would fill the table and
+            // the probe above would never end: the caller's count is wrong.
+            assert(used_ < mask_ / 2 + 1);
+            keys_[h] = key, values_[h] = value;
+            ++used_;
+        }
         return values_[h];
     }
 
@@ -32,6 +40,7 @@ template <class Key, class Hash> class FirstMet {
     std::vector<Key> keys_;
     std::vector<int> values_;
     std::size_t mask_ = 0;
+    std::size_t used_ = 0;
 };
 
 // A 64-bit key's hash for FirstMet (Fibonacci hashing, high bits folded in).
