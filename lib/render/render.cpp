@@ -80,7 +80,7 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
     // Secondary rays go against the triangles, as in INTRACY and TRAY.
     std::unique_ptr<TriangleScene> ts;
     if (needs_secondary_rays(scene)) {
-        ts = std::make_unique<TriangleScene>(build_triangle_scene(scene));
+        ts = std::make_unique<TriangleScene>(build_triangle_scene(scene, opt.threads));
         st.triangles = ts->tess.mesh.triangle_count();
     }
     Image image(W, H, L);

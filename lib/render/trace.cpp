@@ -2,7 +2,6 @@
 #include <seamless/render/trace.h>
 
 #include <seamless/render/optics.h>
-#include <seamless/render/parallel.h>
 #include <seamless/render/ray_triangle.h>
 #include <seamless/render/shading.h>
 
@@ -98,7 +97,7 @@ bool needs_secondary_rays(const Scene& scene) {
     return false;
 }
 
-TriangleScene build_triangle_scene(const Scene& scene) {
+TriangleScene build_triangle_scene(const Scene& scene, int threads) {
     TriangleScene ts;
     // The renderers shade with the surfaces' own normals (INTRACY on the
     // patches, TRAY on the triangles' corner normals): keep every surface's side.
@@ -106,6 +105,7 @@ TriangleScene build_triangle_scene(const Scene& scene) {
     to.orient_surfaces = false;
     // Nothing here reads the certified bound of the triangles (error_bound.h).
     to.certify = false;
+    to.threads = threads;
     ts.tess = tessellate(scene.model, to);
     const TriangleMesh& mesh = ts.tess.mesh;
     const int F = mesh.triangle_count();
@@ -122,33 +122,21 @@ TriangleScene build_triangle_scene(const Scene& scene) {
     return ts;
 }
 
-void add_light_planes(const Scene& scene, TriangleScene& ts, int threads) {
-    const TriangleMesh& mesh = ts.tess.mesh;
-    const size_t F = static_cast<size_t>(mesh.triangle_count());
-    ts.light_planes.resize(scene.lights.size() * F);
-    // Blocks of triangles in parallel: each writes its own entries.
-    constexpr size_t kBlock = 1024;
-    const size_t blocks = (F + kBlock - 1) / kBlock;
-    for_each_item(static_cast<int>(scene.lights.size() * blocks), threads, [&](int item) {
-        const size_t l = static_cast<size_t>(item) / blocks, b = static_cast<size_t>(item) % blocks;
-        for (size_t f = b * kBlock; f < std::min(F, (b + 1) * kBlock); ++f) {
-            const auto& tri = mesh.triangles[f];
-            ts.light_planes[l * F + f] =
-                apex_triangle(scene.lights[l].position, mesh.positions[tri[0]],
-                              mesh.positions[tri[1]], mesh.positions[tri[2]]);
-        }
-    });
+void add_light_planes(const Scene& scene, TriangleScene& ts) {
+    ts.light_planes.reset(scene.lights.size(), static_cast<size_t>(ts.tess.mesh.triangle_count()));
 }
 
 bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVec<3>& ends, int f) {
     const TriangleMesh& mesh = ts.tess.mesh;
-    const size_t F = static_cast<size_t>(mesh.triangle_count());
+    const auto& tri = mesh.triangles[f];
     if (!ts.light_planes.empty()) {
-        const ApexTriangle& p = ts.light_planes[static_cast<size_t>(l) * F + f];
+        ApexTriangle scratch;
+        const ApexTriangle& p = ts.light_planes.get(
+            static_cast<size_t>(l), static_cast<size_t>(f), apex, mesh.positions[tri[0]],
+            mesh.positions[tri[1]], mesh.positions[tri[2]], scratch);
         assert(p.apex == apex);
         return pyramid_may_meet_triangle(p, ends);
     }
-    const auto& tri = mesh.triangles[f];
     return pyramid_may_meet_triangle(apex, ends, mesh.positions[tri[0]], mesh.positions[tri[1]],
                                      mesh.positions[tri[2]]);
 }

@@ -8,6 +8,7 @@
 
 #include <seamless/base/vec.h>
 #include <seamless/render/flat_patch_trees.h>
+#include <seamless/render/light_planes.h>
 #include <seamless/render/ray_cluster.h>
 #include <seamless/render/root_hierarchy.h>
 #include <seamless/render/scene.h>
@@ -38,14 +39,15 @@ struct TriangleScene {
     // that rounding never lets a ray meet the triangles it leaves from.
     // build_triangle_scene sets 1e-6 d_max.
     double ray_epsilon = 0;
-    // apex_triangle(light l, triangle f) at [l * triangle_count + f] for the
-    // shadow pyramids of SHADE step 2 (add_light_planes); empty: not formed.
-    std::vector<ApexTriangle> light_planes;
+    // apex_triangle(light l, triangle f) for the shadow pyramids of SHADE
+    // step 2, formed on first use (light_planes.h; add_light_planes); empty:
+    // none kept, each test forms its own.
+    LightPlanes light_planes;
 };
 
-// Forms ts.light_planes for the scene's lights (INTRACY, once per render), on
-// `threads` workers (render.h's RenderOptions::threads; the same planes on any).
-void add_light_planes(const Scene& scene, TriangleScene& ts, int threads);
+// Makes room in ts.light_planes for the scene's lights (INTRACY, once per
+// render); the planes are formed as the render first needs them.
+void add_light_planes(const Scene& scene, TriangleScene& ts);
 
 // pyramid_may_meet_triangle from light l (at `apex`, scene.lights[l].position)
 // over the box `ends` against triangle f, with ts.light_planes when formed.
@@ -56,8 +58,9 @@ bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVe
 // material that reflects or transmits. Without them no triangles are built.
 bool needs_secondary_rays(const Scene& scene);
 
-// tessellate(scene.model) with the default tolerances (section 8).
-TriangleScene build_triangle_scene(const Scene& scene);
+// tessellate(scene.model) with the default tolerances (section 8), on
+// `threads` workers (0: every core; the same triangles on any).
+TriangleScene build_triangle_scene(const Scene& scene, int threads = 0);
 
 struct TraceHit {
     int triangle = -1;

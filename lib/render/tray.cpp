@@ -36,7 +36,7 @@ Image render_tray(const Scene& scene, const RenderOptions& opt, RenderStats& st)
     // Precalculation (INTRACY step 1 / Table 1): the paper's default tolerances,
     // eps from d_max of the whole scene.
     const auto t0 = std::chrono::steady_clock::now();
-    const TriangleScene ts = build_triangle_scene(scene);
+    const TriangleScene ts = build_triangle_scene(scene, opt.threads);
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     st.patches = static_cast<long long>(ts.tess.trees.roots.size());

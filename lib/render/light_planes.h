@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// The planes of the shadow pyramids of SHADE step 2 (paper section 7; the
+// pyramid from a light over a box of points against a triangle, ray_cluster.h's
+// ApexTriangle), per light and triangle, formed on first use and kept for the
+// rest of the render. A render uses a fraction of them (the teapot scene at
+// 640x480: about a quarter of its 6,998), so forming all up front cost more
+// than it saved ("leave out what a given scene does not need").
+// Threads may ask for the same plane at once: each forms it (a pure function
+// of the light and the triangle's corners, so the same bits either way), the
+// first to claim the entry stores it, the others use their own copy. The
+// answers of pyramid_may_meet_triangle do not depend on the thread count.
+#pragma once
+
+#include <seamless/base/vec.h>
+#include <seamless/render/ray_cluster.h>
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace seamless {
+
+class LightPlanes {
+  public:
+    LightPlanes() = default;
+    LightPlanes(const LightPlanes& o) { *this = o; }
+    LightPlanes& operator=(const LightPlanes& o);
+    LightPlanes(LightPlanes&&) = default;
+    LightPlanes& operator=(LightPlanes&&) = default;
+
+    // Room for `lights` x `triangles` planes, none formed yet.
+    void reset(std::size_t lights, std::size_t triangles);
+    bool empty() const { return count_ == 0; }
+    std::size_t size() const { return count_; }
+    // Planes formed so far (for tests and --stats).
+    std::size_t formed() const;
+
+    // apex_triangle(apex, T1, T2, T3) of light l and triangle f (apex: light
+    // l's position, T: triangle f's corners); `scratch` holds it when another
+    // thread is storing the entry.
+    const ApexTriangle& get(std::size_t l, std::size_t f, Vec3 apex, Vec3 T1, Vec3 T2, Vec3 T3,
+                            ApexTriangle& scratch) const;
+
+  private:
+    std::size_t triangles_ = 0, count_ = 0;
+    // state_[i]: 0 not formed, 1 being stored, 2 formed (planes_[i] valid).
+    mutable std::unique_ptr<ApexTriangle[]> planes_;
+    mutable std::unique_ptr<std::atomic<unsigned char>[]> state_;
+};
+
+} // namespace seamless
