@@ -16,7 +16,7 @@ bool CertifiedPixels::newton(const BezierPatch& patch, double a, double b, const
         double step = 0;
         if (!newton_step(sp, a, b, s, t, step)) return false;
         if (!box.s.contains(s) || !box.t.contains(t)) return false;
-        if (step < 1e-12) return true;
+        if (step < kConverged) return true;
         sp = evaluate(patch, s, t);
     }
     return false;
