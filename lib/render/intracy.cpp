@@ -22,6 +22,9 @@
 //          patch certified to cover B (Theorem 6 iii for every ray of B at
 //          once), SHADE's intensity enclosure, and B painted where it holds at
 //          most two levels (bilinear form of the corner intensities, remark 2);
+//          where step 7 holds but SHADE (a light) or step 9 (span) fails, a B
+//          up to a size is painted one ray per pixel from that certificate
+//          (certified_pixels.h) instead of split;
 //  step 10: otherwise B is split into four (remark 3), or two, and pushed;
 //          children of a B whose step 9 failed by far skip steps 7-9.
 // Background is never painted where a patch is hit.
