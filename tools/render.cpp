@@ -21,8 +21,10 @@ namespace seamless::cli {
 nlohmann::json split_causes_json(const RenderStats& st) {
     nlohmann::json j = nlohmann::json::object();
     for (int i = 0; i < RenderStats::split_causes; ++i)
-        j[RenderStats::split_cause_names[i]] = {{"attempts_failed", st.attempts_failed[i]},
-                                                {"single_pixels", st.single_pixels_by_cause[i]}};
+        j[RenderStats::split_cause_names[i]] = {
+            {"attempts_failed", st.attempts_failed[i]},
+            {"single_pixels", st.single_pixels_by_cause[i]},
+            {"certified_pixels", st.certified_pixels_by_cause[i]}};
     return j;
 }
 
@@ -67,7 +69,9 @@ nlohmann::json stats_json(const RenderStats& st) {
               {"certificate", st.certify_seconds},
               {"shade", st.shade_seconds},
               {"secondary_clusters", st.secondary_seconds},
-              {"single_pixels", st.single_pixel_seconds}}}};
+              {"single_pixels", st.single_pixel_seconds},
+              {"certified_pixels", st.certified_pixel_seconds}}},
+            {"certified_pixel_fallbacks", st.certified_pixel_fallbacks}};
 }
 
 void add_render(CLI::App& app, Action& action) {

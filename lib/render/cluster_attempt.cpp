@@ -247,15 +247,19 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
     }
     const StepClock shading(st.shade_seconds);
     const Mark m{best_patch, box, {}};
+    // From here on step 7 holds for B: a failure says so (certified_pixels.h).
+    auto proven = [&](int cause) {
+        return ClusterAttemptResult{cause, levels_over, true, best_patch, box};
+    };
     // Step 8: SHADE (cluster_shade.h).
     const ClusterShading cs = shader_.enclose_intensity(best_patch, e, world, st);
-    if (!cs.decided) return {RenderStats::light, levels_over};
+    if (!cs.decided) return proven(RenderStats::light);
     const auto& I = cs.I;
     const bool secondary = cs.secondary, shadowed = cs.shadowed;
     int lo[3], hi[3];
     bool two = false;
     for (int c = 0; c < 3; ++c) {
-        if (!I[c].is_finite()) return {RenderStats::span, levels_over};
+        if (!I[c].is_finite()) return proven(RenderStats::span);
         lo[c] = quantise(I[c].lo(), levels_);
         hi[c] = quantise(I[c].hi(), levels_);
         levels_over = std::max(levels_over, hi[c] - lo[c]);
@@ -271,7 +275,7 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
     std::array<double, 3> corner[4];
     if (span) {
         const long long area = pixel_count(B);
-        if (secondary || area < kSecondOrderArea) return {RenderStats::span, levels_over};
+        if (secondary || area < kSecondOrderArea) return proven(RenderStats::span);
         ++st.second_order_attempts;
         const double ca[2] = {ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_a(B.x1 + 0.5)};
         const double cb[2] = {ps_.frame.screen_b(B.y0 + 0.5), ps_.frame.screen_b(B.y1 + 0.5)};
@@ -281,7 +285,7 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
         if (!so.paint) {
             // Halving B quarters the bound: children may pass where B failed.
             if (so.error_levels < 4 * (dither_ ? 0.5 : 1.0)) levels_over = 0;
-            return {RenderStats::span, levels_over};
+            return proven(RenderStats::span);
         }
         ++st.second_order_painted;
         st.second_order_pixels += area;

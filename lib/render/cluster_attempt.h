@@ -56,6 +56,11 @@ struct PixelRect {
 struct ClusterAttemptResult {
     int cause = -1;      // -1: B was painted; else why not (RenderStats::SplitCause)
     int levels_over = 0; // step 9's widest enclosure in levels (0: not reached)
+    // Step 7 proven, B not painted (cause light or span): every ray of B hits
+    // `patch` exactly once in `box` and nothing nearer (certified_pixels.h).
+    bool proven = false;
+    int patch = -1;
+    ParamBox box{};
 };
 
 class ClusterAttempt {

@@ -22,9 +22,13 @@
 //          patch certified to cover B (Theorem 6 iii for every ray of B at
 //          once), SHADE's intensity enclosure, and B painted where it holds at
 //          most two levels (bilinear form of the corner intensities, remark 2);
+//          where step 7 holds but SHADE (a light) or step 9 (span) fails, a B
+//          up to a size is painted one ray per pixel from that certificate
+//          (certified_pixels.h) instead of split;
 //  step 10: otherwise B is split into four (remark 3), or two, and pushed;
 //          children of a B whose step 9 failed by far skip steps 7-9.
 // Background is never painted where a patch is hit.
+#include <seamless/render/certified_pixels.h>
 #include <seamless/render/cluster_attempt.h>
 #include <seamless/render/mark.h>
 #include <seamless/render/parallel.h>
@@ -72,7 +76,8 @@ class PartRenderer {
                  const std::vector<int>* neighbours, const RenderOptions& opt, Image& image,
                  int levels)
         : ps_(ps), scene_(scene), ts_(ts), opt_(opt), image_(image), levels_(levels),
-          attempt_(ps, scene, ts, neighbours, opt, image, levels) {
+          attempt_(ps, scene, ts, neighbours, opt, image, levels),
+          certified_(ps, scene, ts, image, levels) {
         const Vec3 bg = ps.lighting.background;
         for (int c = 0; c < 3; ++c) bg_[c] = static_cast<std::uint16_t>(quantise(bg[c], levels));
     }
@@ -101,8 +106,9 @@ class PartRenderer {
         st.range_enclosures += range_enclosure_count() - enclosures0;
         st.shade_seconds -= st.secondary_seconds; // reported apart
         const double f = cpu.factor();
-        for (double* x : {&st.narrow_seconds, &st.certify_seconds, &st.shade_seconds,
-                          &st.secondary_seconds, &st.single_pixel_seconds})
+        for (double* x :
+             {&st.narrow_seconds, &st.certify_seconds, &st.shade_seconds, &st.secondary_seconds,
+              &st.single_pixel_seconds, &st.certified_pixel_seconds})
             *x *= f;
     }
 
@@ -120,14 +126,14 @@ class PartRenderer {
                 for (int c = 0; c < 3; ++c) image_.at(x, y, c) = bg_[c];
         st.background_pixels += static_cast<long long>(x1 - x0 + 1) * (y1 - y0 + 1);
     }
-    void count(const SubScreen& B, RenderStats& st) {
-        ++st.subscreens_by_size[static_cast<long long>(B.x1 - B.x0 + 1) * (B.y1 - B.y0 + 1)];
+    static long long pixel_count(const SubScreen& B) {
+        return static_cast<long long>(B.x1 - B.x0 + 1) * (B.y1 - B.y0 + 1);
     }
+    void count(const SubScreen& B, RenderStats& st) { ++st.subscreens_by_size[pixel_count(B)]; }
 
     void step(SubScreen B, RenderStats& st) {
         const bool thin = B.x0 == B.x1 && B.y0 == B.y1;
-        const long long area = static_cast<long long>(B.x1 - B.x0 + 1) * (B.y1 - B.y0 + 1);
-        if (!thin && area <= opt_.pixel_subscreen) {
+        if (!thin && pixel_count(B) <= opt_.pixel_subscreen) {
             paint_pixels(B, st);
             return;
         }
@@ -205,13 +211,18 @@ class PartRenderer {
             const ClusterAttemptResult r = attempt_.try_paint(
                 {B.x0, B.y0, B.x1, B.y1}, &arena_[first], nmarks, coefs_, pixel_, st);
             if (r.cause < 0) return;
+            if (r.proven && fill(r, pixel_count(B))) {
+                ++st.attempts_failed[r.cause];
+                certified_.paint({B.x0, B.y0, B.x1, B.y1}, r, &arena_[first], nmarks, pixel_, st);
+                return;
+            }
             cause = r.cause;
             levels_over = r.levels_over;
             ++st.attempts_failed[cause];
         }
         // Step 9 failed by far: the children's enclosures (about half as wide)
         // would fail too; they split at once and their children try again.
-        const bool kids_attempt = levels_over <= 2 * ((opt_.dither ? 1 : 0) + 1);
+        const bool kids_attempt = children_attempt(levels_over);
         // Step 10: split into four while possible (remark 3), else two.
         const int w = B.x1 - B.x0 + 1, h = B.y1 - B.y0 + 1;
         const int xm = B.x0 + w / 2 - 1, ym = B.y0 + h / 2 - 1;
@@ -241,6 +252,21 @@ class PartRenderer {
         // All children share one mark list: a child's processing truncates the
         // arena to offset+count before appending, so the list survives for the next.
         for (int i = nk - 1; i >= 0; --i) stack_.push_back(kids[i]);
+    }
+
+    // Where step 7 holds for B but SHADE (light) or step 9 (span) failed:
+    // paint B from the certificate (certified_pixels.h) rather than split it,
+    // up to kFillLight or kFillSpan pixels; a B whose step 9 failed by far
+    // (its children would split at once) at any size. Larger B split: their
+    // children may pass as clusters (sizes chosen by callgrind counts on the
+    // teapot and scenes 2, 3; bench/render/render_assessment.md, eighth round).
+    bool fill(const ClusterAttemptResult& r, long long area) const {
+        if (!opt_.certified_pixels) return false;
+        if (r.cause == RenderStats::light) return area <= kFillLight;
+        return area <= kFillSpan || !children_attempt(r.levels_over);
+    }
+    bool children_attempt(int levels_over) const {
+        return levels_over <= 2 * ((opt_.dither ? 1 : 0) + 1);
     }
 
     // A small B is solved pixel by pixel from its marks (those of its parent),
@@ -385,6 +411,7 @@ class PartRenderer {
     int levels_;
     std::uint16_t bg_[3];
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
+    static constexpr long long kFillLight = 1280, kFillSpan = 320; // fill(): pixels of B
     std::vector<Mark> arena_, work_;
     SubpatchArena coefs_; // the marks' subpatches
     std::vector<SubScreen> stack_;
@@ -394,6 +421,7 @@ class PartRenderer {
     std::vector<char> lit_;        // share_lights: per hits_ index (a group's first), per light
     std::vector<int> light_hints_; // share_lights: per light, the last triangle that may block it
     ClusterAttempt attempt_;       // steps 7 to 9
+    CertifiedPixels certified_;    // B certified at step 7, failed at 8 or 9
 };
 
 } // namespace

@@ -8,11 +8,7 @@
 #include <limits>
 
 namespace seamless {
-namespace {
 
-// One Newton step for X - aZ = 0, Y - bZ = 0 at (s, t) in doubles.
-// false where the Jacobian is singular.
-// sp: the patch evaluated at (s, t).
 bool newton_step(const SurfacePoint& sp, double a, double b, double& s, double& t, double& step) {
     const double f0 = sp.point.x - a * sp.point.z, f1 = sp.point.y - b * sp.point.z;
     const double j00 = sp.du.x - a * sp.du.z, j01 = sp.dv.x - a * sp.dv.z;
@@ -25,6 +21,9 @@ bool newton_step(const SurfacePoint& sp, double a, double b, double& s, double& 
     step = std::abs(ds) + std::abs(dt);
     return std::isfinite(step);
 }
+
+namespace {
+
 bool newton_step(const BezierPatch& p, double a, double b, double& s, double& t, double& step) {
     return newton_step(evaluate(p, s, t), a, b, s, t, step);
 }

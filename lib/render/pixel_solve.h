@@ -186,6 +186,10 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
 // its intensity only steers the bilinear form of step 9, whose levels are
 // clamped to the certified enclosure, so plain Newton in doubles suffices.
 // false when it does not converge inside the box.
+// One Newton step for X - aZ = 0, Y - bZ = 0 from (s, t) in doubles, sp: the
+// patch evaluated at (s, t); step: |ds| + |dt|. false where the Jacobian is singular.
+bool newton_step(const SurfacePoint& sp, double a, double b, double& s, double& t, double& step);
+
 bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,
                    double& t);
 

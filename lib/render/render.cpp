@@ -37,9 +37,12 @@ void RenderStats::merge(const RenderStats& o) {
     second_order_attempts += o.second_order_attempts;
     second_order_painted += o.second_order_painted;
     second_order_pixels += o.second_order_pixels;
+    certified_pixel_fallbacks += o.certified_pixel_fallbacks;
+    certified_pixel_seconds += o.certified_pixel_seconds;
     for (int i = 0; i < split_causes; ++i) {
         attempts_failed[i] += o.attempts_failed[i];
         single_pixels_by_cause[i] += o.single_pixels_by_cause[i];
+        certified_pixels_by_cause[i] += o.certified_pixels_by_cause[i];
     }
 }
 

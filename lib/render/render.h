@@ -33,6 +33,10 @@ struct RenderOptions {
     // 8, 16, 20, 80, 300 on the teapot and scene 3 at 640x480x16
     // (bench/render/render_assessment.md, sixth round).
     int pixel_subscreen = 20;
+    // INTRACY: a B whose step 7 certificate holds while SHADE (a light) or
+    // step 9 (span) fails is painted one ray per pixel from the certificate
+    // (certified_pixels.h) instead of split, up to a size; false: always split.
+    bool certified_pixels = true;
     // Called with the fraction done (0..1), from any thread, at most a few hundred times.
     std::function<void(double)> progress;
 };
@@ -94,6 +98,13 @@ struct RenderStats {
     // Step 9's second-order criterion (second_order.h), tried where the plain
     // test failed on span: attempts, sub-screens painted by it, and their pixels.
     long long second_order_attempts = 0, second_order_painted = 0, second_order_pixels = 0;
+    // Pixels of a B whose step 7 certificate held while SHADE or step 9 failed
+    // (cause light or span), painted from the certificate one ray each
+    // (certified_pixels.h): per cause, those whose Newton did not converge in
+    // the certified box (solved as step 6's), and their CPU seconds.
+    std::array<long long, split_causes> certified_pixels_by_cause{};
+    long long certified_pixel_fallbacks = 0;
+    double certified_pixel_seconds = 0;
 
     double single_pixel_fraction() const {
         return width > 0 && height > 0
