@@ -90,9 +90,12 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
         [&](int t) {
             if (ts_->triangle_patch[t] == skip_patch) return;
             const auto& tri = M.triangles[t];
+            const Vec3 T1 = M.positions[tri[0]], T2 = M.positions[tri[1]], T3 = M.positions[tri[2]];
+            // Once some triangle may be met (not step 3.3), only a covering
+            // one matters: the middle ray's test refutes most at once.
+            if (candidates > 0 && !may_cover_triangle(rc, T1, T2, T3)) return;
             Interval q, beta, delta;
-            const TriangleMeeting m = meet_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
-                                                    M.positions[tri[2]], q, &beta, &delta);
+            const TriangleMeeting m = meet_triangle(rc, T1, T2, T3, q, &beta, &delta);
             if (m == TriangleMeeting::miss) return;
             ++candidates;
             if (m == TriangleMeeting::covers && q.lo() * dmin > 2 * ts_->ray_epsilon &&
