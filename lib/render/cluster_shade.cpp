@@ -3,10 +3,12 @@
 
 #include <seamless/render/optics.h>
 #include <seamless/render/ray_cluster.h>
+#include <seamless/render/ray_triangle.h>
 #include <seamless/render/step_clock.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace seamless {
 namespace {
@@ -82,6 +84,10 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
     // q up to diag / |dir| carries every ray across the whole scene.
     rc.q = Interval(0.0, next_up(next_up(scene_diagonal_ / dmin) * 1.001));
     const ClusterHull ch(rc);
+    // The middle ray (midpoint origin and direction): a covering triangle
+    // meets it at q > 2 ray_epsilon / dmin > 0, inside the triangle's box.
+    const TriangleRay middle(Vec3{origin[0].mid(), origin[1].mid(), origin[2].mid()},
+                             Vec3{dir[0].mid(), dir[1].mid(), dir[2].mid()});
     const auto& M = ts_->tess.mesh;
     int cover = -1, candidates = 0;
     Interval cq, cb, cd;
@@ -90,9 +96,18 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
         [&](int t) {
             if (ts_->triangle_patch[t] == skip_patch) return;
             const auto& tri = M.triangles[t];
+            const Vec3 T1 = M.positions[tri[0]], T2 = M.positions[tri[1]], T3 = M.positions[tri[2]];
+            // Once some triangle may be met (not step 3.3), only a covering
+            // one matters: the middle ray's test refutes most at once.
+            if (candidates > 0) {
+                Box3 tb;
+                for (const Vec3& v : {T1, T2, T3}) tb.extend(v);
+                if (!ray_hits_box(middle, tb, std::numeric_limits<double>::infinity()) ||
+                    !may_cover_triangle(rc, T1, T2, T3))
+                    return;
+            }
             Interval q, beta, delta;
-            const TriangleMeeting m = meet_triangle(rc, M.positions[tri[0]], M.positions[tri[1]],
-                                                    M.positions[tri[2]], q, &beta, &delta);
+            const TriangleMeeting m = meet_triangle(rc, T1, T2, T3, q, &beta, &delta);
             if (m == TriangleMeeting::miss) return;
             ++candidates;
             if (m == TriangleMeeting::covers && q.lo() * dmin > 2 * ts_->ray_epsilon &&

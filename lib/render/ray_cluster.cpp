@@ -159,13 +159,48 @@ bool system_covers(const RayCluster& c, const TriangleSystem& sys, Interval& q, 
             if (delta) *delta = h[1];
             return inside;
         }
-        x = intersect(h, x);
-        if (x.is_empty()) return false;
+        const IVec<3> y = intersect(h, x);
+        if (y.is_empty()) return false;
+        // The operator is a function of x: an x it leaves unchanged would give
+        // the same h, which failed, in every remaining step.
+        if (y[0] == x[0] && y[1] == x[1] && y[2] == x[2]) return false;
+        x = y;
     }
     return false;
 }
 
 } // namespace
+
+bool may_cover_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
+    // The ray O + q D meets T1 + beta E1 + delta E2 where (Moller-Trumbore)
+    // beta = S.P / det, delta = D.Q / det with P = D x E2, det = E1.P,
+    // S = O - T1, Q = S x E1; signs are compared instead of dividing.
+    Interval O[3], D[3], E1[3], E2[3], S[3];
+    for (int i = 0; i < 3; ++i) {
+        O[i] = Interval(c.origin[i].mid());
+        D[i] = Interval(c.direction[i].mid());
+        if (!O[i].is_finite() || !D[i].is_finite()) return true;
+        E1[i] = Interval(T2[i]) - Interval(T1[i]);
+        E2[i] = Interval(T3[i]) - Interval(T1[i]);
+        S[i] = O[i] - Interval(T1[i]);
+    }
+    const Interval P[3] = {D[1] * E2[2] - D[2] * E2[1], D[2] * E2[0] - D[0] * E2[2],
+                           D[0] * E2[1] - D[1] * E2[0]};
+    const Interval Q[3] = {S[1] * E1[2] - S[2] * E1[1], S[2] * E1[0] - S[0] * E1[2],
+                           S[0] * E1[1] - S[1] * E1[0]};
+    Interval det = E1[0] * P[0] + E1[1] * P[1] + E1[2] * P[2];
+    Interval a = S[0] * P[0] + S[1] * P[1] + S[2] * P[2];
+    Interval b = D[0] * Q[0] + D[1] * Q[1] + D[2] * Q[2];
+    if (det.hi() < 0) {
+        det = -det;
+        a = -a;
+        b = -b;
+    } else if (!(det.lo() > 0)) {
+        return true; // the ray may be parallel to the triangle's plane
+    }
+    // beta < 0, delta < 0 or beta + delta > 1: the ray misses.
+    return !(a.hi() < 0 || b.hi() < 0 || (a + b - det).lo() > 0);
+}
 
 bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
     return normal_axis_may_meet(c, T1, T2, T3) && system_may_meet(c, TriangleSystem(c, T1, T2, T3));
@@ -181,7 +216,9 @@ TriangleMeeting meet_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, In
     if (!normal_axis_may_meet(c, T1, T2, T3)) return TriangleMeeting::miss;
     const TriangleSystem sys(c, T1, T2, T3);
     if (!system_may_meet(c, sys)) return TriangleMeeting::miss;
-    return system_covers(c, sys, q, beta, delta) ? TriangleMeeting::covers : TriangleMeeting::may;
+    return may_cover_triangle(c, T1, T2, T3) && system_covers(c, sys, q, beta, delta)
+               ? TriangleMeeting::covers
+               : TriangleMeeting::may;
 }
 
 namespace {

@@ -47,6 +47,13 @@ class ClusterHull {
 bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q,
                      Interval* beta = nullptr, Interval* delta = nullptr);
 
+// false when covers_triangle certainly answers false: the cluster's middle ray
+// (midpoint origin, midpoint direction: both in the cluster's boxes) certainly
+// misses the closed triangle (Cramer's rule on Proposition 11's system in
+// interval arithmetic), and a triangle that every ray meets is met by that one.
+// A few interval products, against covers_triangle's Hansen-Sengupta steps.
+bool may_cover_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3);
+
 // false: certainly no ray of the cluster meets the triangle (Proposition 11);
 // true: some ray may meet it.
 bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3);

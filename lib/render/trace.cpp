@@ -220,20 +220,28 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
     // a per-thread scratch, so the hot loop does not allocate, and it is done
     // with before the recursion below reuses it.
     thread_local Scene lighting;
-    // Shadow cache: per thread and light, the triangle that last blocked a
-    // shadow ray (neighbouring pixels are mostly shadowed by the same one).
+    // Shadow cache: per thread, recursion depth and light, the triangle that
+    // last blocked a shadow ray (neighbouring pixels are mostly shadowed by
+    // the same one; per depth, as a pixel's primary and reflected or
+    // refracted hits lie far apart and would evict each other's).
     // Not when ray tests are counted (TRAY's stats): the cache's order depends
     // on how pixels are split between threads, and the counts must not.
     thread_local std::vector<int> blocker;
     thread_local const TriangleScene* blocker_scene = nullptr;
-    if (blocker_scene != &ts || blocker.size() < scene.lights.size()) {
-        blocker.assign(scene.lights.size(), -1);
-        blocker_scene = &ts;
+    int* depth_blocker = nullptr;
+    if (!tests) {
+        const size_t lights = scene.lights.size();
+        const size_t slots = lights * (static_cast<size_t>(std::max(depth, scene.max_depth)) + 1);
+        if (blocker_scene != &ts || blocker.size() < slots) {
+            blocker.assign(slots, -1);
+            blocker_scene = &ts;
+        }
+        depth_blocker = blocker.data() + static_cast<size_t>(depth) * lights;
     }
     lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist, int light) {
         if (lit && lit[light]) return false;
         return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests,
-                       tests ? nullptr : &blocker[light]);
+                       depth_blocker ? depth_blocker + light : nullptr);
     });
     std::array<double, 3> I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);
 

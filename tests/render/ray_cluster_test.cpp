@@ -23,6 +23,21 @@ bool segment_hits(Vec3 O, Vec3 D, double q0, double q1, Vec3 a, Vec3 b, Vec3 c) 
     return u >= 0 && v >= 0 && u + v <= 1 && t >= q0 && t <= q1;
 }
 
+// Wide clusters at random triangles, and narrow ones at a big triangle.
+void mixed_case(std::mt19937& rng, bool wide, Vec3& a, Vec3& b, Vec3& c, RayCluster& cl) {
+    std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.05);
+    a = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{-1, -1, U(rng) * 0.1};
+    b = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{1, -1, U(rng) * 0.1};
+    c = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{0, 1, U(rng) * 0.1};
+    const Vec3 O{U(rng), U(rng), 3}, target{U(rng) * 0.6, U(rng) * 0.6, -1};
+    for (int i = 0; i < 3; ++i) {
+        const double wo = W(rng) * (wide ? 4 : 0.4), wd = W(rng) * (wide ? 4 : 0.4);
+        cl.origin[i] = Interval(O[i] - wo, O[i] + wo);
+        cl.direction[i] = Interval(target[i] - O[i] - wd, target[i] - O[i] + wd);
+    }
+    cl.q = Interval(0.0, 1.0);
+}
+
 } // namespace
 
 TEST_CASE("Clusters declared to miss a triangle have no ray that hits it", "[ray_cluster]") {
@@ -156,22 +171,11 @@ TEST_CASE("A covered cluster has every ray meeting the triangle", "[ray_cluster]
 
 TEST_CASE("meet_triangle answers as may_hit_triangle and covers_triangle", "[ray_cluster]") {
     std::mt19937 rng(17);
-    std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.05);
     int outcome[3] = {0, 0, 0};
     for (int n = 0; n < 3000; ++n) {
-        // Wide clusters at random triangles, and narrow ones at a big triangle.
-        const bool wide = n % 2 == 0;
-        const Vec3 a = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{-1, -1, U(rng) * 0.1},
-                   b = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{1, -1, U(rng) * 0.1},
-                   c = wide ? Vec3{U(rng), U(rng), U(rng)} : Vec3{0, 1, U(rng) * 0.1};
-        const Vec3 O{U(rng), U(rng), 3}, target{U(rng) * 0.6, U(rng) * 0.6, -1};
+        Vec3 a, b, c;
         RayCluster cl;
-        for (int i = 0; i < 3; ++i) {
-            const double wo = W(rng) * (wide ? 4 : 0.4), wd = W(rng) * (wide ? 4 : 0.4);
-            cl.origin[i] = Interval(O[i] - wo, O[i] + wo);
-            cl.direction[i] = Interval(target[i] - O[i] - wd, target[i] - O[i] + wd);
-        }
-        cl.q = Interval(0.0, 1.0);
+        mixed_case(rng, n % 2 == 0, a, b, c, cl);
         Interval q, beta, delta, q2, beta2, delta2;
         const TriangleMeeting m = meet_triangle(cl, a, b, c, q, &beta, &delta);
         const bool may = may_hit_triangle(cl, a, b, c);
@@ -189,6 +193,39 @@ TEST_CASE("meet_triangle answers as may_hit_triangle and covers_triangle", "[ray
     CHECK(outcome[0] > 100);
     CHECK(outcome[1] > 100);
     CHECK(outcome[2] > 100);
+}
+
+TEST_CASE("may_cover_triangle refutes only triangles that the cluster does not cover",
+          "[ray_cluster]") {
+    std::mt19937 rng(19);
+    int covered = 0, refuted = 0, middle_misses = 0;
+    for (int n = 0; n < 4000; ++n) {
+        Vec3 a, b, c;
+        RayCluster cl;
+        mixed_case(rng, n % 2 == 0, a, b, c, cl);
+        const bool may = may_cover_triangle(cl, a, b, c);
+        Interval q;
+        if (covers_triangle(cl, a, b, c, q)) {
+            ++covered;
+            CHECK(may);
+        }
+        refuted += !may;
+        // The middle ray, in doubles: where it clearly misses the triangle's
+        // plane region (any q), the interval test refutes.
+        const Vec3 om{cl.origin[0].mid(), cl.origin[1].mid(), cl.origin[2].mid()},
+            dm{cl.direction[0].mid(), cl.direction[1].mid(), cl.direction[2].mid()};
+        const Vec3 e1 = b - a, e2 = c - a, p = cross(dm, e2);
+        const double det = dot(e1, p);
+        if (std::abs(det) < 1e-3) continue;
+        const double u = dot(om - a, p) / det, v = dot(dm, cross(om - a, e1)) / det;
+        if (u < -1e-6 || v < -1e-6 || u + v > 1 + 1e-6) {
+            ++middle_misses;
+            CHECK(!may);
+        }
+    }
+    CHECK(covered > 100);
+    CHECK(refuted > 1000);
+    CHECK(middle_misses > 1000);
 }
 
 TEST_CASE("A light's pyramid declared to miss a triangle has no segment that hits it",
