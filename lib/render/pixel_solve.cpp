@@ -49,12 +49,16 @@ bool regular(MarkJacobian& J) {
         return false;
     }
     J.CA = J.C * J.A;
+    bool below = true;
     for (int i = 0; i < 2; ++i) {
         double row = 0;
-        for (int k = 0; k < 2; ++k) row += (Interval(i == k ? 1.0 : 0.0) - J.CA(i, k)).mag();
-        if (!(next_up(row) < 1)) return false;
+        for (int k = 0; k < 2; ++k) {
+            J.E[i * 2 + k] = (Interval(i == k ? 1.0 : 0.0) - J.CA(i, k)).mag();
+            row += J.E[i * 2 + k];
+        }
+        below &= next_up(row) < 1;
     }
-    return true;
+    return below;
 }
 
 // Camera depth Z = X_2 / W over the small box of a certified hit, by the mean
@@ -102,6 +106,25 @@ MarkJacobian mark_jacobian(const IMat<2>& A) {
     j.A = A;
     j.regular = regular(j);
     return j;
+}
+
+bool krawczyk_hit(const MarkJacobian& J, const IVec<2>& Gc, const IVec<2>& Y, const RVec<2>& c,
+                  ParamBox& hit) {
+    if (!J.regular) return false;
+    // The largest distance from c to Y's ends per coordinate, rounded up.
+    Interval R[2];
+    for (int k = 0; k < 2; ++k)
+        R[k] = Interval(std::max((Interval(c[k]) - Interval(Y[k].lo())).hi(),
+                                 (Interval(Y[k].hi()) - Interval(c[k])).hi()));
+    Interval K[2];
+    for (int i = 0; i < 2; ++i) {
+        const Interval CG = Interval(J.C[i * 2]) * Gc[0] + Interval(J.C[i * 2 + 1]) * Gc[1];
+        const double er = (Interval(J.E[i * 2]) * R[0] + Interval(J.E[i * 2 + 1]) * R[1]).hi();
+        K[i] = Interval(c[i]) - CG + Interval(-er, er);
+        if (!Y[i].contains_in_interior(K[i])) return false;
+    }
+    hit = {K[0], K[1]};
+    return true;
 }
 
 bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
@@ -152,8 +175,12 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     const IVec<2> F{{X[0] - Interval(a) * X[2], X[1] - Interval(b) * X[2]}};
     // A over the box bounds G' over Y too; only where it is too wide to
     // certify is the Jacobian enclosed over Y itself.
-    HansenSenguptaStep<2> hs = J.step(F, Y, RVec<2>{s, t});
     ++st.hs_steps;
+    if (krawczyk_hit(J, F, Y, RVec<2>{s, t}, hit)) {
+        q = depth_over(pp, hit, s, t, X); // camera z = X_2 / W over the hit's box
+        return true;
+    }
+    HansenSenguptaStep<2> hs = J.step(F, Y, RVec<2>{s, t});
     if (!hs.unique) {
         hs = hansen_sengupta<2>(jacobian(sys.forms(), ParamBox{Y[0], Y[1]}), F, Y, RVec<2>{s, t});
         ++st.hs_steps;

@@ -84,6 +84,9 @@ struct MarkJacobian {
     RMat<2> C{};
     IMat<2> CA;
     bool preconditioned = false;
+    // E(i, k) >= |delta_ik - (C A)_ik| for every entry of C A (rounded up):
+    // the magnitudes of I - C A for the Krawczyk test of krawczyk_hit.
+    RMat<2> E{};
     HansenSenguptaStep<2> step(const IVec<2>& f_center, const IVec<2>& x, const RVec<2>& c) const {
         return hansen_sengupta_preconditioned<2>(C, CA, preconditioned, f_center, x, c);
     }
@@ -91,6 +94,16 @@ struct MarkJacobian {
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
 // The same from a Jacobian enclosed otherwise (subpatch_jacobian of primary_cluster.h).
 MarkJacobian mark_jacobian(const IMat<2>& A);
+
+// Krawczyk's test on a small box Y about a point c of Y with J regular over a
+// box holding Y: K = c - C G(c) + (I - C A)(Y - c), with |I - C A| bounded by
+// J.E. K inside int(Y) proves exactly one zero of G in Y (and it lies in K):
+// y - C G(y) maps Y into K, so it has a fixed point there (Brouwer), a zero as
+// C is regular. Gc: G(c), enclosed. true with the zero's box (K, within Y) in
+// hit; false when K is not inside int(Y) (the Hansen-Sengupta step may still
+// succeed: it divides by the diagonal, Krawczyk only bounds by magnitudes).
+bool krawczyk_hit(const MarkJacobian& J, const IVec<2>& Gc, const IVec<2>& Y, const RVec<2>& c,
+                  ParamBox& hit);
 
 // The certified Newton solve above for the ray through screen point (a, b) and
 // patch pp in `box`; sys: the ray's system (RaySystem(pp, a, b, ...)). hit: exactly one hit

@@ -335,3 +335,53 @@ TEST_CASE("A mark's kept centre enclosure decides may_hold_zero as the ray's own
     CHECK(misses > 100);
     CHECK(bisected > 5);
 }
+
+TEST_CASE("Krawczyk's test certifies only where the covering method finds the one hit",
+          "[pixel_solve]") {
+    // Newton's point on a dome patch, a small box Y around it (inflated by
+    // 1e-9 as newton_hit does, or by more), and the sub-screen's Jacobian:
+    // a certified K holds the only hit in Y, and the Hansen-Sengupta step on
+    // the same Y proves it too (it is at least as strong).
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> S(0.0, 1.0);
+    int certified = 0, tried = 0;
+    for (int n = 0; n < 400; ++n) {
+        const ProjectedPatch pp = dome(rng, n % 2 ? 0.8 : 3.0);
+        const double s0 = S(rng), t0 = S(rng), w = 0.02 + 0.2 * S(rng);
+        const ParamBox box{Interval(s0 * (1 - w), s0 * (1 - w) + w),
+                           Interval(t0 * (1 - w), t0 * (1 - w) + w)};
+        const double s = box.s.lo() + S(rng) * w, t = box.t.lo() + S(rng) * w;
+        const Vec3 P = evaluate(pp.patch, s, t).point;
+        const double a = P.x / P.z, b = P.y / P.z;
+        const double d = 0.002 * S(rng);
+        ClusterSystem sub, storage;
+        cluster_system(pp.forms, Interval(a - d, a + d), Interval(b - d, b + d), sub);
+        const MarkJacobian J = mark_jacobian(sub, box);
+        // Newton's point: the exact (s, t) moved by up to e (far beyond the box for large e).
+        const double e = n % 3 == 0 ? 1e-12 : (n % 3 == 1 ? 1e-10 : 1e-7);
+        const double cs = std::clamp(s + e * (2 * S(rng) - 1), box.s.lo(), box.s.hi());
+        const double ct = std::clamp(t + e * (2 * S(rng) - 1), box.t.lo(), box.t.hi());
+        const double r = n % 5 == 0 ? 1e-6 : 1e-9;
+        const IVec<2> Y{{intersect(Interval(cs - r, cs + r), box.s),
+                         intersect(Interval(ct - r, ct + r), box.t)}};
+        RaySystem sys(pp, a, b, storage);
+        const IVec<2> F = sys.at(cs, ct);
+        ParamBox hit;
+        ++tried;
+        if (!krawczyk_hit(J, F, Y, RVec<2>{cs, ct}, hit)) continue;
+        ++certified;
+        CHECK(J.regular);
+        CHECK(Y[0].contains(hit.s));
+        CHECK(Y[1].contains(hit.t));
+        std::vector<RayPatchHit> all;
+        intersect(pp.forms, ProjectedScene::primary_ray(a, b), ParamBox{Y[0], Y[1]}, all,
+                  RayPatchOptions{});
+        REQUIRE(all.size() == 1);
+        CHECK(hit.s.overlaps(all[0].box.s));
+        CHECK(hit.t.overlaps(all[0].box.t));
+        const HansenSenguptaStep<2> hs = J.step(F, Y, RVec<2>{cs, ct});
+        CHECK(hs.unique);
+    }
+    CHECK(certified > 100);
+    CHECK(certified < tried); // Newton's point 1e-7 off with Y of 1e-9: no certificate
+}
