@@ -233,6 +233,7 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     depth_.assign(n, 0);
     centre_.resize(n);
     centred_.assign(n, 0);
+    missed_.assign(n, 0);
 }
 
 const Interval* SharedMarks::centre(size_t k) {
@@ -283,6 +284,7 @@ bool SharedMarks::refine(size_t k) {
     started_.push_back(started_[k]);
     at_.push_back(at_[k]);
     evaluated_.push_back(evaluated_[k]);
+    missed_.push_back(missed_[k]);
     depth_[k] = static_cast<char>(depth_[k] + 1);
     depth_.push_back(depth_[k]);
     return true;
@@ -404,24 +406,35 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     const ProjectedPatch& pp = ps.patches[mark.patch];
     const MarkJacobian& J = shared.jacobian(k);
     ParamBox rest = mark.box;
-    {
-        RaySystem sys(pp, a, b, scratch.sys);
-        ParamBox hb;
-        Interval q;
-        if (newton_hit(pp, a, b, mark.box, sys, J, hb, q, st, shared.start(k),
-                       shared.at_start(k))) {
-            ++near.best.candidates;
-            ++st.pixel_patch_solves;
-            ++st.pixel_newton_certified;
-            shared.hit(k, hb.s.mid(), hb.t.mid());
-            near.take(mark.patch, hb, q, static_cast<int>(k));
-            return;
-        }
-        // Newton left the box (the ray passes beside this part of the
-        // patch): with a regular Jacobian one Hansen-Sengupta step over the
-        // box mostly proves the miss, at a tenth of the clip's cost.
-        if (J.regular && !may_hold_zero(sys, J, mark.box, rest, st, shared.centre(k))) return;
+    // After a ray that missed this mark, the miss proof below (the
+    // Hansen-Sengupta step over the box) comes before Newton: the same step
+    // on the same box as after it, so the outcome is the same either way (a
+    // proved miss leaves no hit to certify), without Newton's wasted run
+    // beside the patch. Teapot 640x480 x 16: 852 -> 842 M in paint_pixels.
+    bool held = false; // the Hansen-Sengupta step over the box ran and left `rest`
+    RaySystem sys(pp, a, b, scratch.sys);
+    if (shared.missed(k) && J.regular) {
+        if (!may_hold_zero(sys, J, mark.box, rest, st, shared.centre(k))) return;
+        held = true;
     }
+    ParamBox hb;
+    Interval q;
+    if (newton_hit(pp, a, b, mark.box, sys, J, hb, q, st, shared.start(k), shared.at_start(k))) {
+        ++near.best.candidates;
+        ++st.pixel_patch_solves;
+        ++st.pixel_newton_certified;
+        shared.hit(k, hb.s.mid(), hb.t.mid());
+        near.take(mark.patch, hb, q, static_cast<int>(k));
+        return;
+    }
+    // Newton left the box (the ray passes beside this part of the patch):
+    // with a regular Jacobian one Hansen-Sengupta step over the box mostly
+    // proves the miss, at a tenth of the clip's cost.
+    if (J.regular && !held && !may_hold_zero(sys, J, mark.box, rest, st, shared.centre(k))) {
+        shared.miss(k);
+        return;
+    }
+    shared.miss(k); // unless solve_box finds a hit below
     ParamBox box;
     if (!clip_box(shared.coefs(), pp.shape, Interval(a), Interval(b), mark, box)) return;
     box = {intersect(box.s, rest.s), intersect(box.t, rest.t)}; // both hold every hit
