@@ -385,3 +385,43 @@ TEST_CASE("Krawczyk's test certifies only where the covering method finds the on
     CHECK(certified > 100);
     CHECK(certified < tried); // Newton's point 1e-7 off with Y of 1e-9: no certificate
 }
+
+TEST_CASE("A mark Jacobian's C A and |I - C A| enclose every matrix of A preconditioned",
+          "[pixel_solve]") {
+    // C A is formed in doubles with a relative slack: for matrices drawn from
+    // A (corners and inner points), C A~ lies in CA and |delta - (C A~)| <= E.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-1.0, 1.0), W(0.0, 1.0);
+    int regular = 0;
+    for (int n = 0; n < 2000; ++n) {
+        const double scale = std::ldexp(1.0, static_cast<int>(40 * U(rng)));
+        IMat<2> A;
+        for (int i = 0; i < 2; ++i)
+            for (int k = 0; k < 2; ++k) {
+                const double m = scale * (U(rng) + (i == k ? 2.0 : 0.0));
+                const double r = scale * 0.3 * W(rng) * W(rng);
+                A(i, k) = Interval(m - r, m + r);
+            }
+        const MarkJacobian J = mark_jacobian(A);
+        if (!J.preconditioned) continue;
+        regular += J.regular ? 1 : 0;
+        for (int sample = 0; sample < 8; ++sample) {
+            double a[4];
+            for (int e = 0; e < 4; ++e) {
+                const Interval x = A.a[e];
+                const double f = sample < 4 ? ((sample >> (e % 2)) & 1) : W(rng);
+                a[e] = std::clamp(x.lo() + f * (x.hi() - x.lo()), x.lo(), x.hi());
+            }
+            for (int i = 0; i < 2; ++i)
+                for (int k = 0; k < 2; ++k) {
+                    // C A~ entry, enclosed with outward rounding.
+                    const Interval ca = Interval(J.C[i * 2]) * Interval(a[k]) +
+                                        Interval(J.C[i * 2 + 1]) * Interval(a[2 + k]);
+                    CHECK(J.CA(i, k).overlaps(ca));
+                    CHECK((Interval(i == k ? 1.0 : 0.0) - ca).lo() <= J.E[i * 2 + k]);
+                    CHECK(-(Interval(i == k ? 1.0 : 0.0) - ca).hi() <= J.E[i * 2 + k]);
+                }
+        }
+    }
+    CHECK(regular > 100);
+}
