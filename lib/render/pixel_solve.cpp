@@ -10,6 +10,17 @@
 namespace seamless {
 namespace {
 
+// [lo, hi] computed in doubles (round to nearest) by at most a few sums and
+// products of terms whose magnitudes add up to at most `size`, moved outward
+// by 2e-15 size (more than the five roundings' 5.6e-16 size such a chain can
+// err by) and an allowance for underflow: an enclosure of the exact bounds,
+// at a quarter of the interval operations' cost. Entire where not finite.
+Interval widened(double lo, double hi, double size) {
+    const double slack = 2e-15 * size + underflow_allowance(8);
+    const Interval r(lo - slack, hi + slack);
+    return r.is_finite() ? r : Interval::entire();
+}
+
 // One Newton step for X - aZ = 0, Y - bZ = 0 at (s, t) in doubles.
 // false where the Jacobian is singular.
 // sp: the patch evaluated at (s, t).
@@ -42,9 +53,7 @@ IMat<2> jacobian(const ClusterSystem& sys, const ParamBox& box) {
 // ||I - C A||_inf < 1 with C = mid(A)^-1: every matrix of A is regular.
 // J.C and J.CA are set for J.step (C = I where mid(A) is singular), J.E
 // for krawczyk_hit. C A in doubles: each entry's bounds are the sums of the
-// products' bounds, moved outward by a relative 2e-15 of the magnitudes
-// summed (more than the three roundings of a bound can err by) and an
-// underflow allowance; the interval products cost four times as much.
+// products' bounds, widened (the interval products cost four times as much).
 bool regular(MarkJacobian& J) {
     J.preconditioned = invert<2>(mid(J.A), J.C);
     if (!J.preconditioned) {
@@ -64,10 +73,7 @@ bool regular(MarkJacobian& J) {
                 hi += std::max(p, q);
                 size += std::max(std::abs(p), std::abs(q));
             }
-            const double slack = 2e-15 * size + underflow_allowance(4);
-            J.CA(i, k) = std::isfinite(lo) && std::isfinite(hi) && std::isfinite(slack)
-                             ? Interval(lo - slack, hi + slack)
-                             : Interval::entire();
+            J.CA(i, k) = widened(lo, hi, size);
             J.E[i * 2 + k] = (Interval(i == k ? 1.0 : 0.0) - J.CA(i, k)).mag();
             row += J.E[i * 2 + k];
         }
@@ -84,10 +90,12 @@ bool regular(MarkJacobian& J) {
 // hits and far cheaper than a range enclosure over it.
 Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit, double cs, double ct,
                     const Interval* Xc) {
-    const Interval ds = hit.s - Interval(cs), dt = hit.t - Interval(ct);
+    // |x - c| over the box, rounded up; then Xc +- (slope_s ds + slope_t dt), widened.
+    const double ds = next_up(std::max(cs - hit.s.lo(), hit.s.hi() - cs));
+    const double dt = next_up(std::max(ct - hit.t.lo(), hit.t.hi() - ct));
     auto over = [&](int c) {
-        return Xc[c] + Interval(-pp.slope_s[c], pp.slope_s[c]) * ds +
-               Interval(-pp.slope_t[c], pp.slope_t[c]) * dt;
+        const double r = pp.slope_s[c] * ds + pp.slope_t[c] * dt;
+        return widened(Xc[c].lo() - r, Xc[c].hi() + r, Xc[c].mag() + r);
     };
     const Interval Z = over(2);
     if (!pp.forms.rational) return Z;
@@ -103,7 +111,14 @@ IVec<2> RaySystem::at(double s, double t) const {
 }
 
 IVec<2> RaySystem::at(const Interval* X) const {
-    return IVec<2>{{X[0] - Interval(a_) * X[2], X[1] - Interval(b_) * X[2]}};
+    IVec<2> G;
+    const double e[2] = {a_, b_};
+    for (int i = 0; i < 2; ++i) {
+        const double p = e[i] * X[2].lo(), q = e[i] * X[2].hi();
+        G[i] = widened(X[i].lo() - std::max(p, q), X[i].hi() - std::min(p, q),
+                       X[i].mag() + std::max(std::abs(p), std::abs(q)));
+    }
+    return G;
 }
 
 const ClusterSystem& RaySystem::forms() {
@@ -126,10 +141,7 @@ MarkJacobian mark_jacobian(const IMat<2>& A) {
 namespace {
 
 // K = c - C G(c) + (I - C A)(Y - c) of krawczyk_hit in doubles (I - C A
-// bounded by J.E), each bound moved outward by a relative 2e-15 of the
-// magnitudes summed, more than the few roundings of the sums can err by (5
-// units of 1.1e-16), and an allowance for underflow. false where a value is
-// not finite.
+// bounded by J.E), widened. false where a value is not finite.
 bool krawczyk_box(const MarkJacobian& J, const IVec<2>& Gc, const IVec<2>& Y, const RVec<2>& c,
                   Interval K[2]) {
     double R[2]; // the largest distance from c to Y's ends, rounded up
@@ -143,10 +155,8 @@ bool krawczyk_box(const MarkJacobian& J, const IVec<2>& Gc, const IVec<2>& Y, co
             size += std::max(std::abs(p), std::abs(q));
         }
         const double er = J.E[i * 2] * R[0] + J.E[i * 2 + 1] * R[1];
-        const double slack = 2e-15 * (std::abs(c[i]) + size + er) + underflow_allowance(8);
-        K[i] = Interval(c[i] - hi - er - slack, c[i] - lo + er + slack);
-        if (!(K[i].lo() <= K[i].hi()) || !std::isfinite(K[i].lo()) || !std::isfinite(K[i].hi()))
-            return false;
+        K[i] = widened(c[i] - hi - er, c[i] - lo + er, std::abs(c[i]) + size + er);
+        if (!K[i].is_finite()) return false;
     }
     return true;
 }
@@ -208,7 +218,7 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     // X at Newton's point: G there for the step, and the centre of the depth's mean value form.
     Interval X[4];
     enclose_homogeneous(pp.patch, s, t, pp.forms.rational ? 4 : 3, X);
-    const IVec<2> F{{X[0] - Interval(a) * X[2], X[1] - Interval(b) * X[2]}};
+    const IVec<2> F = sys.at(X);
     // A over the box bounds G' over Y too; only where it is too wide to
     // certify is the Jacobian enclosed over Y itself.
     ++st.hs_steps;
