@@ -425,3 +425,28 @@ TEST_CASE("A mark Jacobian's C A and |I - C A| enclose every matrix of A precond
     }
     CHECK(regular > 100);
 }
+
+TEST_CASE("G at an enclosed point, formed in doubles, holds the interval operations' enclosure",
+          "[pixel_solve]") {
+    // RaySystem::at widens bounds formed in doubles by a relative 2e-15, far
+    // more than the ulp per operation that interval arithmetic adds: it holds
+    // X - a Z as the interval operations enclose it, at any magnitude.
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> U(-1.0, 1.0), W(0.0, 1.0);
+    const ProjectedPatch pp = dome(rng, 1.0);
+    ClusterSystem storage;
+    for (int n = 0; n < 20000; ++n) {
+        const double a = U(rng) * std::ldexp(1.0, static_cast<int>(8 * U(rng)));
+        const double b = U(rng);
+        const RaySystem sys(pp, a, b, storage);
+        Interval X[3];
+        for (Interval& x : X) {
+            const double m = U(rng) * std::ldexp(1.0, static_cast<int>(300 * U(rng)));
+            const double r = std::abs(m) * 1e-12 * W(rng);
+            x = Interval(m - r, m + r);
+        }
+        const IVec<2> G = sys.at(X);
+        CHECK(G[0].contains(X[0] - Interval(a) * X[2]));
+        CHECK(G[1].contains(X[1] - Interval(b) * X[2]));
+    }
+}
