@@ -256,10 +256,11 @@ bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& 
     const IVec<2> X{{box.s, box.t}};
     const RVec<2> c = mid(X);
     const IVec<2> Fc = Xc ? sys.at(Xc) : sys.at(c[0], c[1]);
-    // Krawczyk's K(X) holds every zero in X too: where it misses X, there is
+    // Krawczyk's K(X) holds every zero in X too, for any C (J.E is set
+    // wherever C = mid(A)^-1, regular or not): where it misses X, there is
     // none, without the Hansen-Sengupta step (which stays the stronger test).
     Interval K[2];
-    if (J.regular && krawczyk_box(J, Fc, X, c, K) &&
+    if (J.preconditioned && krawczyk_box(J, Fc, X, c, K) &&
         (intersect(K[0], X[0]).is_empty() || intersect(K[1], X[1]).is_empty())) {
         ++st.hs_steps;
         return false;
