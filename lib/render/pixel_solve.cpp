@@ -489,6 +489,15 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
         shared.miss(k);
         return;
     }
+    // A Jacobian that is not regular still proves a miss where the step's
+    // box is empty (Theorem 6 ii holds for any A enclosing G'); its part of
+    // the box is not used, so the rays it does not decide go on as before.
+    ParamBox part;
+    if (!J.regular && J.preconditioned &&
+        !may_hold_zero(sys, J, mark.box, part, st, shared.centre(k))) {
+        shared.miss(k);
+        return;
+    }
     shared.miss(k); // unless solve_box finds a hit below
     ParamBox box;
     if (!clip_box(shared.coefs(), pp.shape, Interval(a), Interval(b), mark, box)) return;
