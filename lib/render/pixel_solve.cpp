@@ -490,11 +490,10 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
         return;
     }
     // A Jacobian that is not regular still proves a miss where the step's
-    // box is empty (Theorem 6 ii holds for any A enclosing G'); its part of
-    // the box is not used, so the rays it does not decide go on as before.
-    ParamBox part;
+    // box is empty (Theorem 6 ii holds for any A enclosing G'), and
+    // otherwise leaves the part of the box holding every hit (6 i).
     if (!J.regular && J.preconditioned &&
-        !may_hold_zero(sys, J, mark.box, part, st, shared.centre(k))) {
+        !may_hold_zero(sys, J, mark.box, rest, st, shared.centre(k))) {
         shared.miss(k);
         return;
     }
