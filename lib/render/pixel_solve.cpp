@@ -277,6 +277,8 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     ps_ = &ps;
     coefs_ = &coefs;
     marks_.assign(marks, marks + n);
+    screen_.resize(n);
+    for (size_t k = 0; k < n; ++k) screen_[k] = screen(marks[k]);
     a_ = a;
     b_ = b;
     jacobians_.resize(n);
@@ -289,6 +291,13 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     centre_.resize(n);
     centred_.assign(n, 0);
     missed_.assign(n, 0);
+}
+
+std::array<double, 4> SharedMarks::screen(const Mark& m) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (!(m.hull[2].hi() > 0)) return {inf, -inf, inf, -inf}; // behind the eye: met by no ray
+    if (!(m.pa.is_finite() && m.pb.is_finite())) return {kGeneral, 0, 0, 0};
+    return {m.pa.lo(), m.pa.hi(), m.pb.lo(), m.pb.hi()};
 }
 
 const Interval* SharedMarks::centre(size_t k) {
@@ -329,6 +338,8 @@ bool SharedMarks::refine(size_t k) {
     }
     marks_[k] = half[0];
     marks_.push_back(half[1]);
+    screen_[k] = screen(half[0]);
+    screen_.push_back(screen(half[1]));
     known_[k] = 0;
     known_.push_back(0);
     centred_[k] = 0;
@@ -452,7 +463,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
         const size_t halves[2] = {k, shared.size() - 1};
         for (const size_t j : halves) {
             const Mark& h = shared.marks()[j];
-            if (may_meet(h, Interval(a), Interval(b)) && !(h.hull[2].lo() > near.best_q))
+            if (shared.may_meet_ray(j, a, b) && !(h.hull[2].lo() > near.best_q))
                 solve_shared_mark(ps, a, b, shared, j, scratch, st, near);
         }
         return;
@@ -530,7 +541,7 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
         n = shared->size();
     }
     for (size_t k = 0; k < n; ++k)
-        if (!shared || may_meet(marks[k], Interval(a), Interval(b)))
+        if (!shared || shared->may_meet_ray(k, a, b))
             order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
     Nearest near;
     if (order.empty()) return near.best;

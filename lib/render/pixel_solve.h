@@ -30,6 +30,7 @@
 #include <seamless/interval/hansen_sengupta.h>
 
 #include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -148,6 +149,14 @@ class SharedMarks {
     void reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
                Interval a, Interval b);
     const Mark* marks() const { return marks_.data(); }
+    // may_meet(marks()[k], a, b) for the thin ray through (a, b): the mark's
+    // screen enclosure as four bounds kept per mark (may_meet's own test
+    // where it is not finite).
+    bool may_meet_ray(size_t k, double a, double b) const {
+        const std::array<double, 4>& r = screen_[k];
+        if (r[0] == kGeneral) return may_meet(marks_[k], Interval(a), Interval(b));
+        return r[0] <= a && a <= r[1] && r[2] <= b && b <= r[3];
+    }
     const SubpatchArena& coefs() const { return *coefs_; }
     size_t size() const { return marks_.size(); }
     const MarkJacobian& jacobian(size_t k);
@@ -191,6 +200,11 @@ class SharedMarks {
     std::vector<SurfacePoint> at_;
     std::vector<std::array<Interval, 3>> centre_;
     std::vector<char> known_, started_, depth_, evaluated_, centred_, missed_;
+    // Per mark: pa and pb's bounds (an empty range behind the eye), or
+    // kGeneral in the first where pa or pb is not finite.
+    std::vector<std::array<double, 4>> screen_;
+    static constexpr double kGeneral = -std::numeric_limits<double>::infinity();
+    static std::array<double, 4> screen(const Mark& m);
 };
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)
