@@ -7,10 +7,11 @@
 // interval Jacobian A of G = (X - aZ, Y - bZ) over the whole box satisfies
 // ||I - C A|| < 1 (C = mid(A)^-1), every matrix of A is regular and G is
 // one-to-one on the box (G(x) - G(y) = J (x - y) with J in A, row by row by the
-// mean value theorem), so the ray meets the patch at most once there; one
-// Hansen-Sengupta step on a small box around Newton's result (epsilon
-// inflation, as kv's kraw-approx) then proves that it meets it once, inside the
-// step's box (Theorem 6 iii). Without such a proof one Hansen-Sengupta step
+// mean value theorem), so the ray meets the patch at most once there;
+// Krawczyk's test on a small box around Newton's result (epsilon inflation, as
+// kv's kraw-approx; in doubles with a bounded slack, krawczyk_hit), or where
+// it fails one Hansen-Sengupta step (Theorem 6 iii), then proves that it meets
+// it once, inside the test's box. Without such a proof one Hansen-Sengupta step
 // over the whole box either proves a miss (Theorem 6 ii) or contracts the box
 // to where the hits may be (Theorem 6 i); that part is tried again, halved
 // when it did not shrink much, and only boxes still undecided after a few
