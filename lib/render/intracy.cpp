@@ -303,11 +303,12 @@ class PartRenderer {
                 const PixelShade& p = hits_[i];
                 if (p.hit.candidates == 0) { // every mark certainly missed before any solve
                     paint_background(x, y, x, y, st);
-                    count(pixel, st);
                     continue;
                 }
                 paint_hit(pixel, p.hit, st, &p);
             }
+        // Each pixel is a one-pixel sub-screen: counted once for all (a map lookup each).
+        st.subscreens_by_size[1] += static_cast<long long>(hits_.size());
     }
 
     // Per patch hit by four or more of hits_: the lights certainly reaching
@@ -357,7 +358,7 @@ class PartRenderer {
                 image_.at(B.x0, B.y0, c) = static_cast<std::uint16_t>(quantise(I[c], levels_));
             image_.surface_at(B.x0, B.y0) = 1;
         }
-        count(B, st);
+        if (!shaded) count(B, st); // paint_pixels counts its pixels at once
     }
 
     // Step 5. Returns true if B was finished (all background).

@@ -166,9 +166,14 @@ std::array<T, 3> shade(const Scene& scene, const Material& m, const V3<T>& P, V3
     return shade<T>(scene, m, P, N, V3<T>{T(eye.x), T(eye.y), T(eye.z)});
 }
 
-// Quantised level of an intensity in [0, 1]: round(I (levels - 1)).
+// Quantised level of an intensity in [0, 1]: round(I (levels - 1)), halves
+// away from zero as std::lround, without its library call: v - trunc(v) is
+// exact for 0 <= v < 2^31. (NaN still goes to std::lround.)
 inline int quantise(double intensity, int levels) {
-    return static_cast<int>(std::lround(clamp01(intensity) * (levels - 1)));
+    const double v = clamp01(intensity) * (levels - 1);
+    if (!(v >= 0 && v < 2147483647.0)) return static_cast<int>(std::lround(v));
+    const int i = static_cast<int>(v);
+    return i + (v - i >= 0.5 ? 1 : 0);
 }
 
 } // namespace seamless

@@ -335,3 +335,118 @@ TEST_CASE("A mark's kept centre enclosure decides may_hold_zero as the ray's own
     CHECK(misses > 100);
     CHECK(bisected > 5);
 }
+
+TEST_CASE("Krawczyk's test certifies only where the covering method finds the one hit",
+          "[pixel_solve]") {
+    // Newton's point on a dome patch, a small box Y around it (inflated by
+    // 1e-9 as newton_hit does, or by more), and the sub-screen's Jacobian:
+    // a certified K holds the only hit in Y, and the Hansen-Sengupta step on
+    // the same Y proves it too (it is at least as strong).
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> S(0.0, 1.0);
+    int certified = 0, tried = 0;
+    for (int n = 0; n < 400; ++n) {
+        const ProjectedPatch pp = dome(rng, n % 2 ? 0.8 : 3.0);
+        const double s0 = S(rng), t0 = S(rng), w = 0.02 + 0.2 * S(rng);
+        const ParamBox box{Interval(s0 * (1 - w), s0 * (1 - w) + w),
+                           Interval(t0 * (1 - w), t0 * (1 - w) + w)};
+        const double s = box.s.lo() + S(rng) * w, t = box.t.lo() + S(rng) * w;
+        const Vec3 P = evaluate(pp.patch, s, t).point;
+        const double a = P.x / P.z, b = P.y / P.z;
+        const double d = 0.002 * S(rng);
+        ClusterSystem sub, storage;
+        cluster_system(pp.forms, Interval(a - d, a + d), Interval(b - d, b + d), sub);
+        const MarkJacobian J = mark_jacobian(sub, box);
+        // Newton's point: the exact (s, t) moved by up to e (far beyond the box for large e).
+        const double e = n % 3 == 0 ? 1e-12 : (n % 3 == 1 ? 1e-10 : 1e-7);
+        const double cs = std::clamp(s + e * (2 * S(rng) - 1), box.s.lo(), box.s.hi());
+        const double ct = std::clamp(t + e * (2 * S(rng) - 1), box.t.lo(), box.t.hi());
+        const double r = n % 5 == 0 ? 1e-6 : 1e-9;
+        const IVec<2> Y{{intersect(Interval(cs - r, cs + r), box.s),
+                         intersect(Interval(ct - r, ct + r), box.t)}};
+        RaySystem sys(pp, a, b, storage);
+        const IVec<2> F = sys.at(cs, ct);
+        ParamBox hit;
+        ++tried;
+        if (!krawczyk_hit(J, F, Y, RVec<2>{cs, ct}, hit)) continue;
+        ++certified;
+        CHECK(J.regular);
+        CHECK(Y[0].contains(hit.s));
+        CHECK(Y[1].contains(hit.t));
+        std::vector<RayPatchHit> all;
+        intersect(pp.forms, ProjectedScene::primary_ray(a, b), ParamBox{Y[0], Y[1]}, all,
+                  RayPatchOptions{});
+        REQUIRE(all.size() == 1);
+        CHECK(hit.s.overlaps(all[0].box.s));
+        CHECK(hit.t.overlaps(all[0].box.t));
+        const HansenSenguptaStep<2> hs = J.step(F, Y, RVec<2>{cs, ct});
+        CHECK(hs.unique);
+    }
+    CHECK(certified > 100);
+    CHECK(certified < tried); // Newton's point 1e-7 off with Y of 1e-9: no certificate
+}
+
+TEST_CASE("A mark Jacobian's C A and |I - C A| enclose every matrix of A preconditioned",
+          "[pixel_solve]") {
+    // C A is formed in doubles with a relative slack: for matrices drawn from
+    // A (corners and inner points), C A~ lies in CA and |delta - (C A~)| <= E.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-1.0, 1.0), W(0.0, 1.0);
+    int regular = 0;
+    for (int n = 0; n < 2000; ++n) {
+        const double scale = std::ldexp(1.0, static_cast<int>(40 * U(rng)));
+        IMat<2> A;
+        for (int i = 0; i < 2; ++i)
+            for (int k = 0; k < 2; ++k) {
+                const double m = scale * (U(rng) + (i == k ? 2.0 : 0.0));
+                const double r = scale * 0.3 * W(rng) * W(rng);
+                A(i, k) = Interval(m - r, m + r);
+            }
+        const MarkJacobian J = mark_jacobian(A);
+        if (!J.preconditioned) continue;
+        regular += J.regular ? 1 : 0;
+        for (int sample = 0; sample < 8; ++sample) {
+            double a[4];
+            for (int e = 0; e < 4; ++e) {
+                const Interval x = A.a[e];
+                const double f = sample < 4 ? ((sample >> (e % 2)) & 1) : W(rng);
+                a[e] = std::clamp(x.lo() + f * (x.hi() - x.lo()), x.lo(), x.hi());
+            }
+            for (int i = 0; i < 2; ++i)
+                for (int k = 0; k < 2; ++k) {
+                    // C A~ entry, enclosed with outward rounding.
+                    const Interval ca = Interval(J.C[i * 2]) * Interval(a[k]) +
+                                        Interval(J.C[i * 2 + 1]) * Interval(a[2 + k]);
+                    CHECK(J.CA(i, k).overlaps(ca));
+                    CHECK((Interval(i == k ? 1.0 : 0.0) - ca).lo() <= J.E[i * 2 + k]);
+                    CHECK(-(Interval(i == k ? 1.0 : 0.0) - ca).hi() <= J.E[i * 2 + k]);
+                }
+        }
+    }
+    CHECK(regular > 100);
+}
+
+TEST_CASE("G at an enclosed point, formed in doubles, holds the interval operations' enclosure",
+          "[pixel_solve]") {
+    // RaySystem::at widens bounds formed in doubles by a relative 2e-15, far
+    // more than the ulp per operation that interval arithmetic adds: it holds
+    // X - a Z as the interval operations enclose it, at any magnitude.
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> U(-1.0, 1.0), W(0.0, 1.0);
+    const ProjectedPatch pp = dome(rng, 1.0);
+    ClusterSystem storage;
+    for (int n = 0; n < 20000; ++n) {
+        const double a = U(rng) * std::ldexp(1.0, static_cast<int>(8 * U(rng)));
+        const double b = U(rng);
+        const RaySystem sys(pp, a, b, storage);
+        Interval X[3];
+        for (Interval& x : X) {
+            const double m = U(rng) * std::ldexp(1.0, static_cast<int>(300 * U(rng)));
+            const double r = std::abs(m) * 1e-12 * W(rng);
+            x = Interval(m - r, m + r);
+        }
+        const IVec<2> G = sys.at(X);
+        CHECK(G[0].contains(X[0] - Interval(a) * X[2]));
+        CHECK(G[1].contains(X[1] - Interval(b) * X[2]));
+    }
+}
