@@ -22,39 +22,40 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
     normals.centre.resize(count);
     // A vertex is on the rings of up to four subpatches of a patch: its normal
     // there, where regular (regular_unit_normal), is computed at its first
-    // slot in the patch and copied to the others with the same parameters.
-    // Patch by patch, largest first (each patch's vertices in its own table).
-    std::vector<int> order(np);
+    // slot in a run of the patch's subpatches and copied to the run's later
+    // slots with the same parameters. Runs of at most kRun subpatches of one
+    // patch (a model of one patch still takes every worker), largest first.
+    constexpr int kRun = 256;
+    std::vector<std::array<int, 3>> runs; // patch, first subpatch, end
+    for (int p = 0; p < np; ++p)
+        for (int i = leaf_start[p]; i < leaf_start[p + 1]; i += kRun)
+            runs.push_back({p, i, std::min(i + kRun, leaf_start[p + 1])});
+    const int nr = static_cast<int>(runs.size());
+    std::vector<int> order(nr);
     std::iota(order.begin(), order.end(), 0);
-    const auto slots = [&](int p) {
-        return rings.start[leaf_start[p + 1]] - rings.start[leaf_start[p]];
-    };
+    const auto slots = [&](int r) { return rings.start[runs[r][2]] - rings.start[runs[r][1]]; };
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return slots(a) > slots(b); });
-    pull_blocks(np, 1, threads, &order, [&](int p, int) {
+    pull_blocks(nr, 1, threads, &order, [&](int r, int) {
+        const auto [p, i0, i1] = runs[r];
         const BezierPatch& b = patches[p];
-        const int j0 = rings.start[leaf_start[p]], j1 = rings.start[leaf_start[p + 1]];
-        int lo = 0, hi = -1;
-        if (j1 > j0) {
-            const auto [a, z] = std::minmax_element(
-                rings.vertices.begin() + j0, rings.vertices.begin() + j1,
-                [](const RingVertex& x, const RingVertex& y) { return x.vertex < y.vertex; });
-            lo = a->vertex;
-            hi = z->vertex;
-        }
-        // Per vertex of the patch: the slot whose regular normal it has, or -1.
+        // The vertices first met in the run: numbered after the centre of the
+        // subpatch before it, up to its last centre (vertex_numbering.h).
+        const int lo = i0 > 0 ? rings.centre[i0 - 1] + 1 : 0, hi = rings.centre[i1 - 1];
+        // Per such vertex: the slot whose regular normal it has, or -1.
         std::vector<int> known(hi - lo + 1, -1);
-        for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i) {
+        for (int i = i0; i < i1; ++i) {
             const Subpatch& sp = subpatches[i];
             const double sc = 0.5 * (param_of(sp.rect.s0) + param_of(sp.rect.s1));
             const double tc = 0.5 * (param_of(sp.rect.t0) + param_of(sp.rect.t1));
             normals.centre[i] = unit_normal(b, sc, tc, sc, tc);
             for (int j = rings.start[i]; j < rings.start[i + 1]; ++j) {
                 const RingVertex& v = rings.vertices[j];
-                int& k = known[v.vertex - lo];
-                if (k >= 0 && rings.vertices[k].fs == v.fs && rings.vertices[k].ft == v.ft)
-                    normals.ring[j] = normals.ring[k];
-                else if (k < 0 && regular_unit_normal(b, v.fs, v.ft, normals.ring[j]))
-                    k = j;
+                // A vertex met before the run is computed at each of its slots.
+                int* k = v.vertex >= lo && v.vertex <= hi ? &known[v.vertex - lo] : nullptr;
+                if (k && *k >= 0 && rings.vertices[*k].fs == v.fs && rings.vertices[*k].ft == v.ft)
+                    normals.ring[j] = normals.ring[*k];
+                else if (k && *k < 0 && regular_unit_normal(b, v.fs, v.ft, normals.ring[j]))
+                    *k = j;
                 else
                     normals.ring[j] = unit_normal(b, v.fs, v.ft, sc, tc);
             }
