@@ -93,8 +93,10 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
         if (!sp.planar) ++st.nonplanar_subpatches;
     }
     // The five arrays grow side by side: each resize writes its new elements
-    // on one thread (the tree nodes, with the subdivision's copied over, are
-    // the largest: taken first).
+    // on one thread. The tree nodes (with the subdivision's copied over) are
+    // the largest: second, so that another worker takes them at once; the
+    // mesh arrays in their former order (the triangles first: with the nodes
+    // first the orientation's reads of them were about 1 ms slower).
     const auto grow = [threads](auto& v, size_t n) {
         reserve_huge(v, n, threads);
         v.resize(n);
@@ -102,19 +104,19 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
     pull_blocks(5, 1, threads, nullptr, [&](int k, int) {
         switch (k) {
         case 0:
-            grow(out.trees.nodes, fan_node[count]);
-            break;
-        case 1:
-            grow(mesh.corner_normals, triangles);
-            break;
-        case 2:
-            grow(mesh.corner_uvs, triangles);
-            break;
-        case 3:
             grow(mesh.triangles, triangles);
             break;
-        default:
+        case 1:
+            grow(out.trees.nodes, fan_node[count]);
+            break;
+        case 2:
             grow(mesh.triangle_surface, triangles);
+            break;
+        case 3:
+            grow(mesh.corner_normals, triangles);
+            break;
+        default:
+            grow(mesh.corner_uvs, triangles);
             break;
         }
     });
