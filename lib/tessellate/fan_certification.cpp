@@ -17,10 +17,9 @@ bool same_ring(std::span<const RingPoint> a, std::span<const RingPoint> b) {
                       });
 }
 
-// Subpatch i's fan ring as certified_fan_bound takes it.
+// Subpatch i's fan ring as certified_fan_bound takes it, appended to `fan`.
 void fan_ring(const SubpatchRings& rings, const std::vector<Vec3>& positions, int i,
               std::vector<RingPoint>& fan) {
-    fan.clear();
     for (int j = rings.start[i]; j < rings.start[i + 1]; ++j) {
         const RingVertex& v = rings.vertices[j];
         fan.push_back({v.s, v.t, positions[v.vertex], v.fs, v.ft});
@@ -41,12 +40,13 @@ void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& 
             Subpatch& sp = subpatches[i];
             const Vec3 centre = positions[rings.centre[i]];
             // Certified two-way distance of the subpatch and its fan (error_bound.h).
+            fan.clear();
             fan_ring(rings, positions, i, fan);
             const KnownBounds& k = known[sp.patch];
-            const auto it = k.find(subpatch_key(sp.patch, sp.rect));
-            if (it != k.end() && it->second.rect == sp.rect && it->second.centre == centre &&
-                same_ring(it->second.ring, fan)) {
-                sp.error_bound = it->second.bound;
+            const KnownBound* b = k.bounds.find(subpatch_key(sp.patch, sp.rect));
+            if (b && b->rect == sp.rect && b->centre == centre &&
+                same_ring(std::span(k.rings).subspan(b->ring_first, b->ring_size), fan)) {
+                sp.error_bound = b->bound;
             } else {
                 sp.error_bound = certified_fan_bound(patches[sp.patch], sp.rect, sp.depth, centre,
                                                      fan, scale, tolerance);
@@ -61,8 +61,11 @@ void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& 
             for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i) {
                 if (!fresh[i]) continue;
                 const Subpatch& sp = subpatches[i];
-                KnownBound& k = known[p][subpatch_key(sp.patch, sp.rect)];
-                fan_ring(rings, positions, i, k.ring);
+                std::vector<RingPoint>& kept = known[p].rings;
+                KnownBound& k = known[p].bounds[subpatch_key(sp.patch, sp.rect)];
+                k.ring_first = static_cast<int>(kept.size());
+                fan_ring(rings, positions, i, kept);
+                k.ring_size = static_cast<int>(kept.size()) - k.ring_first;
                 k.rect = sp.rect;
                 k.centre = positions[rings.centre[i]];
                 k.bound = sp.error_bound;

@@ -6,25 +6,29 @@
 
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/key_table.h>
 #include <seamless/tessellate/subdivision.h>
 #include <seamless/tessellate/subpatch_ring.h>
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace seamless {
 
 // A certified fan bound (error_bound.h) of an earlier pass, with the ring it
-// was computed for: the bound is a function of the subpatch and its ring.
+// was computed for (ring_size points from ring_first in KnownBounds::rings):
+// the bound is a function of the subpatch and its ring.
 struct KnownBound {
     ParamRect rect;
-    std::vector<RingPoint> ring;
+    int ring_first = 0, ring_size = 0;
     Vec3 centre;
     double bound = 0;
 };
-// One patch's known bounds by subpatch_key.
-using KnownBounds = std::unordered_map<std::uint64_t, KnownBound>;
+// One patch's known bounds by subpatch_key, their rings end to end.
+struct KnownBounds {
+    KeyTable<KnownBound> bounds;
+    std::vector<RingPoint> rings;
+};
 
 // Subpatch::error_bound of every subpatch, from its ring and centre vertex
 // (rings.vertices[].vertex, rings.centre into `positions`). `known`: per

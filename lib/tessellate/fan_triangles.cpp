@@ -7,27 +7,58 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
 
 namespace seamless {
 
 FanNormals fan_normals(const std::vector<BezierPatch>& patches,
-                       const std::vector<Subpatch>& subpatches, const SubpatchRings& rings,
-                       int threads) {
+                       const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
+                       const SubpatchRings& rings, int threads) {
     const int count = static_cast<int>(subpatches.size());
+    const int np = static_cast<int>(leaf_start.size()) - 1;
     FanNormals normals;
     reserve_huge(normals.ring, rings.vertices.size(), threads);
     normals.ring.resize(rings.vertices.size());
     normals.centre.resize(count);
-    pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
-        for (int i = begin; i < end; ++i) {
+    // A vertex is on the rings of up to four subpatches of a patch: its normal
+    // there, where regular (regular_unit_normal), is computed at its first
+    // slot in a run of the patch's subpatches and copied to the run's later
+    // slots with the same parameters. Runs of at most kRun subpatches of one
+    // patch (a model of one patch still takes every worker), largest first.
+    constexpr int kRun = 256;
+    std::vector<std::array<int, 3>> runs; // patch, first subpatch, end
+    for (int p = 0; p < np; ++p)
+        for (int i = leaf_start[p]; i < leaf_start[p + 1]; i += kRun)
+            runs.push_back({p, i, std::min(i + kRun, leaf_start[p + 1])});
+    const int nr = static_cast<int>(runs.size());
+    std::vector<int> order(nr);
+    std::iota(order.begin(), order.end(), 0);
+    const auto slots = [&](int r) { return rings.start[runs[r][2]] - rings.start[runs[r][1]]; };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return slots(a) > slots(b); });
+    pull_blocks(nr, 1, threads, &order, [&](int r, int) {
+        const auto [p, i0, i1] = runs[r];
+        const BezierPatch& b = patches[p];
+        // The vertices first met in the run: numbered after the centre of the
+        // subpatch before it, up to its last centre (vertex_numbering.h).
+        const int lo = i0 > 0 ? rings.centre[i0 - 1] + 1 : 0, hi = rings.centre[i1 - 1];
+        // Per such vertex: the slot whose regular normal it has, or -1.
+        std::vector<int> known(hi - lo + 1, -1);
+        for (int i = i0; i < i1; ++i) {
             const Subpatch& sp = subpatches[i];
-            const BezierPatch& b = patches[sp.patch];
             const double sc = 0.5 * (param_of(sp.rect.s0) + param_of(sp.rect.s1));
             const double tc = 0.5 * (param_of(sp.rect.t0) + param_of(sp.rect.t1));
             normals.centre[i] = unit_normal(b, sc, tc, sc, tc);
-            for (int j = rings.start[i]; j < rings.start[i + 1]; ++j)
-                normals.ring[j] =
-                    unit_normal(b, rings.vertices[j].fs, rings.vertices[j].ft, sc, tc);
+            for (int j = rings.start[i]; j < rings.start[i + 1]; ++j) {
+                const RingVertex& v = rings.vertices[j];
+                // A vertex met before the run is computed at each of its slots.
+                int* k = v.vertex >= lo && v.vertex <= hi ? &known[v.vertex - lo] : nullptr;
+                if (k && *k >= 0 && rings.vertices[*k].fs == v.fs && rings.vertices[*k].ft == v.ft)
+                    normals.ring[j] = normals.ring[*k];
+                else if (k && *k < 0 && regular_unit_normal(b, v.fs, v.ft, normals.ring[j]))
+                    *k = j;
+                else
+                    normals.ring[j] = unit_normal(b, v.fs, v.ft, sc, tc);
+            }
         }
     });
     return normals;
@@ -35,7 +66,7 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
 
 void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
                 const FanNormals& normals, const std::vector<int>& node_start,
-                std::vector<Vec3>&& positions, int threads, Tessellation& out) {
+                std::vector<Vec3>&& positions, double hull_scale, int threads, Tessellation& out) {
     const size_t count = out.subpatches.size();
     const std::vector<int>& ring_start = rings.start;
     const std::vector<RingVertex>& ring = rings.vertices;
@@ -61,15 +92,45 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
         st.max_depth = std::max(st.max_depth, sp.depth);
         if (!sp.planar) ++st.nonplanar_subpatches;
     }
+    // The five arrays grow side by side: each resize writes its new elements
+    // on one thread. The tree nodes (with the subdivision's copied over) are
+    // the largest: second, so that another worker takes them at once; the
+    // mesh arrays in their former order (the triangles first: with the nodes
+    // first the orientation's reads of them were about 1 ms slower).
     const auto grow = [threads](auto& v, size_t n) {
         reserve_huge(v, n, threads);
         v.resize(n);
     };
-    grow(mesh.triangles, triangles);
-    grow(mesh.triangle_surface, triangles);
-    grow(mesh.corner_normals, triangles);
-    grow(mesh.corner_uvs, triangles);
-    grow(out.trees.nodes, fan_node[count]);
+    pull_blocks(5, 1, threads, nullptr, [&](int k, int) {
+        switch (k) {
+        case 0:
+            grow(mesh.triangles, triangles);
+            break;
+        case 1:
+            grow(out.trees.nodes, fan_node[count]);
+            break;
+        case 2:
+            grow(mesh.triangle_surface, triangles);
+            break;
+        case 3:
+            grow(mesh.corner_normals, triangles);
+            break;
+        default:
+            grow(mesh.corner_uvs, triangles);
+            break;
+        }
+    });
+    // Hulls bottom-up: each fan's subtree as it is written, then each patch's
+    // nodes above them.
+    const auto scaled = [hull_scale](Box3& b) {
+        if (hull_scale != 1 && !b.empty()) b = {hull_scale * b.lo, hull_scale * b.hi};
+    };
+    const auto triangle_box = [&mesh, &positions, &scaled](int f) {
+        Box3 bb;
+        for (int v : mesh.triangles[f]) bb.extend(positions[v]);
+        scaled(bb);
+        return bb;
+    };
     std::vector<int> added(count);
     pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
@@ -95,26 +156,20 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
             // Proposition 11, remark 2: the triangles become the leaves below the subpatch.
             added[i] = attach_triangles_at(out.trees, sp.node, sp.first_triangle, sp.triangle_count,
                                            fan_node[i]);
+            update_triangle_hulls(out.trees, fan_node[i], fan_node[i + 1], triangle_box);
         }
     });
     for (size_t i = 0; i < count; ++i)
         out.trees.depth = std::max(out.trees.depth, out.subpatches[i].depth + added[i]);
-    mesh.positions = std::move(positions);
-    // Hulls bottom-up: each fan's subtree, then each patch's nodes above them.
-    const auto triangle_box = [&mesh](int f) {
-        Box3 bb;
-        for (int v : mesh.triangles[f]) bb.extend(mesh.positions[v]);
-        return bb;
-    };
-    pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
-        for (int i = begin; i < end; ++i)
-            update_triangle_hulls(out.trees, fan_node[i], fan_node[i + 1], triangle_box);
-    });
     const int np = static_cast<int>(node_start.size()) - 1;
     parallel_chunks(np, threads, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p)
+        for (int p = begin; p < end; ++p) {
+            for (int i = node_start[p]; i < node_start[p + 1]; ++i)
+                scaled(out.trees.nodes[i].control_hull);
             update_triangle_hulls(out.trees, node_start[p], node_start[p + 1], triangle_box);
+        }
     });
+    mesh.positions = std::move(positions);
 }
 
 } // namespace seamless

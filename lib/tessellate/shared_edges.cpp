@@ -2,6 +2,7 @@
 #include <seamless/base/disjoint_sets.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/exact_point.h>
 #include <seamless/tessellate/first_met.h>
 #include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/shared_edges.h>
@@ -483,9 +484,9 @@ Vec3 exact_position(const std::vector<BezierPatch>& patches, const BoundaryMatch
         const int ref = m.group_ref[key.id];
         int gs = 0, gt = 0;
         edge_grid_point(ref % 4, key.a, gs, gt);
-        return evaluate(patches[ref / 4], param_of(gs), param_of(gt)).point;
+        return exact_point(patches[ref / 4], param_of(gs), param_of(gt));
     }
-    return evaluate(patches[key.id], param_of(key.a), param_of(key.b)).point;
+    return exact_point(patches[key.id], param_of(key.a), param_of(key.b));
 }
 
 VertexKey canonical_key(const VertexRegistry& vr, VertexKey key) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/exact_point.h>
 #include <seamless/tessellate/planarity.h>
 #include <seamless/tessellate/power_basis.h>
 #include <seamless/tessellate/subdivision.h>
@@ -81,7 +82,7 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     cx.trees.depth = std::max(cx.trees.depth, depth);
 
     const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
-    const Vec3 centre = evaluate(b, 0.5, 0.5).point;
+    const Vec3 centre = exact_point(b, 0.5, 0.5);
     double fan_error = -1;
     const bool forced =
         cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
@@ -92,13 +93,13 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     if (planar) {
         FanMemo* memo = cx.options.memo;
         const std::uint64_t key = memo ? subpatch_key(cx.patch_index, r) : 0;
-        const auto it = memo ? memo->find(key) : FanMemo::iterator{};
-        if (memo && it != memo->end()) {
-            planar = it->second.accepted;
-            fan_error = it->second.fan_error;
+        const FanVerdict* known = memo ? memo->find(key) : nullptr;
+        if (known) {
+            planar = known->accepted;
+            fan_error = known->fan_error;
         } else {
             planar = fan_accepted(cx.options, b, centre, V, fan_error);
-            if (memo) memo->emplace(key, FanVerdict{planar, fan_error});
+            if (memo) (*memo)[key] = FanVerdict{planar, fan_error};
         }
     }
     // A side can only be halved while it spans more than one grid step.

@@ -7,11 +7,11 @@
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
+#include <seamless/tessellate/key_table.h>
 #include <seamless/tessellate/patch_tree.h>
 
 #include <array>
 #include <cstdint>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -40,7 +40,7 @@ struct FanVerdict {
     bool accepted = false;
     double fan_error = -1;
 };
-using FanMemo = std::unordered_map<std::uint64_t, FanVerdict>;
+using FanMemo = KeyTable<FanVerdict>;
 
 struct SubdivisionOptions {
     // Planarity tolerances, model units (section 8); infinity: not tested.

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/exact_point.h>
 #include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/subpatch_ring.h>
 
@@ -88,7 +89,7 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
             out.start[i + 1] = static_cast<int>(ring.size());
             const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
             const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-            out.centre_point[i] = evaluate(patches[sp.patch], sc, tc).point;
+            out.centre_point[i] = exact_point(patches[sp.patch], sc, tc);
         }
     });
     // The blocks laid end to end by a prefix sum.

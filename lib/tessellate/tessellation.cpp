@@ -14,11 +14,28 @@
 
 namespace seamless {
 
+namespace {
+
+// The normal n = sp.normal() is used as it is (not approached from elsewhere).
+bool regular(const SurfacePoint& sp, Vec3 n) {
+    return is_finite(n) && norm(n) > 1e-12 * norm(sp.du) * norm(sp.dv) && norm(n) > 0;
+}
+
+} // namespace
+
+bool regular_unit_normal(const BezierPatch& b, double s, double t, Vec3& n) {
+    const SurfacePoint sp = evaluate(b, s, t);
+    const Vec3 m = sp.normal();
+    if (!regular(sp, m)) return false;
+    n = normalize(m);
+    return true;
+}
+
 Vec3 unit_normal(const BezierPatch& b, double s, double t, double toward_s, double toward_t) {
     SurfacePoint sp = evaluate(b, s, t);
     Vec3 n = sp.normal();
     for (double d : {1e-7, 1e-5, 1e-3, 1e-1, 0.5}) {
-        if (is_finite(n) && norm(n) > 1e-12 * norm(sp.du) * norm(sp.dv) && norm(n) > 0) break;
+        if (regular(sp, n)) break;
         sp = evaluate(b, s + d * (toward_s - s), t + d * (toward_t - t));
         n = sp.normal();
     }
@@ -42,12 +59,26 @@ void add(PhaseSeconds& sum, const PhaseSeconds& p) {
     sum.orientation += p.orientation;
 }
 
+// The memo's per-patch tables and trees: freed patch by patch in parallel
+// rather than on the calling thread when the memo goes.
+void release(PassMemo& memo, int threads) {
+    const int np = static_cast<int>(memo.parts.size());
+    parallel_chunks(np, threads, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p) {
+            memo.verdicts[p] = FanMemo();
+            memo.bounds[p] = KnownBounds();
+            memo.parts[p] = Part();
+        }
+    });
+}
+
 // With a tolerance: a subpatch accepted by its four-triangle bound can end
 // above the tolerance once neighbours add vertices to its sides (its final
 // fan and phi differ from the four triangles'); such subpatches are split in
 // another pass (rarely more than one).
+// The trees' hulls come out multiplied by `hull_scale` (tessellate_pass).
 Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
-                                      const TessellationOptions& options) {
+                                      const TessellationOptions& options, double hull_scale) {
     const auto start = std::chrono::steady_clock::now();
     std::unordered_set<std::uint64_t> split;
     PassMemo memo(patches.size(), options.tolerance > 0);
@@ -57,7 +88,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     int pass = 0;
     for (;; ++pass) {
         const bool last = options.tolerance <= 0 || pass == kPasses - 1;
-        t = tessellate_pass(model, patches, options, split, memo, last);
+        t = tessellate_pass(model, patches, options, split, memo, last, hull_scale);
         add(phases, t.stats.phases);
         if (last || t.stats.above_tolerance == 0) break;
         std::fill(memo.changed.begin(), memo.changed.end(), 0);
@@ -69,6 +100,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         memo.spare_nodes = std::move(t.trees.nodes);
         memo.spare_subpatches = std::move(t.subpatches);
     }
+    release(memo, options.threads);
     t.stats.passes = pass + 1;
     t.stats.phases = phases;
     t.stats.seconds = seconds_since(start);
@@ -108,7 +140,7 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
                              "nearer the origin)");
     }
     const int e = dm > 0 && std::isfinite(dm) ? std::ilogb(dm) : 0;
-    if (e == 0) return tessellate_at_unit_scale(model, patches, options);
+    if (e == 0) return tessellate_at_unit_scale(model, patches, options, 1);
     const auto start = std::chrono::steady_clock::now();
     Lap lap;
     const double down = std::ldexp(1.0, -e), up = std::ldexp(1.0, e);
@@ -126,21 +158,13 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     if (o.seam_tolerance >= 0) o.seam_tolerance *= down;
     o.tolerance *= down;
     const double scale_in = lap();
-    Tessellation t = tessellate_at_unit_scale(m, ps, o);
+    // The trees' hulls, exactly up times theirs at unit scale, are written so
+    // by the fans (one pass over the nodes fewer).
+    Tessellation t = tessellate_at_unit_scale(m, ps, o, up);
     lap();
-    auto grow = [&](Box3& b) {
-        if (!b.empty()) b = {up * b.lo, up * b.hi};
-    };
     parallel_chunks(t.mesh.vertex_count(), options.threads, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) t.mesh.positions[i] = up * t.mesh.positions[i];
     });
-    parallel_chunks(static_cast<int>(t.trees.nodes.size()), options.threads,
-                    [&](int begin, int end) {
-                        for (int i = begin; i < end; ++i) {
-                            grow(t.trees.nodes[i].control_hull);
-                            grow(t.trees.nodes[i].triangle_hull);
-                        }
-                    });
     parallel_chunks(static_cast<int>(t.subpatches.size()), options.threads,
                     [&](int begin, int end) {
                         for (int i = begin; i < end; ++i) {

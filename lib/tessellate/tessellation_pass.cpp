@@ -20,7 +20,7 @@ namespace seamless {
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
                              const TessellationOptions& options,
                              const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
-                             bool last) {
+                             bool last, double hull_scale) {
     const auto start = std::chrono::steady_clock::now();
     Lap lap;
     Tessellation out;
@@ -156,12 +156,13 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     }
 
     // (d3) Normals at the fans' vertices, in parallel.
-    const FanNormals normals = fan_normals(patches, out.subpatches, rings, options.threads);
+    const FanNormals normals =
+        fan_normals(patches, out.subpatches, ranges.leaf_start, rings, options.threads);
     phase.normals += lap();
 
     // (d4) Fan triangles in subpatch order, their patch-tree leaves and hulls.
-    write_fans(patches, rings, normals, ranges.node_start, std::move(vr.positions), options.threads,
-               out);
+    write_fans(patches, rings, normals, ranges.node_start, std::move(vr.positions), hull_scale,
+               options.threads, out);
     phase.fans += lap();
 
     // At unit scale: the signed volume of a closed component stays finite.
