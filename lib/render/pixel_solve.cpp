@@ -273,7 +273,13 @@ bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& 
 
 void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
                         Interval a, Interval b, long long family) {
-    if (family < 0 || family != family_) {
+    // Siblings share their parent's marks: the same list (a guard against a
+    // family id reused for other marks).
+    const bool sibling =
+        family >= 0 && family == family_ && marks == family_marks_ && n == family_n_;
+    family_marks_ = marks;
+    family_n_ = n;
+    if (!sibling) {
         bisections_.clear();
         family_coefs_.clear();
         copied_ = 0;

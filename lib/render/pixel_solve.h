@@ -218,6 +218,8 @@ class SharedMarks {
         size_t coef;
     };
     long long family_ = -1;
+    const Mark* family_marks_ = nullptr; // the family's marks and their count
+    size_t family_n_ = 0;
     int copied_ = 0;
     std::vector<Bisection> bisections_;
     SubpatchArena family_coefs_;
