@@ -320,6 +320,20 @@ TEST_CASE("Siblings sharing their parent's bisections solve their pixels as each
     }
     CHECK(hits > 300);
     CHECK(copied > 10);
+    // A family id given again with other marks (another list) copies nothing:
+    // the pixels of a second sub-screen solve as without the family.
+    for (const int x0 : {40, 80}) {
+        Interval aB, bB;
+        const std::vector<Mark> marks = tm.meeting(x0, 50, x0 + 2, 52, aB, bB);
+        const size_t coef_end = tm.coefs.size();
+        plain.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
+        family.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB, 999);
+        for (int y = 50; y <= 52; ++y)
+            for (int x = x0; x <= x0 + 2; ++x)
+                twin.both(ps.frame.screen_a(x + 0.5), ps.frame.screen_b(y + 0.5));
+        CHECK(family.copied() == 0);
+        tm.coefs.resize(coef_end);
+    }
 }
 
 TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the start point alone",
