@@ -272,7 +272,21 @@ bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& 
 }
 
 void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
-                        Interval a, Interval b) {
+                        Interval a, Interval b, long long family) {
+    // Siblings share their parent's marks: the same list (a guard against a
+    // family id reused for other marks).
+    const bool sibling =
+        family >= 0 && family == family_ && marks == family_marks_ && n == family_n_;
+    family_marks_ = marks;
+    family_n_ = n;
+    if (!sibling) {
+        bisections_.clear();
+        family_coefs_.clear();
+        copied_ = 0;
+    }
+    family_ = family;
+    root_.resize(n);
+    for (size_t k = 0; k < n; ++k) root_[k] = static_cast<int>(k);
     ps_ = &ps;
     coefs_ = &coefs;
     marks_.assign(marks, marks + n);
@@ -326,15 +340,8 @@ bool SharedMarks::refine(size_t k) {
     const Mark m = marks_[k];
     const int dir = m.box.s.width() >= m.box.t.width() ? 0 : 1;
     if (!((dir == 0 ? m.box.s : m.box.t).width() > 1e-9)) return false;
-    const SubpatchShape sh = ps_->patches[m.patch].shape;
     Mark half[2];
-    bisect_mark(*coefs_, sh, m, dir, half);
-    for (Mark& h : half) {
-        // The halves' subpatches enclose them (convex hull property); the
-        // parent's hull still holds them too.
-        update_enclosures(*coefs_, sh, h);
-        for (int c = 0; c < 3; ++c) h.hull[c] = intersect(h.hull[c], m.hull[c]);
-    }
+    bisect(k, half);
     marks_[k] = half[0];
     marks_.push_back(half[1]);
     screen_[k] = screen(half[0]);
@@ -352,7 +359,42 @@ bool SharedMarks::refine(size_t k) {
     missed_.push_back(missed_[k]);
     depth_[k] = static_cast<char>(depth_[k] + 1);
     depth_.push_back(depth_[k]);
+    root_.push_back(root_[k]);
     return true;
+}
+
+void SharedMarks::bisect(size_t k, Mark half[2]) {
+    const Mark& m = marks_[k];
+    const SubpatchShape sh = ps_->patches[m.patch].shape;
+    const size_t size = sh.size();
+    SubpatchArena& coefs = *coefs_;
+    // A sibling of B bisected the same mark: its halves, subpatches copied.
+    // The marks of a family are equal up to their subpatches' offsets, so a
+    // mark's root and box name it.
+    for (const Bisection& e : bisections_) {
+        if (e.root != root_[k] || !(e.box.s == m.box.s && e.box.t == m.box.t)) continue;
+        for (int i = 0; i < 2; ++i) {
+            half[i] = e.half[i];
+            half[i].coef = coefs.size();
+            coefs.insert(coefs.end(), family_coefs_.begin() + e.coef + i * size,
+                         family_coefs_.begin() + e.coef + (i + 1) * size);
+        }
+        ++copied_;
+        return;
+    }
+    bisect_mark(coefs, sh, m, m.box.s.width() >= m.box.t.width() ? 0 : 1, half);
+    for (int i = 0; i < 2; ++i) {
+        Mark& h = half[i];
+        // The halves' subpatches enclose them (convex hull property); the
+        // parent's hull still holds them too.
+        update_enclosures(coefs, sh, h);
+        for (int c = 0; c < 3; ++c) h.hull[c] = intersect(h.hull[c], m.hull[c]);
+    }
+    if (family_ < 0) return;
+    bisections_.push_back({root_[k], m.box, {half[0], half[1]}, family_coefs_.size()});
+    for (int i = 0; i < 2; ++i)
+        family_coefs_.insert(family_coefs_.end(), coefs.begin() + half[i].coef,
+                             coefs.begin() + half[i].coef + size);
 }
 
 namespace {

@@ -146,9 +146,12 @@ class SharedMarks {
   public:
     // B's marks (n of them, subpatches in `coefs`), for the rays through [a] x
     // [b]. The halves of bisected marks are appended to `coefs` (the caller
-    // truncates it after B).
+    // truncates it after B). family: B's siblings (the sub-screens split from
+    // one parent, sharing its marks and `coefs` up to the end of them) pass
+    // the same id, and the bisections one of them made are copied for the
+    // next instead of computed again (the same halves, bit for bit); -1: none.
     void reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
-               Interval a, Interval b);
+               Interval a, Interval b, long long family = -1);
     const Mark* marks() const { return marks_.data(); }
     // may_meet(marks()[k], a, b) for the thin ray through (a, b): the mark's
     // screen enclosure as four bounds kept per mark (may_meet's own test
@@ -190,6 +193,8 @@ class SharedMarks {
     // every ray of B (may_hold_zero's G there), computed on first need.
     const Interval* centre(size_t k);
     static constexpr int kMaxDepth = 3; // bisections of one mark of B
+    // Bisections copied from B's siblings since its family began.
+    int copied() const { return copied_; }
 
   private:
     const ProjectedScene* ps_ = nullptr;
@@ -201,6 +206,24 @@ class SharedMarks {
     std::vector<SurfacePoint> at_;
     std::vector<std::array<Interval, 3>> centre_;
     std::vector<char> known_, started_, depth_, evaluated_, centred_, missed_;
+    // Per mark: the index of the mark of B it was bisected from (itself when not).
+    std::vector<int> root_;
+    // The bisections made for B's family (reset's family): the halves of the
+    // mark of box `box` bisected from root mark `root`, their subpatches at
+    // `coef` in family_coefs_ (two of the shape's size), as refine made them.
+    struct Bisection {
+        int root;
+        ParamBox box;
+        Mark half[2];
+        size_t coef;
+    };
+    long long family_ = -1;
+    const Mark* family_marks_ = nullptr; // the family's marks and their count
+    size_t family_n_ = 0;
+    int copied_ = 0;
+    std::vector<Bisection> bisections_;
+    SubpatchArena family_coefs_;
+    void bisect(size_t k, Mark half[2]);
     // Per mark: pa and pb's bounds (an empty range behind the eye), or
     // kGeneral in the first where pa or pb is not finite.
     std::vector<std::array<double, 4>> screen_;

@@ -104,6 +104,26 @@ struct TeapotMarks {
     }
 };
 
+// One ray solved with two SharedMarks of the same sub-screen that must agree
+// bit for bit (plain: the reference); returns the second's hit.
+struct TwinSolves {
+    TeapotMarks tm;
+    PixelScratch scratch;
+    RenderStats st;
+    SharedMarks plain, other;
+    PixelHit both(double a, double b) {
+        const PixelHit h0 = solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &plain);
+        const PixelHit h1 = solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &other);
+        REQUIRE(h0.patch == h1.patch);
+        if (h1.patch >= 0) {
+            CHECK(h0.s == h1.s);
+            CHECK(h0.t == h1.t);
+            CHECK(h0.q == h1.q);
+        }
+        return h1;
+    }
+};
+
 } // namespace
 
 TEST_CASE("Certified Newton agrees with the covering method", "[pixel_solve]") {
@@ -252,19 +272,82 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     CHECK(background > 50);
 }
 
+TEST_CASE("Siblings sharing their parent's bisections solve their pixels as each alone",
+          "[pixel_solve]") {
+    // paint_pixels passes one family id for the four children of a parent
+    // (the same marks): a mark bisected for one child is copied for the next
+    // instead of bisected again. Hits and marks must be bit for bit those of
+    // the children solved without the family.
+    TwinSolves twin;
+    TeapotMarks& tm = twin.tm;
+    const ProjectedScene& ps = tm.ps;
+    SharedMarks &plain = twin.plain, &family = twin.other;
+    std::mt19937 rng(31);
+    std::uniform_int_distribution<int> X(0, tm.W - 7), Y(0, tm.H - 7);
+    int hits = 0, copied = 0;
+    for (int n = 0; n < 60; ++n) {
+        const int x0 = X(rng), y0 = Y(rng);
+        Interval aP, bP;
+        const std::vector<Mark> marks = tm.meeting(x0, y0, x0 + 5, y0 + 5, aP, bP);
+        if (marks.empty()) continue;
+        const size_t coef_end = tm.coefs.size();
+        for (int kid = 0; kid < 4; ++kid) {
+            const int kx = x0 + 3 * (kid % 2), ky = y0 + 3 * (kid / 2);
+            const Interval aB(ps.frame.screen_a(kx + 0.5), ps.frame.screen_a(kx + 2.5));
+            const Interval bB(ps.frame.screen_b(ky + 0.5), ps.frame.screen_b(ky + 2.5));
+            plain.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
+            family.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB, n);
+            for (int y = ky; y <= ky + 2; ++y)
+                for (int x = kx; x <= kx + 2; ++x)
+                    hits +=
+                        twin.both(ps.frame.screen_a(x + 0.5), ps.frame.screen_b(y + 0.5)).patch >=
+                        0;
+            REQUIRE(plain.size() == family.size());
+            for (size_t k = 0; k < plain.size(); ++k) {
+                const Mark &m0 = plain.marks()[k], &m1 = family.marks()[k];
+                CHECK(m0.box.s == m1.box.s);
+                CHECK(m0.box.t == m1.box.t);
+                for (int c = 0; c < 3; ++c) CHECK(m0.hull[c] == m1.hull[c]);
+                CHECK(m0.pa == m1.pa);
+                CHECK(m0.pb == m1.pb);
+                const size_t size = ps.patches[m0.patch].shape.size();
+                for (size_t i = 0; i < size; ++i)
+                    CHECK(tm.coefs[m0.coef + i] == tm.coefs[m1.coef + i]);
+            }
+            if (kid == 3) copied += family.copied();
+            tm.coefs.resize(coef_end);
+        }
+    }
+    CHECK(hits > 300);
+    CHECK(copied > 10);
+    // A family id given again with other marks (another list) copies nothing:
+    // the pixels of a second sub-screen solve as without the family.
+    for (const int x0 : {40, 80}) {
+        Interval aB, bB;
+        const std::vector<Mark> marks = tm.meeting(x0, 50, x0 + 2, 52, aB, bB);
+        const size_t coef_end = tm.coefs.size();
+        plain.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
+        family.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB, 999);
+        for (int y = 50; y <= 52; ++y)
+            for (int x = x0; x <= x0 + 2; ++x)
+                twin.both(ps.frame.screen_a(x + 0.5), ps.frame.screen_b(y + 0.5));
+        CHECK(family.copied() == 0);
+        tm.coefs.resize(coef_end);
+    }
+}
+
 TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the start point alone",
           "[pixel_solve]") {
     // paint_pixels hands SharedMarks the patch evaluated at each shaded hit
     // (surface_frame's), and the next ray's Newton run on that mark takes it
     // as its first step's evaluation: the hits must be bit for bit those of
     // the same sub-screens solved without it.
-    TeapotMarks tm;
+    TwinSolves twin;
+    TeapotMarks& tm = twin.tm;
     const ProjectedScene& ps = tm.ps;
+    SharedMarks &plain = twin.plain, &kept = twin.other;
     std::mt19937 rng(23);
     std::uniform_int_distribution<int> X(0, tm.W - 5), Y(0, tm.H - 4);
-    PixelScratch scratch;
-    SharedMarks plain, kept;
-    RenderStats st;
     int hits = 0, reused = 0;
     for (int n = 0; n < 120; ++n) {
         const int x0 = X(rng), y0 = Y(rng), x1 = x0 + 3, y1 = y0 + 2;
@@ -280,14 +363,9 @@ TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the st
                 bool available = false; // a kept evaluation this ray may start from
                 for (size_t k = 0; k < kept.size(); ++k) available |= kept.at_start(k) != nullptr;
                 reused += available;
-                const PixelHit h0 = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &plain);
-                const PixelHit h1 = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &kept);
-                REQUIRE(h0.patch == h1.patch);
+                const PixelHit h1 = twin.both(a, b);
                 if (h1.patch < 0) continue;
                 ++hits;
-                CHECK(h0.s == h1.s);
-                CHECK(h0.t == h1.t);
-                CHECK(h0.q == h1.q);
                 if (h1.mark < 0) continue;
                 Vec3 P, N;
                 SurfacePoint at;
