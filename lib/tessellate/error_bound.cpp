@@ -275,7 +275,9 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
             radial[k][a] = {u, g};
         }
 
-    double bound = 0, largest_g = 0;
+    // The largest square (its root, taken once, is the largest root bit for
+    // bit: the root is monotone and correctly rounded).
+    double bound2 = 0, largest_g = 0;
     // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre); unset until written.
     union GridStore {
         GridStore() {}
@@ -335,7 +337,7 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
             const double dt = std::max({u0.t, u1.t, u2.t}) - std::min({u0.t, u1.t, u2.t});
             en += taylor_remainder(nb[k].normal, ds, dt);
             et += taylor_remainder(nb[k].tangential, ds, dt);
-            bound = std::max(bound, std::sqrt(en * en + et * et));
+            bound2 = std::max(bound2, en * en + et * et);
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
@@ -344,7 +346,7 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
             }
     }
     // Relative rounding of the sums above.
-    return {bound * (1 + 64 * kEps), largest_g};
+    return {std::sqrt(bound2) * (1 + 64 * kEps), largest_g};
 }
 
 } // namespace
@@ -608,7 +610,10 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
 
     // (3) The bound on every refined triangle.
     const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
-    double bound = 0;
+    // The largest square: the root is monotone and correctly rounded, so the
+    // root of the largest square is the largest root, bit for bit, and no root
+    // sits on the chain from one refined triangle to the next.
+    double bound2 = 0;
     for (size_t k = 0; k < n; ++k) {
         const size_t k1 = (k + 1) % n;
         Vec3 nk = cross(ring[k].position - centre, ring[k1].position - centre);
@@ -635,10 +640,12 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
             double Rn = taylor_remainder(nb.normal, ds, dt);
             double R = taylor_remainder(nb.tangential, ds, dt);
             // Only where it can raise the running maximum above `enough`
-            // (lossless when enough = 0).
-            const double top = std::max(bound, enough);
+            // (lossless when enough = 0); the root taken only here.
             if (R > gnt + Rn && s1 > s0 && t1 > t0 &&
-                (gnt + Rn) * (gnt + Rn) + (gtt + R) * (gtt + R) > top * top) {
+                (gnt + Rn) * (gnt + Rn) + (gtt + R) * (gtt + R) > [&] {
+                    const double top = std::max(std::sqrt(bound2), enough);
+                    return top * top;
+                }()) {
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
                 const Net local = box_net(patch, s0, s1, t0, t1, centre);
@@ -647,7 +654,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 R = std::min(R, taylor_remainder(ln.tangential, 1, 1));
             }
             const double en = gnt + Rn, et = gtt + R;
-            bound = std::max(bound, std::sqrt(en * en + et * et));
+            bound2 = std::max(bound2, en * en + et * et);
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
@@ -655,7 +662,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 if (a + c + 2 <= m) tri(a + 1, c, a + 1, c + 1, a, c + 1);
             }
     }
-    return bound * (1 + 64 * kEps);
+    return std::sqrt(bound2) * (1 + 64 * kEps);
 }
 
 } // namespace
