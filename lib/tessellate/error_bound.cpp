@@ -482,6 +482,13 @@ Node vertex_phi(const Surface& b, const RingPoint& p, PhiMemo& memo) {
     return e.phi;
 }
 
+// split_bounds over the net of a box; out of line, so that its 14 KB net is
+// not in the frame of the refined triangles' loop, which rarely needs it.
+[[gnu::noinline]] SplitBounds box_split_bounds(const BezierPatch& patch, double s0, double s1,
+                                               double t0, double t1, Vec3 centre, Vec3 n) {
+    return split_bounds(box_net(patch, s0, s1, t0, t1, centre), n);
+}
+
 // The bound of certified_fan_bound with every fan triangle refined m times
 // (m a multiple of kSideRefinement), without the rounding allowance. phi at
 // the refined vertices on the radial edges and inside the fan triangles (no
@@ -630,7 +637,8 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 gn[a][c] = std::abs(dn);
                 gt[a][c] = norm(g - dn * nk);
             }
-        auto tri = [&](int a0, int c0, int a1, int c1, int a2, int c2) {
+        auto tri = [&](int a0, int c0, int a1, int c1, int a2, int c2)
+            __attribute__((always_inline)) {
             const Param &u0 = node(k, a0, c0).u, &u1 = node(k, a1, c1).u, &u2 = node(k, a2, c2).u;
             const double gnt = std::max({gn[a0][c0], gn[a1][c1], gn[a2][c2]});
             const double gtt = std::max({gt[a0][c0], gt[a1][c1], gt[a2][c2]});
@@ -648,8 +656,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 }()) {
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
-                const Net local = box_net(patch, s0, s1, t0, t1, centre);
-                const SplitBounds ln = split_bounds(local, nk);
+                const SplitBounds ln = box_split_bounds(patch, s0, s1, t0, t1, centre, nk);
                 Rn = std::min(Rn, taylor_remainder(ln.normal, 1, 1));
                 R = std::min(R, taylor_remainder(ln.tangential, 1, 1));
             }
