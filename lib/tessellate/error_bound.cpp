@@ -275,7 +275,9 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
             radial[k][a] = {u, g};
         }
 
-    double bound = 0, largest_g = 0;
+    // The largest square (its root, taken once, is the largest root bit for
+    // bit: the root is monotone and correctly rounded).
+    double bound2 = 0, largest_g = 0;
     // grid[a][b]: centre + a/m (V[k] - centre) + b/m (V[k+1] - centre); unset until written.
     union GridStore {
         GridStore() {}
@@ -335,7 +337,7 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
             const double dt = std::max({u0.t, u1.t, u2.t}) - std::min({u0.t, u1.t, u2.t});
             en += taylor_remainder(nb[k].normal, ds, dt);
             et += taylor_remainder(nb[k].tangential, ds, dt);
-            bound = std::max(bound, std::sqrt(en * en + et * et));
+            bound2 = std::max(bound2, en * en + et * et);
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
@@ -344,7 +346,7 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
             }
     }
     // Relative rounding of the sums above.
-    return {bound * (1 + 64 * kEps), largest_g};
+    return {std::sqrt(bound2) * (1 + 64 * kEps), largest_g};
 }
 
 } // namespace
@@ -480,6 +482,13 @@ Node vertex_phi(const Surface& b, const RingPoint& p, PhiMemo& memo) {
     return e.phi;
 }
 
+// split_bounds over the net of a box; out of line, so that its 14 KB net is
+// not in the frame of the refined triangles' loop, which rarely needs it.
+[[gnu::noinline]] SplitBounds box_split_bounds(const BezierPatch& patch, double s0, double s1,
+                                               double t0, double t1, Vec3 centre, Vec3 n) {
+    return split_bounds(box_net(patch, s0, s1, t0, t1, centre), n);
+}
+
 // The bound of certified_fan_bound with every fan triangle refined m times
 // (m a multiple of kSideRefinement), without the rounding allowance. phi at
 // the refined vertices on the radial edges and inside the fan triangles (no
@@ -608,7 +617,10 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
 
     // (3) The bound on every refined triangle.
     const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
-    double bound = 0;
+    // The largest square: the root is monotone and correctly rounded, so the
+    // root of the largest square is the largest root, bit for bit, and no root
+    // sits on the chain from one refined triangle to the next.
+    double bound2 = 0;
     for (size_t k = 0; k < n; ++k) {
         const size_t k1 = (k + 1) % n;
         Vec3 nk = cross(ring[k].position - centre, ring[k1].position - centre);
@@ -625,7 +637,8 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 gn[a][c] = std::abs(dn);
                 gt[a][c] = norm(g - dn * nk);
             }
-        auto tri = [&](int a0, int c0, int a1, int c1, int a2, int c2) {
+        auto tri = [&](int a0, int c0, int a1, int c1, int a2, int c2)
+            __attribute__((always_inline)) {
             const Param &u0 = node(k, a0, c0).u, &u1 = node(k, a1, c1).u, &u2 = node(k, a2, c2).u;
             const double gnt = std::max({gn[a0][c0], gn[a1][c1], gn[a2][c2]});
             const double gtt = std::max({gt[a0][c0], gt[a1][c1], gt[a2][c2]});
@@ -635,19 +648,20 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
             double Rn = taylor_remainder(nb.normal, ds, dt);
             double R = taylor_remainder(nb.tangential, ds, dt);
             // Only where it can raise the running maximum above `enough`
-            // (lossless when enough = 0).
-            const double top = std::max(bound, enough);
+            // (lossless when enough = 0); the root taken only here.
             if (R > gnt + Rn && s1 > s0 && t1 > t0 &&
-                (gnt + Rn) * (gnt + Rn) + (gtt + R) * (gtt + R) > top * top) {
+                (gnt + Rn) * (gnt + Rn) + (gtt + R) * (gtt + R) > [&] {
+                    const double top = std::max(std::sqrt(bound2), enough);
+                    return top * top;
+                }()) {
                 // The tangential remainder dominates (a pole's sector, a
                 // strongly varying speed): bounds over phi(sigma)'s box alone.
-                const Net local = box_net(patch, s0, s1, t0, t1, centre);
-                const SplitBounds ln = split_bounds(local, nk);
+                const SplitBounds ln = box_split_bounds(patch, s0, s1, t0, t1, centre, nk);
                 Rn = std::min(Rn, taylor_remainder(ln.normal, 1, 1));
                 R = std::min(R, taylor_remainder(ln.tangential, 1, 1));
             }
             const double en = gnt + Rn, et = gtt + R;
-            bound = std::max(bound, std::sqrt(en * en + et * et));
+            bound2 = std::max(bound2, en * en + et * et);
         };
         for (int a = 0; a < m; ++a)
             for (int c = 0; a + c < m; ++c) {
@@ -655,7 +669,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
                 if (a + c + 2 <= m) tri(a + 1, c, a + 1, c + 1, a, c + 1);
             }
     }
-    return bound * (1 + 64 * kEps);
+    return std::sqrt(bound2) * (1 + 64 * kEps);
 }
 
 } // namespace
