@@ -121,7 +121,10 @@ IVec<2> RaySystem::at(const Interval* X) const {
 }
 
 const ClusterSystem& RaySystem::forms() {
-    if (!built_) cluster_system(pp_.forms, Interval(a_), Interval(b_), sys_);
+    if (!built_) {
+        cluster_system(pp_.forms, Interval(a_), Interval(b_), sys_);
+        if (of_) *of_ = {&pp_, a_, b_};
+    }
     built_ = true;
     return sys_;
 }
@@ -432,7 +435,7 @@ void cover(const ProjectedPatch& pp, double a, double b, const ParamBox& box, in
 void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box0, int patch,
                PixelScratch& scratch, RenderStats& st, Nearest& near,
                const MarkJacobian* J = nullptr, const double* start = nullptr) {
-    RaySystem sys(pp, a, b, scratch.sys);
+    RaySystem sys(pp, a, b, scratch.sys, scratch.sys_of);
     ++near.best.candidates;
     ++st.pixel_patch_solves;
     constexpr int kDepth = 6;
@@ -519,7 +522,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     // proved miss leaves no hit to certify), without Newton's wasted run
     // beside the patch. Teapot 640x480 x 16: 852 -> 842 M in paint_pixels.
     bool held = false; // the Hansen-Sengupta step over the box ran and left `rest`
-    RaySystem sys(pp, a, b, scratch.sys);
+    RaySystem sys(pp, a, b, scratch.sys, scratch.sys_of);
     if (shared.missed(k) && J.regular) {
         if (!may_hold_zero(sys, J, mark.box, rest, st, shared.centre(k))) return;
         held = true;
@@ -577,6 +580,7 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
     // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
     auto& order = scratch.order;
     order.clear();
+    scratch.sys_of = {};
     if (shared) {
         marks = shared->marks();
         n = shared->size();
