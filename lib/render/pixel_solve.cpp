@@ -179,8 +179,11 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
                 const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
                 const double* start, const SurfacePoint* at_start) {
     // At most one zero in box when A is regular: Newton in doubles from
-    // `start` or the box's centre, kept inside the box; a run that keeps
-    // leaving the box (the ray passes beside the patch) stops early.
+    // `start` or the box's centre; a run whose step leaves the box (mostly
+    // the ray passing beside the patch) stops there, and the ray goes on to
+    // the miss proof and the clip. (It stopped after three such steps in a
+    // row, each clamped to the box: teapot 640x480 x 16 paint_pixels 497.4 ->
+    // 486.4 M instructions stopping at the first, with PNGs byte-identical.)
     if (!J.regular) return false;
     double s = box.s.mid(), t = box.t.mid(), step = 1;
     if (start) {
@@ -194,21 +197,15 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     // below 1e-11 (which saves the last evaluation of most runs). No
     // certificate rests on this: where the point is not that close, the step
     // below fails and the ray goes on to the clip.
-    int outside = 0;
     bool converged = false;
-    for (int it = 0, prev = 0; it < 16 && !converged && outside < 3; ++it) {
+    for (int it = 0, prev = 0; it < 16 && !converged; ++it) {
         const double last = step;
         if (!(it == 0 && at_start ? newton_step(*at_start, a, b, s, t, step)
                                   : newton_step(pp.patch, a, b, s, t, step)))
             break;
-        const double cs = std::clamp(s, box.s.lo(), box.s.hi());
-        const double ct = std::clamp(t, box.t.lo(), box.t.hi());
-        outside = (cs != s || ct != t) ? outside + 1 : 0;
-        s = cs;
-        t = ct;
+        if (!box.s.contains(s) || !box.t.contains(t)) break;
         converged =
-            outside == 0 &&
-            (step <= 1e-10 || (prev && step <= 1e-5 && step * step * step < 1e-11 * last * last));
+            step <= 1e-10 || (prev && step <= 1e-5 && step * step * step < 1e-11 * last * last);
         prev = 1;
     }
     if (!converged) return false;
