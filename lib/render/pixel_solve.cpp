@@ -551,8 +551,16 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     }
     shared.miss(k); // unless solve_box finds a hit below
     ParamBox box;
-    if (!clip_box(shared.coefs(), pp.shape, Interval(a), Interval(b), mark, box)) return;
-    box = {intersect(box.s, rest.s), intersect(box.t, rest.t)}; // both hold every hit
+    // Where the Hansen-Sengupta step shrank the box well (below a quarter,
+    // solve_box's rule), solve_box starts on its box without the clip of the
+    // mark's whole subpatch (teapot 640x480 x 16: paint_pixels 484.7 -> 457.2
+    // M; a tenth: 458.0 M, a half: 466.4 M, always: 514.6 M).
+    if (rest.s.width() * rest.t.width() < 0.25 * mark.box.s.width() * mark.box.t.width()) {
+        box = rest;
+    } else {
+        if (!clip_box(shared.coefs(), pp.shape, Interval(a), Interval(b), mark, box)) return;
+        box = {intersect(box.s, rest.s), intersect(box.t, rest.t)}; // both hold every hit
+    }
     if (box.s.is_empty() || box.t.is_empty()) return;
     const PixelHit before = near.best;
     solve_box(pp, a, b, box, mark.patch, scratch, st, near, &J, shared.start(k));
