@@ -45,8 +45,19 @@ struct PixelHit {
 };
 
 // Scratch space reused from ray to ray (nothing allocated per ray once grown).
+// Whose power forms a ClusterSystem holds (RaySystem::forms): the patch and
+// the ray, or none.
+struct FormsKey {
+    const ProjectedPatch* pp = nullptr;
+    double a = 0, b = 0;
+};
+
 struct PixelScratch {
     ClusterSystem sys;
+    // sys's owner while one ray is solved (the marks of one patch, halves of
+    // a bisection, share the ray's forms); reset by solve_pixel, since
+    // others write sys too.
+    FormsKey sys_of;
     std::vector<RayPatchHit> hits;
     std::vector<std::pair<double, int>> order;
     std::vector<std::pair<ParamBox, int>> boxes; // boxes still to solve, with their depth
@@ -60,6 +71,10 @@ class RaySystem {
   public:
     RaySystem(const ProjectedPatch& pp, double a, double b, ClusterSystem& storage)
         : pp_(pp), a_(a), b_(b), sys_(storage) {}
+    // With storage's owner: forms already built there for this patch and ray are reused.
+    RaySystem(const ProjectedPatch& pp, double a, double b, ClusterSystem& storage, FormsKey& of)
+        : pp_(pp), a_(a), b_(b), sys_(storage), of_(&of),
+          built_(of.pp == &pp && of.a == a && of.b == b) {}
     // G at (s, t) in [0,1]^2, enclosed (enclose_homogeneous of bezier_patch.h).
     IVec<2> at(double s, double t) const;
     // G from X, Y, Z enclosed at a point (X[0..2]; one point for many rays).
@@ -71,6 +86,7 @@ class RaySystem {
     const ProjectedPatch& pp_;
     double a_, b_;
     ClusterSystem& sys_;
+    FormsKey* of_ = nullptr;
     bool built_ = false;
 };
 

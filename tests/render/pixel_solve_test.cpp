@@ -528,3 +528,36 @@ TEST_CASE("G at an enclosed point, formed in doubles, holds the interval operati
         CHECK(G[1].contains(X[1] - Interval(b) * X[2]));
     }
 }
+
+TEST_CASE("A RaySystem reuses forms built in its storage only for the same patch and ray",
+          "[pixel_solve]") {
+    // Marks of one patch solved for one ray share the ray's power forms
+    // (PixelScratch::sys_of); another ray or patch builds its own.
+    std::mt19937 rng(23);
+    const ProjectedPatch p0 = dome(rng, 0.8), p1 = dome(rng, 3.0);
+    const ParamBox box{Interval(0.2, 0.6), Interval(0.3, 0.5)};
+    auto same = [&](const MarkJacobian& x, const MarkJacobian& y) {
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+                if (!(x.A(i, j).lo() == y.A(i, j).lo() && x.A(i, j).hi() == y.A(i, j).hi()))
+                    return false;
+        return true;
+    };
+    auto alone = [&](const ProjectedPatch& pp, double a, double b) {
+        ClusterSystem own;
+        RaySystem sys(pp, a, b, own);
+        return mark_jacobian(sys.forms(), box);
+    };
+    ClusterSystem storage;
+    FormsKey of;
+    const struct {
+        const ProjectedPatch* pp;
+        double a, b;
+    } rays[] = {{&p0, 0.01, -0.02}, {&p0, 0.01, -0.02}, {&p0, 0.03, -0.02},
+                {&p1, 0.03, -0.02}, {&p1, 0.03, 0.05},  {&p0, 0.01, -0.02}};
+    for (const auto& r : rays) {
+        RaySystem sys(*r.pp, r.a, r.b, storage, of);
+        CHECK(same(mark_jacobian(sys.forms(), box), alone(*r.pp, r.a, r.b)));
+        CHECK(of.pp == r.pp);
+    }
+}
