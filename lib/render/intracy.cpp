@@ -39,6 +39,7 @@
 #include <seamless/render/ray_cluster.h>
 #include <seamless/render/render.h>
 #include <seamless/render/shading.h>
+#include <seamless/render/shared_marks.h>
 #include <seamless/render/step_clock.h>
 #include <seamless/render/trace.h>
 
@@ -292,7 +293,7 @@ class PartRenderer {
     // without a cluster attempt: a few certified Newton solves cost less than
     // narrowing, certificate and SHADE for a cluster of a handful of pixels.
     // The pixels share the marks' Jacobians, Newton's starting points and the
-    // bisections of marks a silhouette crosses (SharedMarks of pixel_solve.h,
+    // bisections of marks a silhouette crosses (SharedMarks of shared_marks.h,
     // appended to coefs_ past B.coef_end).
     void paint_pixels(const SubScreen& B, RenderStats& st) {
         const StepClock clock(st.single_pixel_seconds);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/pixel_solve.h>
+#include <seamless/render/shared_marks.h>
 
 #include <seamless/interval/hansen_sengupta.h>
 
@@ -269,132 +270,6 @@ bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& 
     if (whole.box.is_empty()) return false;
     rest = {whole.box[0], whole.box[1]}; // every zero in box is here (Theorem 6 i)
     return true;
-}
-
-void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
-                        Interval a, Interval b, long long family) {
-    // Siblings share their parent's marks: the same list (a guard against a
-    // family id reused for other marks).
-    const bool sibling =
-        family >= 0 && family == family_ && marks == family_marks_ && n == family_n_;
-    family_marks_ = marks;
-    family_n_ = n;
-    if (!sibling) {
-        bisections_.clear();
-        family_coefs_.clear();
-        copied_ = 0;
-    }
-    family_ = family;
-    root_.resize(n);
-    for (size_t k = 0; k < n; ++k) root_[k] = static_cast<int>(k);
-    ps_ = &ps;
-    coefs_ = &coefs;
-    marks_.assign(marks, marks + n);
-    screen_.resize(n);
-    for (size_t k = 0; k < n; ++k) screen_[k] = screen(marks[k]);
-    a_ = a;
-    b_ = b;
-    jacobians_.resize(n);
-    start_.resize(n);
-    at_.resize(n);
-    known_.assign(n, 0);
-    started_.assign(n, 0);
-    evaluated_.assign(n, 0);
-    depth_.assign(n, 0);
-    centre_.resize(n);
-    centred_.assign(n, 0);
-    missed_.assign(n, 0);
-}
-
-std::array<double, 4> SharedMarks::screen(const Mark& m) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    if (!(m.hull[2].hi() > 0)) return {inf, -inf, inf, -inf}; // behind the eye: met by no ray
-    if (!(m.pa.is_finite() && m.pb.is_finite())) return {kGeneral, 0, 0, 0};
-    return {m.pa.lo(), m.pa.hi(), m.pb.lo(), m.pb.hi()};
-}
-
-const Interval* SharedMarks::centre(size_t k) {
-    if (!centred_[k]) {
-        const Mark& m = marks_[k];
-        const RVec<2> c = mid(IVec<2>{{m.box.s, m.box.t}}); // may_hold_zero's centre
-        enclose_homogeneous(ps_->patches[m.patch].patch, c[0], c[1], 3, centre_[k].data());
-        centred_[k] = 1;
-    }
-    return centre_[k].data();
-}
-
-const MarkJacobian& SharedMarks::jacobian(size_t k) {
-    if (!known_[k]) {
-        // From the mark's subpatch: a hull of coefficient differences instead
-        // of four power-form ranges.
-        const Mark& m = marks_[k];
-        jacobians_[k] = mark_jacobian(
-            subpatch_jacobian(&(*coefs_)[m.coef], ps_->patches[m.patch].shape, m.box, a_, b_));
-        known_[k] = 1;
-    }
-    return jacobians_[k];
-}
-
-bool SharedMarks::refine(size_t k) {
-    if (jacobian(k).regular || depth_[k] >= kMaxDepth) return false;
-    const Mark m = marks_[k];
-    const int dir = m.box.s.width() >= m.box.t.width() ? 0 : 1;
-    if (!((dir == 0 ? m.box.s : m.box.t).width() > 1e-9)) return false;
-    Mark half[2];
-    bisect(k, half);
-    marks_[k] = half[0];
-    marks_.push_back(half[1]);
-    screen_[k] = screen(half[0]);
-    screen_.push_back(screen(half[1]));
-    known_[k] = 0;
-    known_.push_back(0);
-    centred_[k] = 0;
-    centred_.push_back(0);
-    centre_.emplace_back();
-    jacobians_.emplace_back();
-    start_.push_back(start_[k]);
-    started_.push_back(started_[k]);
-    at_.push_back(at_[k]);
-    evaluated_.push_back(evaluated_[k]);
-    missed_.push_back(missed_[k]);
-    depth_[k] = static_cast<char>(depth_[k] + 1);
-    depth_.push_back(depth_[k]);
-    root_.push_back(root_[k]);
-    return true;
-}
-
-void SharedMarks::bisect(size_t k, Mark half[2]) {
-    const Mark& m = marks_[k];
-    const SubpatchShape sh = ps_->patches[m.patch].shape;
-    const size_t size = sh.size();
-    SubpatchArena& coefs = *coefs_;
-    // A sibling of B bisected the same mark: its halves, subpatches copied.
-    // The marks of a family are equal up to their subpatches' offsets, so a
-    // mark's root and box name it.
-    for (const Bisection& e : bisections_) {
-        if (e.root != root_[k] || !(e.box.s == m.box.s && e.box.t == m.box.t)) continue;
-        for (int i = 0; i < 2; ++i) {
-            half[i] = e.half[i];
-            half[i].coef = coefs.size();
-            coefs.insert(coefs.end(), family_coefs_.begin() + e.coef + i * size,
-                         family_coefs_.begin() + e.coef + (i + 1) * size);
-        }
-        ++copied_;
-        return;
-    }
-    bisect_mark(coefs, sh, m, m.box.s.width() >= m.box.t.width() ? 0 : 1, half);
-    for (int i = 0; i < 2; ++i) {
-        Mark& h = half[i];
-        // The halves' subpatches enclose them (convex hull property); the
-        // parent's hull still holds them too.
-        update_enclosures(coefs, sh, h);
-        for (int c = 0; c < 3; ++c) h.hull[c] = intersect(h.hull[c], m.hull[c]);
-    }
-    if (family_ < 0) return;
-    bisections_.push_back({root_[k], m.box, {half[0], half[1]}, family_coefs_.size()});
-    for (int i = 0; i < 2; ++i)
-        family_coefs_.insert(family_coefs_.end(), coefs.begin() + half[i].coef,
-                             coefs.begin() + half[i].coef + size);
 }
 
 namespace {

@@ -37,6 +37,8 @@
 
 namespace seamless {
 
+class SharedMarks; // shared_marks.h
+
 struct PixelHit {
     int patch = -1; // -1: the ray certainly misses every marked patch
     double s = 0, t = 0, q = 0;
@@ -148,105 +150,6 @@ NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, con
                                const MarkJacobian* J = nullptr, ParamBox* rest = nullptr,
                                const double* start = nullptr);
 
-// The marks of a small sub-screen [a] x [b] as its pixels share them (INTRACY
-// step 6 for every pixel of a B of at most RenderOptions::pixel_subscreen
-// pixels): per mark, the Jacobian of G over its box for every ray of B
-// (subpatch_jacobian of primary_cluster.h, computed on first need) and the
-// (s, t) of the last hit on it, where the next pixel's Newton starts. A mark
-// whose Jacobian is not regular (a silhouette may cross its box) is bisected
-// for all of B's pixels at once (covering method, section 5 remark 2): the
-// halves together hold every hit of the mark, each with its own hull and
-// Jacobian, so the rays beside a silhouette are mostly decided by hull or by
-// one Newton solve instead of each halving the box for itself.
-class SharedMarks {
-  public:
-    // B's marks (n of them, subpatches in `coefs`), for the rays through [a] x
-    // [b]. The halves of bisected marks are appended to `coefs` (the caller
-    // truncates it after B). family: B's siblings (the sub-screens split from
-    // one parent, sharing its marks and `coefs` up to the end of them) pass
-    // the same id, and the bisections one of them made are copied for the
-    // next instead of computed again (the same halves, bit for bit); -1: none.
-    void reset(const ProjectedScene& ps, SubpatchArena& coefs, const Mark* marks, size_t n,
-               Interval a, Interval b, long long family = -1);
-    const Mark* marks() const { return marks_.data(); }
-    // may_meet(marks()[k], a, b) for the thin ray through (a, b): the mark's
-    // screen enclosure as four bounds kept per mark (may_meet's own test
-    // where it is not finite).
-    bool may_meet_ray(size_t k, double a, double b) const {
-        const std::array<double, 4>& r = screen_[k];
-        if (r[0] == kGeneral) return may_meet(marks_[k], Interval(a), Interval(b));
-        return r[0] <= a && a <= r[1] && r[2] <= b && b <= r[3];
-    }
-    const SubpatchArena& coefs() const { return *coefs_; }
-    size_t size() const { return marks_.size(); }
-    const MarkJacobian& jacobian(size_t k);
-    // Mark k bisected when its Jacobian is not regular: k becomes one half,
-    // the new last mark the other. false when k is left as it is (regular,
-    // bisected kMaxDepth times already, or its box too small).
-    bool refine(size_t k);
-    // Where Newton starts on mark k: the last hit on it, or null.
-    const double* start(size_t k) const { return started_[k] ? start_[k].data() : nullptr; }
-    void hit(size_t k, double s, double t) {
-        start_[k] = {s, t};
-        started_[k] = 1;
-        evaluated_[k] = 0;
-        missed_[k] = 0;
-    }
-    // Whether the last ray solved on mark k certainly missed it (its
-    // neighbour likely misses too: the next ray tries the miss proof first;
-    // the clip first instead paid less than it cost, 842 -> 853 M on the teapot).
-    bool missed(size_t k) const { return missed_[k] != 0; }
-    void miss(size_t k) { missed_[k] = 1; }
-    // The patch evaluated at mark k's start (surface_frame's, when the pixel
-    // that hit it is shaded), for the next Newton run from there; null when unknown.
-    const SurfacePoint* at_start(size_t k) const { return evaluated_[k] ? &at_[k] : nullptr; }
-    void evaluated(size_t k, double s, double t, const SurfacePoint& sp) {
-        if (!started_[k] || start_[k][0] != s || start_[k][1] != t) return;
-        at_[k] = sp;
-        evaluated_[k] = 1;
-    }
-    // X, Y, Z of mark k's patch at its box's centre, enclosed: the same for
-    // every ray of B (may_hold_zero's G there), computed on first need.
-    const Interval* centre(size_t k);
-    static constexpr int kMaxDepth = 3; // bisections of one mark of B
-    // Bisections copied from B's siblings since its family began.
-    int copied() const { return copied_; }
-
-  private:
-    const ProjectedScene* ps_ = nullptr;
-    SubpatchArena* coefs_ = nullptr;
-    std::vector<Mark> marks_;
-    Interval a_, b_;
-    std::vector<MarkJacobian> jacobians_;
-    std::vector<std::array<double, 2>> start_;
-    std::vector<SurfacePoint> at_;
-    std::vector<std::array<Interval, 3>> centre_;
-    std::vector<char> known_, started_, depth_, evaluated_, centred_, missed_;
-    // Per mark: the index of the mark of B it was bisected from (itself when not).
-    std::vector<int> root_;
-    // The bisections made for B's family (reset's family): the halves of the
-    // mark of box `box` bisected from root mark `root`, their subpatches at
-    // `coef` in family_coefs_ (two of the shape's size), as refine made them.
-    struct Bisection {
-        int root;
-        ParamBox box;
-        Mark half[2];
-        size_t coef;
-    };
-    long long family_ = -1;
-    const Mark* family_marks_ = nullptr; // the family's marks and their count
-    size_t family_n_ = 0;
-    int copied_ = 0;
-    std::vector<Bisection> bisections_;
-    SubpatchArena family_coefs_;
-    void bisect(size_t k, Mark half[2]);
-    // Per mark: pa and pb's bounds (an empty range behind the eye), or
-    // kGeneral in the first where pa or pb is not finite.
-    std::vector<std::array<double, 4>> screen_;
-    static constexpr double kGeneral = -std::numeric_limits<double>::infinity();
-    static std::array<double, 4> screen(const Mark& m);
-};
-
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)
 // with the marked patches, nearest marks first; marks beyond a found hit are
 // dropped (section 5, remark 2 after Theorem 10). shared: when given, the
@@ -255,14 +158,14 @@ class SharedMarks {
 PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
                      PixelScratch& scratch, RenderStats& st, SharedMarks* shared = nullptr);
 
-// A corner ray of a certified cluster hits the patch exactly once in `box`;
-// its intensity only steers the bilinear form of step 9, whose levels are
-// clamped to the certified enclosure, so plain Newton in doubles suffices.
-// false when it does not converge inside the box.
 // One Newton step for X - aZ = 0, Y - bZ = 0 from (s, t) in doubles, sp: the
 // patch evaluated at (s, t); step: |ds| + |dt|. false where the Jacobian is singular.
 bool newton_step(const SurfacePoint& sp, double a, double b, double& s, double& t, double& step);
 
+// A corner ray of a certified cluster hits the patch exactly once in `box`;
+// its intensity only steers the bilinear form of step 9, whose levels are
+// clamped to the certified enclosure, so plain Newton in doubles suffices.
+// false when it does not converge inside the box.
 bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,
                    double& t);
 

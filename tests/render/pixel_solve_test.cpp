@@ -4,6 +4,7 @@
 // is the only hit in the box and lies in its small box.
 #include <seamless/render/pixel_solve.h>
 #include <seamless/render/scene.h>
+#include <seamless/render/shared_marks.h>
 #include <seamless/spline/ray_patch.h>
 
 #include <catch2/catch.hpp>
