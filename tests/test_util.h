@@ -4,11 +4,13 @@
 
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <type_traits>
 #include <unistd.h>
 
 namespace seamless::test {
@@ -21,6 +23,13 @@ inline std::filesystem::path shared_dir() {
 }
 inline std::filesystem::path model_path(const std::string& name) {
     return data_dir() / "models" / name;
+}
+
+// The same object representation, byte for byte (so -0 and +0 differ): for
+// "bit for bit" checks of values made of doubles without padding.
+template <class T> bool same_bytes(const T& a, const T& b) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
 }
 
 // A fresh, empty scratch directory under the test's working directory.

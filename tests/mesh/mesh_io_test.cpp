@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 
 using namespace seamless;
 namespace fs = std::filesystem;
@@ -53,10 +52,6 @@ TriangleMesh two_surface_mesh(int n = 4) {
     return m;
 }
 
-bool same_bits(Vec3 a, Vec3 b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
 // volatile: GCC 12 at -O3 with CGAL's -frounding-math was seen to drop the
 // double -> float -> double round trip of one coordinate here.
 Vec3 to_float(Vec3 p) {
@@ -83,7 +78,7 @@ TEST_CASE("text formats round-trip positions bit-identically and keep triangles"
         REQUIRE(r.triangles == m.triangles);
         int differing = 0;
         for (int i = 0; i < m.vertex_count(); ++i)
-            differing += !same_bits(r.positions[i], m.positions[i]);
+            differing += !test::same_bytes(r.positions[i], m.positions[i]);
         CHECK(differing == 0);
     }
 }
@@ -97,7 +92,8 @@ TEST_CASE("STL round trip keeps each triangle's corners (no welding)") {
     CHECK(r.vertex_count() == 3 * m.triangle_count()); // STL repeats every vertex
     for (int t = 0; t < m.triangle_count(); ++t)
         for (int c = 0; c < 3; ++c)
-            REQUIRE(same_bits(r.positions[r.triangles[t][c]], m.positions[m.triangles[t][c]]));
+            REQUIRE(
+                test::same_bytes(r.positions[r.triangles[t][c]], m.positions[m.triangles[t][c]]));
 }
 
 TEST_CASE("OBJ and PLY readers accept common variants") {

@@ -6,18 +6,13 @@
 
 #include <catch2/catch.hpp>
 
-#include <cstring>
+#include "test_util.h"
+
 #include <random>
 #include <thread>
 #include <vector>
 
 using namespace seamless;
-
-namespace {
-bool same_bits(const ApexTriangle& a, const ApexTriangle& b) {
-    return std::memcmp(&a, &b, sizeof(ApexTriangle)) == 0;
-}
-} // namespace
 
 TEST_CASE("Light planes are formed on first use, the same bits from any thread", "[light_planes]") {
     std::mt19937 rng(5);
@@ -41,7 +36,7 @@ TEST_CASE("Light planes are formed on first use, the same bits from any thread",
             const size_t i = reverse ? nl * nf - 1 - k : k, l = i / nf, f = i % nf;
             const ApexTriangle& p = planes.get(l, f, lights[l], corners[3 * f], corners[3 * f + 1],
                                                corners[3 * f + 2], scratch);
-            *mismatches += !same_bits(p, expected(l, f));
+            *mismatches += !test::same_bytes(p, expected(l, f));
         }
     };
     int m1 = 0, m2 = 0;
@@ -58,7 +53,8 @@ TEST_CASE("Light planes are formed on first use, the same bits from any thread",
     LightPlanes fresh;
     fresh.reset(nl, nf);
     ApexTriangle scratch;
-    CHECK(same_bits(fresh.get(1, 7, lights[1], corners[21], corners[22], corners[23], scratch),
-                    expected(1, 7)));
+    CHECK(
+        test::same_bytes(fresh.get(1, 7, lights[1], corners[21], corners[22], corners[23], scratch),
+                         expected(1, 7)));
     CHECK(fresh.formed() == 1);
 }

@@ -80,27 +80,38 @@ struct TeapotMarks {
             if (may_meet(m, aB, bB)) marks.push_back(m);
         return marks;
     }
+    // `count` random draws of a w x h sub-screen (x0 in 0..W-w-1, y0 alike,
+    // one seeded generator): f(n, x0, y0, marks, aB, bB) for each that some
+    // mark may meet; the subpatches appended while f runs are dropped after it.
+    template <class F> void random_subscreens(unsigned seed, int count, int w, int h, F&& f) {
+        std::mt19937 rng(seed);
+        std::uniform_int_distribution<int> X(0, W - w - 1), Y(0, H - h - 1);
+        for (int n = 0; n < count; ++n) {
+            const int x0 = X(rng), y0 = Y(rng);
+            Interval aB, bB;
+            const std::vector<Mark> marks = meeting(x0, y0, x0 + w - 1, y0 + h - 1, aB, bB);
+            if (marks.empty()) continue;
+            const size_t coef_end = coefs.size();
+            f(n, x0, y0, marks, aB, bB);
+            coefs.resize(coef_end);
+        }
+    }
     // `count` random 3 x 3 sub-screens with shared marks: pixel(a, b, marks)
     // for each of their rays in paint order. Returns how many of them had a
     // mark bisected (SharedMarks::refine).
     template <class Pixel>
     int subscreens(unsigned seed, int count, SharedMarks& shared, Pixel&& pixel) {
-        std::mt19937 rng(seed);
-        std::uniform_int_distribution<int> X(0, W - 4), Y(0, H - 4);
         int bisected = 0;
-        for (int n = 0; n < count; ++n) {
-            const int x0 = X(rng), y0 = Y(rng);
-            Interval aB, bB;
-            const std::vector<Mark> marks = meeting(x0, y0, x0 + 2, y0 + 2, aB, bB);
-            if (marks.empty()) continue;
-            const size_t coef_end = coefs.size();
-            shared.reset(ps, coefs, marks.data(), marks.size(), aB, bB);
-            for (int y = y0; y <= y0 + 2; ++y)
-                for (int x = x0; x <= x0 + 2; ++x)
-                    pixel(ps.frame.screen_a(x + 0.5), ps.frame.screen_b(y + 0.5), marks);
-            bisected += shared.size() > marks.size(); // a silhouette's mark bisected for B
-            coefs.resize(coef_end);
-        }
+        random_subscreens(
+            seed, count, 3, 3,
+            [&](int, int x0, int y0, const std::vector<Mark>& marks, Interval aB, Interval bB) {
+                shared.reset(ps, coefs, marks.data(), marks.size(), aB, bB);
+                for (int y = y0; y <= y0 + 2; ++y)
+                    for (int x = x0; x <= x0 + 2; ++x)
+                        pixel(ps.frame.screen_a(x + 0.5), ps.frame.screen_b(y + 0.5), marks);
+                // a silhouette's mark bisected for B
+                bisected += shared.size() > marks.size();
+            });
         return bisected;
     }
 };
@@ -283,42 +294,37 @@ TEST_CASE("Siblings sharing their parent's bisections solve their pixels as each
     TeapotMarks& tm = twin.tm;
     const ProjectedScene& ps = tm.ps;
     SharedMarks &plain = twin.plain, &family = twin.other;
-    std::mt19937 rng(31);
-    std::uniform_int_distribution<int> X(0, tm.W - 7), Y(0, tm.H - 7);
     int hits = 0, copied = 0;
-    for (int n = 0; n < 60; ++n) {
-        const int x0 = X(rng), y0 = Y(rng);
-        Interval aP, bP;
-        const std::vector<Mark> marks = tm.meeting(x0, y0, x0 + 5, y0 + 5, aP, bP);
-        if (marks.empty()) continue;
-        const size_t coef_end = tm.coefs.size();
-        for (int kid = 0; kid < 4; ++kid) {
-            const int kx = x0 + 3 * (kid % 2), ky = y0 + 3 * (kid / 2);
-            const Interval aB(ps.frame.screen_a(kx + 0.5), ps.frame.screen_a(kx + 2.5));
-            const Interval bB(ps.frame.screen_b(ky + 0.5), ps.frame.screen_b(ky + 2.5));
-            plain.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
-            family.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB, n);
-            for (int y = ky; y <= ky + 2; ++y)
-                for (int x = kx; x <= kx + 2; ++x)
-                    hits +=
-                        twin.both(ps.frame.screen_a(x + 0.5), ps.frame.screen_b(y + 0.5)).patch >=
-                        0;
-            REQUIRE(plain.size() == family.size());
-            for (size_t k = 0; k < plain.size(); ++k) {
-                const Mark &m0 = plain.marks()[k], &m1 = family.marks()[k];
-                CHECK(m0.box.s == m1.box.s);
-                CHECK(m0.box.t == m1.box.t);
-                for (int c = 0; c < 3; ++c) CHECK(m0.hull[c] == m1.hull[c]);
-                CHECK(m0.pa == m1.pa);
-                CHECK(m0.pb == m1.pb);
-                const size_t size = ps.patches[m0.patch].shape.size();
-                for (size_t i = 0; i < size; ++i)
-                    CHECK(tm.coefs[m0.coef + i] == tm.coefs[m1.coef + i]);
+    tm.random_subscreens(
+        31, 60, 6, 6,
+        [&](int n, int x0, int y0, const std::vector<Mark>& marks, Interval, Interval) {
+            const size_t coef_end = tm.coefs.size();
+            for (int kid = 0; kid < 4; ++kid) {
+                const int kx = x0 + 3 * (kid % 2), ky = y0 + 3 * (kid / 2);
+                const Interval aB(ps.frame.screen_a(kx + 0.5), ps.frame.screen_a(kx + 2.5));
+                const Interval bB(ps.frame.screen_b(ky + 0.5), ps.frame.screen_b(ky + 2.5));
+                plain.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
+                family.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB, n);
+                for (int y = ky; y <= ky + 2; ++y)
+                    for (int x = kx; x <= kx + 2; ++x)
+                        hits += twin.both(ps.frame.screen_a(x + 0.5), ps.frame.screen_b(y + 0.5))
+                                    .patch >= 0;
+                REQUIRE(plain.size() == family.size());
+                for (size_t k = 0; k < plain.size(); ++k) {
+                    const Mark &m0 = plain.marks()[k], &m1 = family.marks()[k];
+                    CHECK(m0.box.s == m1.box.s);
+                    CHECK(m0.box.t == m1.box.t);
+                    for (int c = 0; c < 3; ++c) CHECK(m0.hull[c] == m1.hull[c]);
+                    CHECK(m0.pa == m1.pa);
+                    CHECK(m0.pb == m1.pb);
+                    const size_t size = ps.patches[m0.patch].shape.size();
+                    for (size_t i = 0; i < size; ++i)
+                        CHECK(tm.coefs[m0.coef + i] == tm.coefs[m1.coef + i]);
+                }
+                if (kid == 3) copied += family.copied();
+                tm.coefs.resize(coef_end);
             }
-            if (kid == 3) copied += family.copied();
-            tm.coefs.resize(coef_end);
-        }
-    }
+        });
     CHECK(hits > 300);
     CHECK(copied > 10);
     // A family id given again with other marks (another list) copies nothing:
@@ -347,35 +353,30 @@ TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the st
     TeapotMarks& tm = twin.tm;
     const ProjectedScene& ps = tm.ps;
     SharedMarks &plain = twin.plain, &kept = twin.other;
-    std::mt19937 rng(23);
-    std::uniform_int_distribution<int> X(0, tm.W - 5), Y(0, tm.H - 4);
     int hits = 0, reused = 0;
-    for (int n = 0; n < 120; ++n) {
-        const int x0 = X(rng), y0 = Y(rng), x1 = x0 + 3, y1 = y0 + 2;
-        Interval aB, bB;
-        const std::vector<Mark> marks = tm.meeting(x0, y0, x1, y1, aB, bB);
-        if (marks.empty()) continue;
-        const size_t coef_end = tm.coefs.size();
-        plain.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
-        kept.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                const double a = ps.frame.screen_a(x + 0.5), b = ps.frame.screen_b(y + 0.5);
-                bool available = false; // a kept evaluation this ray may start from
-                for (size_t k = 0; k < kept.size(); ++k) available |= kept.at_start(k) != nullptr;
-                reused += available;
-                const PixelHit h1 = twin.both(a, b);
-                if (h1.patch < 0) continue;
-                ++hits;
-                if (h1.mark < 0) continue;
-                Vec3 P, N;
-                SurfacePoint at;
-                surface_frame(ps.patches[h1.patch].patch, h1.s, h1.t, P, N, &at);
-                kept.evaluated(h1.mark, h1.s, h1.t, at);
-                REQUIRE(kept.at_start(h1.mark) != nullptr);
-            }
-        tm.coefs.resize(coef_end);
-    }
+    tm.random_subscreens(
+        23, 120, 4, 3,
+        [&](int, int x0, int y0, const std::vector<Mark>& marks, Interval aB, Interval bB) {
+            plain.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
+            kept.reset(ps, tm.coefs, marks.data(), marks.size(), aB, bB);
+            for (int y = y0; y <= y0 + 2; ++y)
+                for (int x = x0; x <= x0 + 3; ++x) {
+                    const double a = ps.frame.screen_a(x + 0.5), b = ps.frame.screen_b(y + 0.5);
+                    bool available = false; // a kept evaluation this ray may start from
+                    for (size_t k = 0; k < kept.size(); ++k)
+                        available |= kept.at_start(k) != nullptr;
+                    reused += available;
+                    const PixelHit h1 = twin.both(a, b);
+                    if (h1.patch < 0) continue;
+                    ++hits;
+                    if (h1.mark < 0) continue;
+                    Vec3 P, N;
+                    SurfacePoint at;
+                    surface_frame(ps.patches[h1.patch].patch, h1.s, h1.t, P, N, &at);
+                    kept.evaluated(h1.mark, h1.s, h1.t, at);
+                    REQUIRE(kept.at_start(h1.mark) != nullptr);
+                }
+        });
     CHECK(hits > 300);
     CHECK(reused > 300);
 }

@@ -7,27 +7,20 @@
 
 #include <catch2/catch.hpp>
 
-#include <cstring>
+#include "test_util.h"
+
 #include <random>
 #include <string>
 #include <vector>
 
 using namespace seamless;
 
-namespace {
-
-bool same_bits(Vec3 a, Vec3 b) {
-    return std::memcmp(&a, &b, sizeof(Vec3)) == 0;
-}
-
-} // namespace
-
 TEST_CASE("exact_point is evaluate's point bit for bit", "[exact_point]") {
     int checked = 0;
     bool rational = false, bicubic = false, other = false;
     for (const char* name : {"teapot", "extreme_weights", "sphere", "torus_exact", "bilinear",
                              "quarter_cylinder", "repeated_knot"}) {
-        const Model m = load_model(std::string(SEAMLESS_DATA_DIR) + "/models/" + name + ".json");
+        const Model m = load_model(test::model_path(std::string(name) + ".json"));
         std::mt19937 rng(7);
         std::uniform_real_distribution<double> u(0, 1);
         for (const BezierPatch& b : bezier_patches(m)) {
@@ -39,7 +32,7 @@ TEST_CASE("exact_point is evaluate's point bit for bit", "[exact_point]") {
             for (int k = 0; k < 40; ++k) at.push_back({u(rng), u(rng)});
             for (const auto& [s, t] : at) {
                 INFO(name << " s " << s << " t " << t);
-                CHECK(same_bits(exact_point(b, s, t), evaluate(b, s, t).point));
+                CHECK(test::same_bytes(exact_point(b, s, t), evaluate(b, s, t).point));
                 ++checked;
             }
         }

@@ -11,18 +11,9 @@
 
 #include <catch2/catch.hpp>
 
-#include <cstring>
 #include <vector>
 
 using namespace seamless;
-
-namespace {
-
-bool same_bits(Vec3 a, Vec3 b) {
-    return std::memcmp(&a, &b, sizeof(Vec3)) == 0;
-}
-
-} // namespace
 
 TEST_CASE("fan normals are unit_normal at every slot and centre", "[fan_triangles]") {
     const test::TeapotPass in;
@@ -47,10 +38,10 @@ TEST_CASE("fan normals are unit_normal at every slot and centre", "[fan_triangle
             const BezierPatch& b = patches[sp.patch];
             const double sc = 0.5 * (param_of(sp.rect.s0) + param_of(sp.rect.s1));
             const double tc = 0.5 * (param_of(sp.rect.t0) + param_of(sp.rect.t1));
-            CHECK(same_bits(n.centre[i], unit_normal(b, sc, tc, sc, tc)));
+            CHECK(test::same_bytes(n.centre[i], unit_normal(b, sc, tc, sc, tc)));
             for (int j = rings.start[i]; j < rings.start[i + 1]; ++j) {
                 const RingVertex& v = rings.vertices[j];
-                CHECK(same_bits(n.ring[j], unit_normal(b, v.fs, v.ft, sc, tc)));
+                CHECK(test::same_bytes(n.ring[j], unit_normal(b, v.fs, v.ft, sc, tc)));
                 if (threads == 1 && patch_of[v.vertex] == sp.patch) ++shared;
                 patch_of[v.vertex] = sp.patch;
             }
