@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/light_planes.h>
 
+#include <type_traits>
+
 namespace seamless {
 
 LightPlanes& LightPlanes::operator=(const LightPlanes& o) {
@@ -8,7 +10,7 @@ LightPlanes& LightPlanes::operator=(const LightPlanes& o) {
     reset(o.count_ ? o.count_ / o.triangles_ : 0, o.triangles_);
     for (std::size_t i = 0; i < count_; ++i)
         if (o.state_[i].load(std::memory_order_acquire) == 2) {
-            planes_[i] = o.planes_[i];
+            new (&planes_[i]) ApexTriangle(o.planes_[i]);
             state_[i].store(2, std::memory_order_relaxed);
         }
     return *this;
@@ -19,7 +21,10 @@ void LightPlanes::reset(std::size_t lights, std::size_t triangles) {
     count_ = lights * triangles;
     // Uninitialised planes (each is written before its state says formed);
     // value-initialised states: nothing formed.
-    planes_.reset(count_ ? new ApexTriangle[count_] : nullptr);
+    static_assert(std::is_trivially_copyable_v<ApexTriangle> &&
+                  std::is_trivially_destructible_v<ApexTriangle>);
+    planes_.reset(count_ ? static_cast<ApexTriangle*>(::operator new(count_ * sizeof(ApexTriangle)))
+                         : nullptr);
     state_.reset(count_ ? new std::atomic<unsigned char>[count_]() : nullptr);
 }
 
@@ -37,7 +42,7 @@ const ApexTriangle& LightPlanes::get(std::size_t l, std::size_t f, Vec3 apex, Ve
     scratch = apex_triangle(apex, T1, T2, T3);
     unsigned char expected = 0;
     if (s.compare_exchange_strong(expected, 1, std::memory_order_acq_rel)) {
-        planes_[i] = scratch;
+        new (&planes_[i]) ApexTriangle(scratch);
         s.store(2, std::memory_order_release);
     }
     return scratch;

@@ -18,6 +18,7 @@
 #include <atomic>
 #include <cstddef>
 #include <memory>
+#include <new>
 #include <vector>
 
 namespace seamless {
@@ -44,9 +45,15 @@ class LightPlanes {
                             ApexTriangle& scratch) const;
 
   private:
+    // Raw storage: a plane is constructed where it is formed, so the pages of
+    // planes never formed are never touched (the teapot scene: 2 MB, about 500
+    // page faults of a 640x480 render, when value-initialised).
+    struct Release {
+        void operator()(ApexTriangle* p) const { ::operator delete(p); }
+    };
     std::size_t triangles_ = 0, count_ = 0;
     // state_[i]: 0 not formed, 1 being stored, 2 formed (planes_[i] valid).
-    mutable std::unique_ptr<ApexTriangle[]> planes_;
+    mutable std::unique_ptr<ApexTriangle[], Release> planes_;
     mutable std::unique_ptr<std::atomic<unsigned char>[]> state_;
 };
 

@@ -317,6 +317,35 @@ TEST_CASE("Mesh neighbours: across inner edges, none on the border or a flipped 
     for (int e = 0; e < 3; ++e) CHECK(nb[3 * 4 + e] == -1);
 }
 
+TEST_CASE("Mesh neighbours agree with a count of every directed edge on a messy mesh",
+          "[ray_cluster]") {
+    // Random triangles over few vertices: repeated, reversed and degenerate
+    // edges, non-manifold fans, unused vertex numbers.
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> V(0, 11);
+    std::vector<std::array<int, 3>> tris(60);
+    for (auto& t : tris) t = {V(rng), V(rng), V(rng)};
+    const std::vector<int> nb = triangle_neighbours(tris);
+    REQUIRE(nb.size() == 3 * tris.size());
+    auto traversals = [&](int u, int v, int* last) {
+        int c = 0;
+        for (size_t f = 0; f < tris.size(); ++f)
+            for (int e = 0; e < 3; ++e)
+                if (tris[f][e] == u && tris[f][(e + 1) % 3] == v) ++c, *last = static_cast<int>(f);
+        return c;
+    };
+    int paired = 0;
+    for (size_t t = 0; t < tris.size(); ++t)
+        for (int e = 0; e < 3; ++e) {
+            const int u = tris[t][e], v = tris[t][(e + 1) % 3];
+            int self = -1, other = -1;
+            const bool manifold = traversals(u, v, &self) == 1 && traversals(v, u, &other) == 1;
+            CHECK(nb[3 * t + e] == (manifold ? other : -1));
+            paired += manifold;
+        }
+    CHECK(paired > 0);
+}
+
 TEST_CASE("A light blocked by a surface of triangles has every segment crossing it",
           "[ray_cluster]") {
     std::mt19937 rng(23);
