@@ -50,6 +50,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 namespace seamless {
@@ -468,19 +469,39 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     st.patches = static_cast<long long>(ps.patches.size());
-    Image image(W, H, L);
+    Image image(W, H, L, Image::Unfilled{}); // each part clears its own pixels
 
     // Remark 4: 8 x 8 congruent parts (fewer when the image is smaller).
     const int px = std::min(opt.prepartition, W), py = std::min(opt.prepartition, H);
     const int parts = px * py;
     std::vector<RenderStats> part_stats(parts);
     std::atomic<int> done{0};
+    // A part takes a free renderer (made when none is free: at most one per
+    // worker) and gives it back, so its scratch vectors keep their capacity
+    // from part to part instead of growing again into fresh pages.
+    std::mutex free_lock;
+    std::vector<std::unique_ptr<PartRenderer>> free_renderers;
     auto work = [&](int p) {
         const int i = p % px, j = p / px;
         const int x0 = i * W / px, x1 = (i + 1) * W / px - 1;
         const int y0 = j * H / py, y1 = (j + 1) * H / py - 1;
-        PartRenderer r(ps, scene, ts.get(), ts ? &neighbours : nullptr, opt, image, L);
-        r.run(x0, y0, x1, y1, part_stats[p]);
+        image.clear(x0, y0, x1, y1);
+        std::unique_ptr<PartRenderer> r;
+        {
+            const std::lock_guard<std::mutex> hold(free_lock);
+            if (!free_renderers.empty()) {
+                r = std::move(free_renderers.back());
+                free_renderers.pop_back();
+            }
+        }
+        if (!r)
+            r = std::make_unique<PartRenderer>(ps, scene, ts.get(), ts ? &neighbours : nullptr, opt,
+                                               image, L);
+        r->run(x0, y0, x1, y1, part_stats[p]);
+        {
+            const std::lock_guard<std::mutex> hold(free_lock);
+            free_renderers.push_back(std::move(r));
+        }
         const int d = ++done;
         if (opt.progress) opt.progress(static_cast<double>(d) / parts);
     };
