@@ -6,10 +6,19 @@
 
 #include <stb/stb_image_write.h> // implementation in Debian's libstb
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 
 namespace seamless {
+
+void Image::clear(int x0, int y0, int x1, int y1) {
+    if (x1 < x0) return;
+    for (int y = y0; y <= y1; ++y) {
+        std::fill_n(&at(x0, y, 0), static_cast<size_t>(x1 - x0 + 1) * 3, std::uint16_t{0});
+        std::fill_n(&surface_at(x0, y), x1 - x0 + 1, std::uint8_t{0});
+    }
+}
 
 std::uint8_t level_to_byte(int k, int levels) {
     return static_cast<std::uint8_t>(std::lround(255.0 * k / (levels - 1)));

@@ -17,6 +17,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <new>
 #include <vector>
@@ -45,16 +46,20 @@ class LightPlanes {
                             ApexTriangle& scratch) const;
 
   private:
-    // Raw storage: a plane is constructed where it is formed, so the pages of
-    // planes never formed are never touched (the teapot scene: 2 MB, about 500
-    // page faults of a 640x480 render, when value-initialised).
+    // Raw storage filled in the order planes are formed: planes_[k - 1] for
+    // slot_[i] == k, so the planes a render forms lie together. The teapot
+    // scene at 640x480 forms about a quarter of its 6,998 planes (304 bytes
+    // each); indexed by light and triangle they were spread over the 2.1 MB
+    // (perf record -e page-faults: ~260 faults of ~12 us in get), packed ~115.
     struct Release {
         void operator()(ApexTriangle* p) const { ::operator delete(p); }
     };
+    static constexpr std::uint32_t kStoring = ~std::uint32_t{0};
     std::size_t triangles_ = 0, count_ = 0;
-    // state_[i]: 0 not formed, 1 being stored, 2 formed (planes_[i] valid).
+    // slot_[i]: 0 not formed, kStoring being stored, else 1 + its place in planes_.
     mutable std::unique_ptr<ApexTriangle[], Release> planes_;
-    mutable std::unique_ptr<std::atomic<unsigned char>[]> state_;
+    mutable std::unique_ptr<std::atomic<std::uint32_t>[]> slot_;
+    mutable std::unique_ptr<std::atomic<std::uint32_t>> stored_; // planes_ used
 };
 
 } // namespace seamless

@@ -50,10 +50,11 @@ ProjectedScene project_scene(const Scene& scene, int width, int height, int thre
             surface.push_back(static_cast<int>(k));
         }
     // A ProjectedPatch is large (its power forms are sized for the highest
-    // degree): built in place, once, in parallel; never copied or moved.
-    ps.patches.resize(patches.size());
+    // degree): constructed in place by its worker, once, in parallel; never
+    // copied or moved.
+    ps.patches.reset(patches.size());
     for_each_item(static_cast<int>(patches.size()), threads, [&](int i) {
-        ProjectedPatch& pp = ps.patches[i];
+        ProjectedPatch& pp = ps.patches.place(i);
         BezierPatch& b = patches[i];
         for (int u = 0; u <= b.p; ++u)
             for (int v = 0; v <= b.q; ++v) b.at(u, v) = ps.frame.to_camera(b.at(u, v));

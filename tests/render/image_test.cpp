@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// Image (image.h): a filled image starts at level 0, background; an unfilled
+// one is made whole by clearing parts that tile it (render_intracy's parts),
+// and clear() writes only its rectangle.
+#include <seamless/render/image.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+using namespace seamless;
+
+namespace {
+
+bool all_clear(const Image& im) {
+    return std::all_of(im.level.begin(), im.level.end(), [](auto v) { return v == 0; }) &&
+           std::all_of(im.surface.begin(), im.surface.end(), [](auto v) { return v == 0; });
+}
+
+} // namespace
+
+TEST_CASE("Image: filled at level 0; unfilled made whole by clearing tiles", "[image]") {
+    const Image filled(37, 23, 16);
+    REQUIRE(filled.level.size() == 37u * 23 * 3);
+    REQUIRE(filled.surface.size() == 37u * 23);
+    CHECK(all_clear(filled));
+
+    // Tiles as render_intracy cuts them: 8 x 8 parts of uneven sizes.
+    Image im(37, 23, 16, Image::Unfilled{});
+    REQUIRE(im.level.size() == filled.level.size());
+    std::fill(im.level.begin(), im.level.end(), std::uint16_t{7}); // stand-in for old contents
+    std::fill(im.surface.begin(), im.surface.end(), std::uint8_t{1});
+    const int px = 8, py = 8;
+    for (int p = 0; p < px * py; ++p) {
+        const int i = p % px, j = p / px;
+        im.clear(i * 37 / px, j * 23 / py, (i + 1) * 37 / px - 1, (j + 1) * 23 / py - 1);
+    }
+    CHECK(all_clear(im));
+    CHECK(im.level == filled.level);
+    CHECK(im.surface == filled.surface);
+}
+
+TEST_CASE("Image: clear writes only its rectangle", "[image]") {
+    Image im(10, 6, 16);
+    std::fill(im.level.begin(), im.level.end(), std::uint16_t{5});
+    std::fill(im.surface.begin(), im.surface.end(), std::uint8_t{1});
+    im.clear(2, 1, 4, 3);
+    int cleared = 0;
+    for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < 10; ++x) {
+            const bool inside = x >= 2 && x <= 4 && y >= 1 && y <= 3;
+            for (int c = 0; c < 3; ++c) CHECK(im.at(x, y, c) == (inside ? 0 : 5));
+            CHECK(im.surface_at(x, y) == (inside ? 0 : 1));
+            cleared += inside;
+        }
+    CHECK(cleared == 9);
+    im.clear(3, 0, 2, 5); // empty: x1 < x0
+    CHECK(im.at(3, 0, 0) == 5);
+}
