@@ -42,7 +42,8 @@ Image render_tray(const Scene& scene, const RenderOptions& opt, RenderStats& st)
     st.patches = static_cast<long long>(ts.tess.trees.roots.size());
     st.triangles = ts.tess.mesh.triangle_count();
 
-    Image image(W, H, L);
+    // Every pixel is written below, by the worker of its row: no clearing pass.
+    Image image(W, H, L, Image::Unfilled{});
     render_rows(W, H, opt, st, [&](int y, RenderStats& rs) {
         const double b = frame.screen_b(y + 0.5);
         for (int x = 0; x < W; ++x) {
