@@ -462,27 +462,32 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
                      PixelScratch& scratch, RenderStats& st, SharedMarks* shared) {
     // Nearest first; once a hit is found, marks that lie entirely beyond it are
     // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
+    scratch.sys_of = {};
+    Nearest near;
+    if (shared) {
+        // The marks in the sub-screen's depth order, those the ray may meet:
+        // the same sequence as sorting those alone (teapot 640x480 x 16:
+        // paint_pixels 449.2 -> 438.7 M instructions, PNG byte-identical).
+        // Refines during the walk change only marks already visited (and
+        // append halves, which that mark's solve handles).
+        for (const auto& [zlo, k] : shared->depth_order()) {
+            if (zlo > near.best_q) break;
+            if (shared->may_meet_ray(k, a, b))
+                solve_shared_mark(ps, a, b, *shared, k, scratch, st, near);
+        }
+        if (near.best.candidates > 0) ++st.primary_rays;
+        return near.best;
+    }
     auto& order = scratch.order;
     order.clear();
-    scratch.sys_of = {};
-    if (shared) {
-        marks = shared->marks();
-        n = shared->size();
-    }
-    for (size_t k = 0; k < n; ++k)
-        if (!shared || shared->may_meet_ray(k, a, b))
-            order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
-    Nearest near;
+    for (size_t k = 0; k < n; ++k) order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
     if (order.empty()) return near.best;
     std::sort(order.begin(), order.end());
     for (const auto& [zlo, k] : order) {
         if (zlo > near.best_q) break;
-        if (shared)
-            solve_shared_mark(ps, a, b, *shared, k, scratch, st, near);
-        else
-            solve_mark(ps, a, b, marks[k], scratch, st, near);
+        solve_mark(ps, a, b, marks[k], scratch, st, near);
     }
-    if (!shared || near.best.candidates > 0) ++st.primary_rays;
+    ++st.primary_rays;
     return near.best;
 }
 

@@ -41,6 +41,18 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     centre_.resize(n);
     centred_.assign(n, 0);
     missed_.assign(n, 0);
+    reorder_ = true;
+}
+
+const std::vector<std::pair<double, int>>& SharedMarks::depth_order() {
+    if (reorder_) {
+        order_.clear();
+        for (size_t k = 0; k < marks_.size(); ++k)
+            order_.push_back({marks_[k].hull[2].lo(), static_cast<int>(k)});
+        std::sort(order_.begin(), order_.end());
+        reorder_ = false;
+    }
+    return order_;
 }
 
 std::array<double, 4> SharedMarks::screen(const Mark& m) {
@@ -97,6 +109,7 @@ bool SharedMarks::refine(size_t k) {
     depth_[k] = static_cast<char>(depth_[k] + 1);
     depth_.push_back(depth_[k]);
     root_.push_back(root_[k]);
+    reorder_ = true;
     return true;
 }
 

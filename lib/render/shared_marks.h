@@ -7,6 +7,7 @@
 
 #include <array>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace seamless {
@@ -43,6 +44,11 @@ class SharedMarks {
     const SubpatchArena& coefs() const { return *coefs_; }
     size_t size() const { return marks_.size(); }
     const MarkJacobian& jacobian(size_t k);
+    // Every mark as (its nearest depth hull[2].lo(), index), sorted: the
+    // order in which a ray solves the marks it may meet (solve_pixel),
+    // sorted once per B and again only after a refine, not per pixel.
+    // Marks refined while a ray walks it keep their place until the next ray.
+    const std::vector<std::pair<double, int>>& depth_order();
     // Mark k bisected when its Jacobian is not regular: k becomes one half,
     // the new last mark the other. false when k is left as it is (regular,
     // bisected kMaxDepth times already, or its box too small).
@@ -85,6 +91,8 @@ class SharedMarks {
     std::vector<SurfacePoint> at_;
     std::vector<std::array<Interval, 3>> centre_;
     std::vector<char> known_, started_, depth_, evaluated_, centred_, missed_;
+    std::vector<std::pair<double, int>> order_; // depth_order(), valid when !reorder_
+    bool reorder_ = true;
     // Per mark: the index of the mark of B it was bisected from (itself when not).
     std::vector<int> root_;
     // The bisections made for B's family (reset's family): the halves of the

@@ -563,3 +563,33 @@ TEST_CASE("A RaySystem reuses forms built in its storage only for the same patch
         CHECK(of.pp == r.pp);
     }
 }
+
+TEST_CASE("SharedMarks' depth order holds every mark once, nearest first, after bisections too",
+          "[pixel_solve]") {
+    // solve_pixel walks the marks a ray may meet in this order (sorted once
+    // per B and after each refine instead of per pixel): it must be the sort
+    // of all of B's marks, halves included, by (hull[2].lo(), index).
+    TeapotMarks tm;
+    PixelScratch scratch;
+    SharedMarks shared;
+    RenderStats st;
+    int checked = 0;
+    const int bisected = tm.subscreens(31, 60, shared, [&](double a, double b, const auto&) {
+        solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &shared); // bisects marks
+        const auto& order = shared.depth_order();
+        REQUIRE(order.size() == shared.size());
+        std::vector<int> seen(shared.size(), 0);
+        for (size_t i = 0; i < order.size(); ++i) {
+            const auto [zlo, k] = order[i];
+            REQUIRE(k >= 0);
+            REQUIRE(static_cast<size_t>(k) < shared.size());
+            ++seen[k];
+            CHECK(zlo == shared.marks()[k].hull[2].lo());
+            if (i > 0) CHECK(order[i - 1] < order[i]);
+        }
+        for (const int n : seen) CHECK(n == 1);
+        ++checked;
+    });
+    CHECK(checked > 300);
+    CHECK(bisected > 5);
+}
