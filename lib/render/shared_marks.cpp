@@ -29,6 +29,8 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     marks_.assign(marks, marks + n);
     screen_.resize(n);
     for (size_t k = 0; k < n; ++k) screen_[k] = screen(marks[k]);
+    diagonal_.assign(n, kUnbounded);
+    diagonal_known_.assign(n, 0);
     a_ = a;
     b_ = b;
     jacobians_.resize(n);
@@ -60,6 +62,38 @@ std::array<double, 4> SharedMarks::screen(const Mark& m) {
     if (!(m.hull[2].hi() > 0)) return {inf, -inf, inf, -inf}; // behind the eye: met by no ray
     if (!(m.pa.is_finite() && m.pb.is_finite())) return {kGeneral, 0, 0, 0};
     return {m.pa.lo(), m.pa.hi(), m.pb.lo(), m.pb.hi()};
+}
+
+std::array<double, 4> SharedMarks::diagonals(const Mark& m) const {
+    // A point of the subpatch is a convex combination of its control points
+    // (wx, wy, wz), so where every wz > 0 its (x + y) / z is a mean of their
+    // (wx + wy) / wz, weighted by beta_i wz_i > 0, and likewise x - y. Each
+    // numerator's bound is rounded outward, each quotient's bound taken with
+    // the end of wz that makes it extreme; the rounded quotients move
+    // outward by one ulp at the end (half an ulp would do), and one more for
+    // the rounding of a + b and a - b in may_meet_ray (fl(v) < next_down(d)
+    // when v < d - ulp, as next_up(fl(v)) >= v).
+    const SubpatchShape sh = ps_->patches[m.patch].shape;
+    const Interval* c = &(*coefs_)[m.coef];
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    double lo[2] = {inf, inf}, hi[2] = {-inf, -inf};
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            const Interval x = c[sh.index(0, i, j)], y = c[sh.index(1, i, j)];
+            const Interval z = c[sh.index(2, i, j)];
+            if (!(z.lo() > 0)) return kUnbounded;
+            const double nlo[2] = {next_down(x.lo() + y.lo()), next_down(x.lo() - y.hi())};
+            const double nhi[2] = {next_up(x.hi() + y.hi()), next_up(x.hi() - y.lo())};
+            for (int d = 0; d < 2; ++d) {
+                lo[d] = std::min(lo[d], nlo[d] / (nlo[d] >= 0 ? z.hi() : z.lo()));
+                hi[d] = std::max(hi[d], nhi[d] / (nhi[d] >= 0 ? z.lo() : z.hi()));
+            }
+        }
+    const std::array<double, 4> r = {next_down(next_down(lo[0])), next_up(next_up(hi[0])),
+                                     next_down(next_down(lo[1])), next_up(next_up(hi[1]))};
+    for (const double v : r)
+        if (!std::isfinite(v)) return kUnbounded;
+    return r;
 }
 
 const Interval* SharedMarks::centre(size_t k) {
@@ -95,6 +129,10 @@ bool SharedMarks::refine(size_t k) {
     marks_.push_back(half[1]);
     screen_[k] = screen(half[0]);
     screen_.push_back(screen(half[1]));
+    diagonal_[k] = kUnbounded; // the halves' own on their first miss
+    diagonal_.push_back(kUnbounded);
+    diagonal_known_[k] = 0;
+    diagonal_known_.push_back(0);
     known_[k] = 0;
     known_.push_back(0);
     centred_[k] = 0;

@@ -593,3 +593,38 @@ TEST_CASE("SharedMarks' depth order holds every mark once, nearest first, after 
     CHECK(checked > 300);
     CHECK(bisected > 5);
 }
+
+TEST_CASE("A mark's diagonal bounds reject only rays that miss it", "[pixel_solve]") {
+    // After a miss, SharedMarks::may_meet_ray also bounds a + b and a - b by
+    // the mark's (x + y) / z and (x - y) / z: a ray it rejects inside the
+    // mark's screen rectangle must meet the patch nowhere in the mark's box
+    // (the covering method of ray_patch.h as the reference).
+    TeapotMarks tm;
+    PixelScratch scratch;
+    SharedMarks shared;
+    RenderStats st;
+    std::mt19937 rng(37);
+    std::uniform_real_distribution<double> U(-1.5, 1.5);
+    const double pa = 2.0 * tm.ps.frame.tan_half * tm.ps.frame.aspect / tm.W;
+    const double pb = 2.0 * tm.ps.frame.tan_half / tm.H;
+    int diagonal = 0, compared = 0;
+    tm.subscreens(41, 80, shared, [&](double a, double b, const auto&) {
+        solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &shared); // marks missed
+        for (int r = 0; r < 4; ++r) {
+            const double ra = a + U(rng) * pa, rb = b + U(rng) * pb;
+            for (size_t k = 0; k < shared.size(); ++k) {
+                const Mark& m = shared.marks()[k];
+                if (shared.may_meet_ray(k, ra, rb) || !may_meet(m, Interval(ra), Interval(rb)))
+                    continue;
+                ++diagonal; // inside the rectangle, rejected diagonally
+                std::vector<RayPatchHit> all;
+                intersect(tm.ps.patches[m.patch].forms, ProjectedScene::primary_ray(ra, rb), m.box,
+                          all, RayPatchOptions{});
+                CHECK(all.empty());
+                ++compared;
+            }
+        }
+    });
+    CHECK(diagonal > 100);
+    CHECK(compared == diagonal);
+}
