@@ -317,17 +317,30 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
     todo.clear();
     todo.push_back({box0, 0});
     while (!todo.empty()) {
-        const auto [box, depth] = todo.back();
+        const auto [popped, depth] = todo.back();
         todo.pop_back();
         ParamBox hb;
         Interval q;
-        ParamBox rest = box;
         const bool first = depth == 0;
         // Below the first box, the shared Jacobian (enclosed over a box
         // holding this one, so over this one too) where it is regular; a
         // fresh one from the ray's power forms only where that step decided
         // nothing and left most of the box.
         const bool shared = J && (first || J->regular);
+        // A shared Jacobian that is not regular still proves misses and
+        // contracts the box to where the hits may be (Theorem 6 ii and i hold
+        // for any enclosure of G'): its step comes before the fresh
+        // Jacobian, which is enclosed over the smaller box (teapot 640x480 x
+        // 16: paint_pixels 434.2 -> 427.8 M instructions, PNG byte-identical;
+        // the miss proof alone, over the whole box: 432.1 M).
+        ParamBox box = popped;
+        if (J && !shared && J->preconditioned) {
+            if (!may_hold_zero(sys, *J, popped, box, st)) {
+                ++st.pixel_newton_certified;
+                continue;
+            }
+        }
+        ParamBox rest = box;
         NewtonOutcome nc = newton_certified(pp, a, b, box, sys, hb, q, st, shared ? J : nullptr,
                                             &rest, first ? start : nullptr);
         if (nc == NewtonOutcome::undecided && !first && shared &&
