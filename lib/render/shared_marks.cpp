@@ -68,11 +68,12 @@ std::array<double, 4> SharedMarks::diagonals(const Mark& m) const {
     // A point of the subpatch is a convex combination of its control points
     // (wx, wy, wz), so where every wz > 0 its (x + y) / z is a mean of their
     // (wx + wy) / wz, weighted by beta_i wz_i > 0, and likewise x - y. Each
-    // numerator's bound is rounded outward, each quotient's bound taken with
-    // the end of wz that makes it extreme; the rounded quotients move
-    // outward by one ulp at the end (half an ulp would do), and one more for
-    // the rounding of a + b and a - b in may_meet_ray (fl(v) < next_down(d)
-    // when v < d - ulp, as next_up(fl(v)) >= v).
+    // quotient's bound is taken with the end of wz that makes it extreme (the
+    // sign of fl(x + y) is that of x + y); fl(fl(x + y) / z) is within a
+    // relative 2u + u^2 of (x + y) / z (u = 2^-53; 1e-300 for underflow), so
+    // the extremes widen by a relative 4.5e-16 and one ulp, and one more ulp
+    // for the rounding of a + b and a - b in may_meet_ray (fl(v) <
+    // next_down(d) when v < d - ulp, as next_up(fl(v)) >= v).
     const SubpatchShape sh = ps_->patches[m.patch].shape;
     const Interval* c = &(*coefs_)[m.coef];
     constexpr double inf = std::numeric_limits<double>::infinity();
@@ -82,15 +83,20 @@ std::array<double, 4> SharedMarks::diagonals(const Mark& m) const {
             const Interval x = c[sh.index(0, i, j)], y = c[sh.index(1, i, j)];
             const Interval z = c[sh.index(2, i, j)];
             if (!(z.lo() > 0)) return kUnbounded;
-            const double nlo[2] = {next_down(x.lo() + y.lo()), next_down(x.lo() - y.hi())};
-            const double nhi[2] = {next_up(x.hi() + y.hi()), next_up(x.hi() - y.lo())};
+            const double nlo[2] = {x.lo() + y.lo(), x.lo() - y.hi()};
+            const double nhi[2] = {x.hi() + y.hi(), x.hi() - y.lo()};
             for (int d = 0; d < 2; ++d) {
                 lo[d] = std::min(lo[d], nlo[d] / (nlo[d] >= 0 ? z.hi() : z.lo()));
                 hi[d] = std::max(hi[d], nhi[d] / (nhi[d] >= 0 ? z.lo() : z.hi()));
             }
         }
-    const std::array<double, 4> r = {next_down(next_down(lo[0])), next_up(next_up(hi[0])),
-                                     next_down(next_down(lo[1])), next_up(next_up(hi[1]))};
+    std::array<double, 4> r;
+    for (int d = 0; d < 2; ++d) {
+        const double slo = 4.5e-16 * std::abs(lo[d]) + 1e-300;
+        const double shi = 4.5e-16 * std::abs(hi[d]) + 1e-300;
+        r[2 * d] = next_down(next_down(lo[d] - slo));
+        r[2 * d + 1] = next_up(next_up(hi[d] + shi));
+    }
     for (const double v : r)
         if (!std::isfinite(v)) return kUnbounded;
     return r;
