@@ -29,6 +29,8 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     marks_.assign(marks, marks + n);
     screen_.resize(n);
     for (size_t k = 0; k < n; ++k) screen_[k] = screen(marks[k]);
+    diagonal_.assign(n, kUnbounded);
+    diagonal_known_.assign(n, 0);
     a_ = a;
     b_ = b;
     jacobians_.resize(n);
@@ -41,6 +43,18 @@ void SharedMarks::reset(const ProjectedScene& ps, SubpatchArena& coefs, const Ma
     centre_.resize(n);
     centred_.assign(n, 0);
     missed_.assign(n, 0);
+    reorder_ = true;
+}
+
+const std::vector<std::pair<double, int>>& SharedMarks::depth_order() {
+    if (reorder_) {
+        order_.clear();
+        for (size_t k = 0; k < marks_.size(); ++k)
+            order_.push_back({marks_[k].hull[2].lo(), static_cast<int>(k)});
+        std::sort(order_.begin(), order_.end());
+        reorder_ = false;
+    }
+    return order_;
 }
 
 std::array<double, 4> SharedMarks::screen(const Mark& m) {
@@ -48,6 +62,44 @@ std::array<double, 4> SharedMarks::screen(const Mark& m) {
     if (!(m.hull[2].hi() > 0)) return {inf, -inf, inf, -inf}; // behind the eye: met by no ray
     if (!(m.pa.is_finite() && m.pb.is_finite())) return {kGeneral, 0, 0, 0};
     return {m.pa.lo(), m.pa.hi(), m.pb.lo(), m.pb.hi()};
+}
+
+std::array<double, 4> SharedMarks::diagonals(const Mark& m) const {
+    // A point of the subpatch is a convex combination of its control points
+    // (wx, wy, wz), so where every wz > 0 its (x + y) / z is a mean of their
+    // (wx + wy) / wz, weighted by beta_i wz_i > 0, and likewise x - y. Each
+    // quotient's bound is taken with the end of wz that makes it extreme (the
+    // sign of fl(x + y) is that of x + y); fl(fl(x + y) / z) is within a
+    // relative 2u + u^2 of (x + y) / z (u = 2^-53; 1e-300 for underflow), so
+    // the extremes widen by a relative 4.5e-16 and one ulp, and one more ulp
+    // for the rounding of a + b and a - b in may_meet_ray (fl(v) <
+    // next_down(d) when v < d - ulp, as next_up(fl(v)) >= v).
+    const SubpatchShape sh = ps_->patches[m.patch].shape;
+    const Interval* c = &(*coefs_)[m.coef];
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    double lo[2] = {inf, inf}, hi[2] = {-inf, -inf};
+    for (int i = 0; i <= sh.p; ++i)
+        for (int j = 0; j <= sh.q; ++j) {
+            const Interval x = c[sh.index(0, i, j)], y = c[sh.index(1, i, j)];
+            const Interval z = c[sh.index(2, i, j)];
+            if (!(z.lo() > 0)) return kUnbounded;
+            const double nlo[2] = {x.lo() + y.lo(), x.lo() - y.hi()};
+            const double nhi[2] = {x.hi() + y.hi(), x.hi() - y.lo()};
+            for (int d = 0; d < 2; ++d) {
+                lo[d] = std::min(lo[d], nlo[d] / (nlo[d] >= 0 ? z.hi() : z.lo()));
+                hi[d] = std::max(hi[d], nhi[d] / (nhi[d] >= 0 ? z.lo() : z.hi()));
+            }
+        }
+    std::array<double, 4> r;
+    for (int d = 0; d < 2; ++d) {
+        const double slo = 4.5e-16 * std::abs(lo[d]) + 1e-300;
+        const double shi = 4.5e-16 * std::abs(hi[d]) + 1e-300;
+        r[2 * d] = next_down(next_down(lo[d] - slo));
+        r[2 * d + 1] = next_up(next_up(hi[d] + shi));
+    }
+    for (const double v : r)
+        if (!std::isfinite(v)) return kUnbounded;
+    return r;
 }
 
 const Interval* SharedMarks::centre(size_t k) {
@@ -83,6 +135,10 @@ bool SharedMarks::refine(size_t k) {
     marks_.push_back(half[1]);
     screen_[k] = screen(half[0]);
     screen_.push_back(screen(half[1]));
+    diagonal_[k] = kUnbounded; // the halves' own on their first miss
+    diagonal_.push_back(kUnbounded);
+    diagonal_known_[k] = 0;
+    diagonal_known_.push_back(0);
     known_[k] = 0;
     known_.push_back(0);
     centred_[k] = 0;
@@ -97,6 +153,7 @@ bool SharedMarks::refine(size_t k) {
     depth_[k] = static_cast<char>(depth_[k] + 1);
     depth_.push_back(depth_[k]);
     root_.push_back(root_[k]);
+    reorder_ = true;
     return true;
 }
 

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace seamless {
@@ -35,14 +36,25 @@ class SharedMarks {
     // may_meet(marks()[k], a, b) for the thin ray through (a, b): the mark's
     // screen enclosure as four bounds kept per mark (may_meet's own test
     // where it is not finite).
+    // After a ray missed the mark, also by the diagonal bounds (diagonals()).
     bool may_meet_ray(size_t k, double a, double b) const {
         const std::array<double, 4>& r = screen_[k];
         if (r[0] == kGeneral) return may_meet(marks_[k], Interval(a), Interval(b));
-        return r[0] <= a && a <= r[1] && r[2] <= b && b <= r[3];
+        if (!(r[0] <= a && a <= r[1] && r[2] <= b && b <= r[3])) return false;
+        // fl(a + b) and fl(a - b) are within half an ulp of the exact values,
+        // which diagonal_ allows for (one ulp wider).
+        const std::array<double, 4>& d = diagonal_[k];
+        const double sum = a + b, diff = a - b;
+        return !(sum < d[0] || sum > d[1] || diff < d[2] || diff > d[3]);
     }
     const SubpatchArena& coefs() const { return *coefs_; }
     size_t size() const { return marks_.size(); }
     const MarkJacobian& jacobian(size_t k);
+    // Every mark as (its nearest depth hull[2].lo(), index), sorted: the
+    // order in which a ray solves the marks it may meet (solve_pixel),
+    // sorted once per B and again only after a refine, not per pixel.
+    // Marks refined while a ray walks it keep their place until the next ray.
+    const std::vector<std::pair<double, int>>& depth_order();
     // Mark k bisected when its Jacobian is not regular: k becomes one half,
     // the new last mark the other. false when k is left as it is (regular,
     // bisected kMaxDepth times already, or its box too small).
@@ -59,7 +71,15 @@ class SharedMarks {
     // neighbour likely misses too: the next ray tries the miss proof first;
     // the clip first instead paid less than it cost, 842 -> 853 M on the teapot).
     bool missed(size_t k) const { return missed_[k] != 0; }
-    void miss(size_t k) { missed_[k] = 1; }
+    // The first miss on mark k bounds it diagonally too (diagonals(); beside
+    // a silhouette its neighbours miss it as well, often outside those bounds).
+    void miss(size_t k) {
+        if (!missed_[k] && !diagonal_known_[k]) {
+            diagonal_[k] = diagonals(marks_[k]);
+            diagonal_known_[k] = 1;
+        }
+        missed_[k] = 1;
+    }
     // The patch evaluated at mark k's start (surface_frame's, when the pixel
     // that hit it is shaded), for the next Newton run from there; null when unknown.
     const SurfacePoint* at_start(size_t k) const { return evaluated_[k] ? &at_[k] : nullptr; }
@@ -85,6 +105,8 @@ class SharedMarks {
     std::vector<SurfacePoint> at_;
     std::vector<std::array<Interval, 3>> centre_;
     std::vector<char> known_, started_, depth_, evaluated_, centred_, missed_;
+    std::vector<std::pair<double, int>> order_; // depth_order(), valid when !reorder_
+    bool reorder_ = true;
     // Per mark: the index of the mark of B it was bisected from (itself when not).
     std::vector<int> root_;
     // The bisections made for B's family (reset's family): the halves of the
@@ -106,8 +128,17 @@ class SharedMarks {
     // Per mark: pa and pb's bounds (an empty range behind the eye), or
     // kGeneral in the first where pa or pb is not finite.
     std::vector<std::array<double, 4>> screen_;
+    // Per mark: bounds of (x + y) / z and (x - y) / z over it, where a ray
+    // (a, b) meets it only with a + b and a - b inside, each one ulp wider;
+    // unbounded until the first miss (diagonal_known_).
+    std::vector<std::array<double, 4>> diagonal_;
+    std::vector<char> diagonal_known_;
     static constexpr double kGeneral = -std::numeric_limits<double>::infinity();
+    static constexpr std::array<double, 4> kUnbounded = {
+        -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     static std::array<double, 4> screen(const Mark& m);
+    std::array<double, 4> diagonals(const Mark& m) const;
 };
 
 } // namespace seamless

@@ -563,3 +563,68 @@ TEST_CASE("A RaySystem reuses forms built in its storage only for the same patch
         CHECK(of.pp == r.pp);
     }
 }
+
+TEST_CASE("SharedMarks' depth order holds every mark once, nearest first, after bisections too",
+          "[pixel_solve]") {
+    // solve_pixel walks the marks a ray may meet in this order (sorted once
+    // per B and after each refine instead of per pixel): it must be the sort
+    // of all of B's marks, halves included, by (hull[2].lo(), index).
+    TeapotMarks tm;
+    PixelScratch scratch;
+    SharedMarks shared;
+    RenderStats st;
+    int checked = 0;
+    const int bisected = tm.subscreens(31, 60, shared, [&](double a, double b, const auto&) {
+        solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &shared); // bisects marks
+        const auto& order = shared.depth_order();
+        REQUIRE(order.size() == shared.size());
+        std::vector<int> seen(shared.size(), 0);
+        for (size_t i = 0; i < order.size(); ++i) {
+            const auto [zlo, k] = order[i];
+            REQUIRE(k >= 0);
+            REQUIRE(static_cast<size_t>(k) < shared.size());
+            ++seen[k];
+            CHECK(zlo == shared.marks()[k].hull[2].lo());
+            if (i > 0) CHECK(order[i - 1] < order[i]);
+        }
+        for (const int n : seen) CHECK(n == 1);
+        ++checked;
+    });
+    CHECK(checked > 300);
+    CHECK(bisected > 5);
+}
+
+TEST_CASE("A mark's diagonal bounds reject only rays that miss it", "[pixel_solve]") {
+    // After a miss, SharedMarks::may_meet_ray also bounds a + b and a - b by
+    // the mark's (x + y) / z and (x - y) / z: a ray it rejects inside the
+    // mark's screen rectangle must meet the patch nowhere in the mark's box
+    // (the covering method of ray_patch.h as the reference).
+    TeapotMarks tm;
+    PixelScratch scratch;
+    SharedMarks shared;
+    RenderStats st;
+    std::mt19937 rng(37);
+    std::uniform_real_distribution<double> U(-1.5, 1.5);
+    const double pa = 2.0 * tm.ps.frame.tan_half * tm.ps.frame.aspect / tm.W;
+    const double pb = 2.0 * tm.ps.frame.tan_half / tm.H;
+    int diagonal = 0, compared = 0;
+    tm.subscreens(41, 80, shared, [&](double a, double b, const auto&) {
+        solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &shared); // marks missed
+        for (int r = 0; r < 4; ++r) {
+            const double ra = a + U(rng) * pa, rb = b + U(rng) * pb;
+            for (size_t k = 0; k < shared.size(); ++k) {
+                const Mark& m = shared.marks()[k];
+                if (shared.may_meet_ray(k, ra, rb) || !may_meet(m, Interval(ra), Interval(rb)))
+                    continue;
+                ++diagonal; // inside the rectangle, rejected diagonally
+                std::vector<RayPatchHit> all;
+                intersect(tm.ps.patches[m.patch].forms, ProjectedScene::primary_ray(ra, rb), m.box,
+                          all, RayPatchOptions{});
+                CHECK(all.empty());
+                ++compared;
+            }
+        }
+    });
+    CHECK(diagonal > 100);
+    CHECK(compared == diagonal);
+}
