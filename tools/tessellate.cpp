@@ -86,6 +86,7 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.tolerance = args->tolerance;
             opt.threads = args->threads;
             opt.angle = args->angle * 3.14159265358979323846 / 180;
+            opt.patch_trees = false; // the renderer's, not written
             const Tessellation t = tessellate(m, opt);
             write_mesh(files.staging(0), t.mesh);
             const TessellationStats& s = t.stats;
