@@ -9,6 +9,7 @@
 #include <seamless/base/output_files.h>
 #include <seamless/mesh/mesh_io.h>
 #include <seamless/model/model.h>
+#include <seamless/tessellate/huge_pages.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <nlohmann/json.hpp>
@@ -76,6 +77,7 @@ void add_tessellate(CLI::App& app, Action& action) {
             std::vector<std::filesystem::path> outs{args->out};
             if (!args->stats.empty()) outs.push_back(args->stats);
             OutputFiles files(outs, {args->model});
+            keep_freed_memory(); // the passes reuse each other's pages (huge_pages.h)
             const Model m = load_model(args->model, args->load);
             print_warnings(m);
             TessellationOptions opt;
@@ -86,6 +88,7 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.tolerance = args->tolerance;
             opt.threads = args->threads;
             opt.angle = args->angle * 3.14159265358979323846 / 180;
+            opt.patch_trees = false; // the renderer's, not written
             const Tessellation t = tessellate(m, opt);
             write_mesh(files.staging(0), t.mesh);
             const TessellationStats& s = t.stats;

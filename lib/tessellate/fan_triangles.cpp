@@ -65,7 +65,7 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
 }
 
 void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
-                const FanNormals& normals, const std::vector<int>& node_start,
+                const FanNormals& normals, const std::vector<int>* node_start,
                 std::vector<Vec3>&& positions, double hull_scale, int threads, Tessellation& out) {
     const size_t count = out.subpatches.size();
     const std::vector<int>& ring_start = rings.start;
@@ -107,7 +107,7 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
             grow(mesh.triangles, triangles);
             break;
         case 1:
-            grow(out.trees.nodes, fan_node[count]);
+            if (node_start) grow(out.trees.nodes, fan_node[count]);
             break;
         case 2:
             grow(mesh.triangle_surface, triangles);
@@ -154,21 +154,24 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
                 ++f;
             }
             // Proposition 11, remark 2: the triangles become the leaves below the subpatch.
+            if (!node_start) continue;
             added[i] = attach_triangles_at(out.trees, sp.node, sp.first_triangle, sp.triangle_count,
                                            fan_node[i]);
             update_triangle_hulls(out.trees, fan_node[i], fan_node[i + 1], triangle_box);
         }
     });
-    for (size_t i = 0; i < count; ++i)
-        out.trees.depth = std::max(out.trees.depth, out.subpatches[i].depth + added[i]);
-    const int np = static_cast<int>(node_start.size()) - 1;
-    parallel_chunks(np, threads, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p) {
-            for (int i = node_start[p]; i < node_start[p + 1]; ++i)
-                scaled(out.trees.nodes[i].control_hull);
-            update_triangle_hulls(out.trees, node_start[p], node_start[p + 1], triangle_box);
-        }
-    });
+    if (node_start) {
+        for (size_t i = 0; i < count; ++i)
+            out.trees.depth = std::max(out.trees.depth, out.subpatches[i].depth + added[i]);
+        const std::vector<int>& at = *node_start;
+        const int np = static_cast<int>(at.size()) - 1;
+        parallel_chunks(np, threads, [&](int begin, int end) {
+            for (int p = begin; p < end; ++p) {
+                for (int i = at[p]; i < at[p + 1]; ++i) scaled(out.trees.nodes[i].control_hull);
+                update_triangle_hulls(out.trees, at[p], at[p + 1], triangle_box);
+            }
+        });
+    }
     mesh.positions = std::move(positions);
 }
 

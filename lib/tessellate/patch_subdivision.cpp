@@ -27,7 +27,7 @@ double patch_cost(const BezierPatch& b, double D) {
 
 PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
                               const SubdivisionOptions& sub, double D, int threads, PassMemo& memo,
-                              PatchTrees& trees, std::vector<Subpatch>& subpatches) {
+                              PatchTrees* trees, std::vector<Subpatch>& subpatches) {
     std::vector<Part>& parts = memo.parts;
     const int np = static_cast<int>(patches.size());
     // Patches differ in cost by ten times and more (teapot): dearest first.
@@ -40,6 +40,7 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
             if (!memo.changed[i]) continue;
             SubdivisionOptions o = sub;
             o.memo = memo.keep ? &memo.verdicts[i] : nullptr;
+            o.nodes = trees != nullptr;
             // Emptied, not freed: a later pass refills the storage this one touched.
             Part& part = parts[i];
             part.trees.nodes.clear();
@@ -53,39 +54,43 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
     for (int i = 0; i < np; ++i) {
         at.node_start[i + 1] = at.node_start[i] + static_cast<int>(parts[i].trees.nodes.size());
         at.leaf_start[i + 1] = at.leaf_start[i] + static_cast<int>(parts[i].subpatches.size());
-        trees.depth = std::max(trees.depth, parts[i].trees.depth);
+        if (trees) trees->depth = std::max(trees->depth, parts[i].trees.depth);
     }
     // The previous pass's storage (PassMemo), with room for a pass that splits
     // more: its pages are touched already.
-    trees.nodes.swap(memo.spare_nodes);
-    trees.nodes.clear();
+    if (trees) {
+        trees->nodes.swap(memo.spare_nodes);
+        trees->nodes.clear();
+    }
     subpatches.swap(memo.spare_subpatches);
     subpatches.clear();
     auto room = [&](auto& v, size_t n) {
         if (n > v.capacity()) reserve_huge(v, memo.keep ? n + n / 8 : n, threads);
     };
-    room(trees.nodes, at.node_start[np]);
-    trees.nodes.resize(at.node_start[np]);
+    if (trees) {
+        room(trees->nodes, at.node_start[np]);
+        trees->nodes.resize(at.node_start[np]);
+        trees->roots.resize(np);
+    }
     room(subpatches, at.leaf_start[np]);
     subpatches.resize(at.leaf_start[np]);
-    trees.roots.resize(np);
     parallel_chunks(np, threads, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             const Part& p = parts[i];
             const int node0 = at.node_start[i], leaf0 = at.leaf_start[i];
-            for (size_t j = 0; j < p.trees.nodes.size(); ++j) {
+            for (size_t j = 0; trees && j < p.trees.nodes.size(); ++j) {
                 PatchNode n = p.trees.nodes[j];
                 for (int& c : n.child)
                     if (c >= 0) c += node0;
                 if (n.subpatch >= 0) n.subpatch += leaf0;
-                trees.nodes[node0 + j] = n;
+                trees->nodes[node0 + j] = n;
             }
             for (size_t j = 0; j < p.subpatches.size(); ++j) {
                 Subpatch sp = p.subpatches[j];
                 sp.node += node0;
                 subpatches[leaf0 + j] = sp;
             }
-            trees.roots[i] = p.root + node0;
+            if (trees) trees->roots[i] = p.root + node0;
         }
     });
     if (!memo.keep) std::vector<Part>().swap(parts); // one pass: no copy kept

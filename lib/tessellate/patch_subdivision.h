@@ -27,9 +27,10 @@ struct PatchRanges {
 
 // Splits the patches that memo.changed marks (the others keep memo.parts),
 // with memo.verdicts when memo.keep, and concatenates every patch's tree and
-// leaves into `trees` and `subpatches`. D: the deviation patch_cost orders by.
+// leaves into `trees` (unless null: no trees wanted, TessellationOptions::
+// patch_trees) and `subpatches`. D: the deviation patch_cost orders by.
 PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
                               const SubdivisionOptions& sub, double D, int threads, PassMemo& memo,
-                              PatchTrees& trees, std::vector<Subpatch>& subpatches);
+                              PatchTrees* trees, std::vector<Subpatch>& subpatches);
 
 } // namespace seamless

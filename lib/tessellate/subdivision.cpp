@@ -17,6 +17,7 @@ struct Context {
     const SubdivisionOptions& options;
     PatchTrees& trees;
     std::vector<Subpatch>& out;
+    int next = 0; // the next node id without nodes (options.nodes false)
 };
 
 // True to split in u (s), false for v (t).
@@ -76,9 +77,12 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
 }
 
 int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
-    const int id = static_cast<int>(cx.trees.nodes.size());
-    cx.trees.nodes.emplace_back();
-    cx.trees.nodes[id].control_hull = control_box(b);
+    const bool nodes = cx.options.nodes;
+    const int id = nodes ? static_cast<int>(cx.trees.nodes.size()) : cx.next++;
+    if (nodes) {
+        cx.trees.nodes.emplace_back();
+        cx.trees.nodes[id].control_hull = control_box(b);
+    }
     cx.trees.depth = std::max(cx.trees.depth, depth);
 
     const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
@@ -114,7 +118,7 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
         leaf.corners = V;
         leaf.centre = centre;
         leaf.fan_error = std::max(fan_error, 0.0);
-        cx.trees.nodes[id].subpatch = static_cast<int>(cx.out.size());
+        if (nodes) cx.trees.nodes[id].subpatch = static_cast<int>(cx.out.size());
         cx.out.push_back(leaf);
         return id;
     }
@@ -139,11 +143,14 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
         rlo.t1 = m;
         rhi.t0 = m;
     }
-    cx.trees.nodes[id].split = in_u ? 0 : 1;
     const int a = recurse(cx, lo, rlo, depth + 1);
     const int c = recurse(cx, hi, rhi, depth + 1);
-    cx.trees.nodes[id].child[0] = a;
-    cx.trees.nodes[id].child[1] = c;
+    if (nodes) {
+        PatchNode& n = cx.trees.nodes[id];
+        n.split = in_u ? 0 : 1;
+        n.child[0] = a;
+        n.child[1] = c;
+    }
     return id;
 }
 

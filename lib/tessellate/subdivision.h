@@ -58,6 +58,10 @@ struct SubdivisionOptions {
     const std::unordered_set<std::uint64_t>* split = nullptr;
     // Verdicts of earlier passes, read and extended. Not owned; may be null.
     FanMemo* memo = nullptr;
+    // false: no tree nodes are written (trees.nodes stays empty; node ids, as
+    // Subpatch::node, still count them in the same pre-order): for a caller
+    // that wants no patch trees (TessellationOptions::patch_trees).
+    bool nodes = true;
 };
 
 // A leaf of the split tree: a planar subpatch (or one stopped by max_depth).

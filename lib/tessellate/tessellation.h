@@ -66,6 +66,12 @@ struct TessellationOptions {
     // For callers that only need the triangles (TRAY, topology tests). A
     // tolerance needs the bound and computes it whatever this says.
     bool certify = true;
+    // false: no patch trees (Tessellation::trees stays empty, Subpatch::node
+    // unused); the mesh, subpatches and stats are the same. The trees are the
+    // renderer's (TRAY); a caller that only writes the mesh skips about 150,000
+    // nodes of 120 bytes (teapot at D = 0.001: 18 MB of fresh memory, about
+    // 4,500 page faults at ~11 us each on the AMD EPYC VM, i11o).
+    bool patch_trees = true;
 };
 
 // Wall-clock seconds of the phases of tessellate(), summed over the passes

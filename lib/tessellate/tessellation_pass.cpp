@@ -51,7 +51,8 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     sub.split = &split;
     const double D = st.tolerance > 0 ? st.tolerance : st.eps1 > 0 ? st.eps1 : 1e-3 * st.d_max;
     const PatchRanges ranges =
-        subdivide_patches(patches, sub, D, options.threads, memo, out.trees, out.subpatches);
+        subdivide_patches(patches, sub, D, options.threads, memo,
+                          options.patch_trees ? &out.trees : nullptr, out.subpatches);
     phase.subdivision += lap();
 
     // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
@@ -161,8 +162,8 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     phase.normals += lap();
 
     // (d4) Fan triangles in subpatch order, their patch-tree leaves and hulls.
-    write_fans(patches, rings, normals, ranges.node_start, std::move(vr.positions), hull_scale,
-               options.threads, out);
+    write_fans(patches, rings, normals, options.patch_trees ? &ranges.node_start : nullptr,
+               std::move(vr.positions), hull_scale, options.threads, out);
     phase.fans += lap();
 
     // At unit scale: the signed volume of a closed component stays finite.

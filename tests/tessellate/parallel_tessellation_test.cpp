@@ -6,7 +6,8 @@
 // with the naive rule (crack_free off). The work is split differently on each
 // count (patches dearest first, subpatches in blocks taken by whichever worker
 // is free; vertices numbered in parallel by prefix sums), so these compare
-// genuinely different schedules.
+// genuinely different schedules. Without patch trees (TessellationOptions::
+// patch_trees false, the CLI's tessellate) the output is the same but for them.
 #include "test_util.h"
 
 #include <seamless/model/model.h>
@@ -27,16 +28,23 @@ template <class T> bool same_bits(const std::vector<T>& a, const std::vector<T>&
            (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
-void require_same(const Tessellation& a, const Tessellation& b) {
+// trees false: b was made without patch trees (TessellationOptions::
+// patch_trees), so its trees are empty and its subpatches' nodes not compared.
+void require_same(const Tessellation& a, const Tessellation& b, bool trees = true) {
     CHECK(same_bits(a.mesh.positions, b.mesh.positions));
     CHECK(same_bits(a.mesh.triangles, b.mesh.triangles));
     CHECK(same_bits(a.mesh.triangle_surface, b.mesh.triangle_surface));
     CHECK(same_bits(a.mesh.corner_normals, b.mesh.corner_normals));
     CHECK(same_bits(a.mesh.corner_uvs, b.mesh.corner_uvs));
-    CHECK(a.trees.roots == b.trees.roots);
-    CHECK(a.trees.depth == b.trees.depth);
-    REQUIRE(a.trees.nodes.size() == b.trees.nodes.size());
-    for (size_t i = 0; i < a.trees.nodes.size(); ++i) {
+    if (trees) {
+        CHECK(a.trees.roots == b.trees.roots);
+        CHECK(a.trees.depth == b.trees.depth);
+        REQUIRE(a.trees.nodes.size() == b.trees.nodes.size());
+    } else {
+        CHECK(b.trees.nodes.empty());
+        CHECK(b.trees.roots.empty());
+    }
+    for (size_t i = 0; trees && i < a.trees.nodes.size(); ++i) {
         const PatchNode &p = a.trees.nodes[i], &q = b.trees.nodes[i];
         INFO("node " << i);
         CHECK((p.child[0] == q.child[0] && p.child[1] == q.child[1] && p.triangle == q.triangle &&
@@ -48,9 +56,10 @@ void require_same(const Tessellation& a, const Tessellation& b) {
     for (size_t i = 0; i < a.subpatches.size(); ++i) {
         const Subpatch &p = a.subpatches[i], &q = b.subpatches[i];
         INFO("subpatch " << i);
-        CHECK((p.patch == q.patch && p.node == q.node && p.rect == q.rect && p.depth == q.depth &&
-               p.first_triangle == q.first_triangle && p.triangle_count == q.triangle_count &&
-               p.error_bound == q.error_bound && p.fan_error == q.fan_error));
+        CHECK((p.patch == q.patch && (!trees || p.node == q.node) && p.rect == q.rect &&
+               p.depth == q.depth && p.first_triangle == q.first_triangle &&
+               p.triangle_count == q.triangle_count && p.error_bound == q.error_bound &&
+               p.fan_error == q.fan_error));
     }
     const TessellationStats &s = a.stats, &t = b.stats;
     CHECK(s.subpatches == t.subpatches);
@@ -75,10 +84,15 @@ void check_thread_counts(const std::string& model, double tolerance_of_d_max,
     o.threads = 1;
     const Tessellation one = tessellate(m, o);
     REQUIRE(one.stats.triangles > 0);
+    REQUIRE(one.trees.nodes.size() > one.subpatches.size());
     for (int threads : {2, 3}) {
         INFO(model << ", tolerance " << o.tolerance << ", " << threads << " threads");
         o.threads = threads;
         require_same(one, tessellate(m, o));
+        // Without patch trees (the CLI's tessellate): the same mesh, subpatches and stats.
+        o.patch_trees = false;
+        require_same(one, tessellate(m, o), false);
+        o.patch_trees = true;
     }
 }
 
