@@ -335,4 +335,56 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
     return {-1, levels_over};
 }
 
+CoverResult ClusterAttempt::try_cover(const PixelRect& B, const Mark* marks, size_t n,
+                                      const SubpatchArena& coefs, RenderStats& st) {
+    const StepClock clock(st.certify_seconds);
+    // The nearest patch (try_paint's best) is skipped: it failed step 7.
+    int nearest = -1;
+    double nearest_lo = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < n; ++k)
+        if (marks[k].hull[2].lo() < nearest_lo) {
+            nearest_lo = marks[k].hull[2].lo();
+            nearest = marks[k].patch;
+        }
+    const Interval a = screen_a(ps_, B.x0, B.x1), b = screen_b(ps_, B.y0, B.y1);
+    int tried[kCoverTries];
+    for (int tries = 0; tries < kCoverTries; ++tries) {
+        // The next farther patch by its nearest depth.
+        int patch = -1;
+        double lo = std::numeric_limits<double>::infinity();
+        for (size_t k = 0; k < n; ++k) {
+            const int p = marks[k].patch;
+            if (p == nearest || std::find(tried, tried + tries, p) != tried + tries) continue;
+            if (marks[k].hull[2].lo() < lo) {
+                lo = marks[k].hull[2].lo();
+                patch = p;
+            }
+        }
+        if (patch < 0) break;
+        tried[tries] = patch;
+        ++st.cover_attempts;
+        if (corner_misses(B, marks, n, patch, coefs, false)) continue;
+        CoverResult c;
+        c.patch = patch;
+        c.box = {Interval::empty(), Interval::empty()};
+        for (size_t k = 0; k < n; ++k)
+            if (marks[k].patch == patch) {
+                c.box.s = hull(c.box.s, marks[k].box.s);
+                c.box.t = hull(c.box.t, marks[k].box.t);
+                c.q = hull(c.q, marks[k].hull[2]);
+            }
+        if (!(c.q.lo() > 0)) continue;
+        cluster_system(ps_.patches[patch].forms, a, b, sys_);
+        IVec<2> x = cluster_start(c.box);
+        ClusterCertificate cert = certify_steps(sys_, x, c.box, 1, &st.hs_steps);
+        if (cert == ClusterCertificate::open && !corner_misses(B, marks, n, patch, coefs, true))
+            cert = certify_steps(sys_, x, c.box, kClusterCertifySteps - 1, &st.hs_steps);
+        if (cert != ClusterCertificate::proven) continue;
+        ++st.cover_proven;
+        c.proven = true;
+        return c;
+    }
+    return {};
+}
+
 } // namespace seamless
