@@ -71,12 +71,7 @@ nlohmann::json stats_json(const RenderStats& st) {
               {"secondary_clusters", st.secondary_seconds},
               {"single_pixels", st.single_pixel_seconds},
               {"certified_pixels", st.certified_pixel_seconds}}},
-            {"certified_pixel_fallbacks", st.certified_pixel_fallbacks},
-            {"cover",
-             {{"attempts", st.cover_attempts},
-              {"proven", st.cover_proven},
-              {"pixels", st.cover_pixels},
-              {"fallbacks", st.cover_fallbacks}}}};
+            {"certified_pixel_fallbacks", st.certified_pixel_fallbacks}};
 }
 
 void add_render(CLI::App& app, Action& action) {

@@ -46,13 +46,12 @@ class CertifiedPixels {
     void paint(const PixelRect& B, const ClusterAttemptResult& r, const Mark* marks, size_t n,
                PixelScratch& scratch, RenderStats& st);
 
+  private:
     // Newton from (s, t) (sp: the patch evaluated there) for the ray through
-    // (a, b); true when it converges inside box, with (s, t) the hit (the
-    // one zero in box where a certificate proves exactly one).
+    // (a, b); true when it converges inside box, with (s, t) the hit.
     static bool newton(const BezierPatch& patch, double a, double b, const ParamBox& box,
                        SurfacePoint sp, double& s, double& t);
 
-  private:
     static constexpr int kNewtonSteps = 12; // as newton_corner's
     // A step this small near the regular zero (the certificate's Jacobian is
     // regular on box) leaves an error of its square's order: converged. (1e-12,

@@ -63,21 +63,6 @@ struct ClusterAttemptResult {
     ParamBox box{};
 };
 
-// A farther patch certified to cover a sub-screen B whose nearest patch does
-// not (issue 10: the teapot's silhouette over the ground plane): every ray of
-// B hits `patch` exactly once in `box` (Theorem 6 iii for every ray of B at
-// once, as step 7's), `box` holds every hit of `patch` in B (the hull of its
-// marks), and every such hit has depth in `q` (the hull of its marks' depth
-// enclosures). A mark of another patch whose depth enclosure lies beyond q.hi()
-// is behind the patch on every ray of B (q-separated); only the others may be
-// seen in front of it.
-struct CoverResult {
-    bool proven = false;
-    int patch = -1;
-    ParamBox box{};
-    Interval q = Interval::empty();
-};
-
 class ClusterAttempt {
   public:
     // ts, neighbours: as ClusterShader's. Paints into image with `levels`.
@@ -91,14 +76,7 @@ class ClusterAttempt {
                                    const SubpatchArena& coefs, PixelScratch& pixel,
                                    RenderStats& st);
 
-    // After try_paint failed on B: a patch other than the nearest certified
-    // to cover B as above, trying the farther patches nearest first (at most
-    // kCoverTries of them).
-    CoverResult try_cover(const PixelRect& B, const Mark* marks, size_t n,
-                          const SubpatchArena& coefs, RenderStats& st);
-
   private:
-    static constexpr int kCoverTries = 2;
     int certificate_cause(const Mark* marks, size_t n) const;
     bool corner_misses(const PixelRect& B, const Mark* marks, size_t n, int patch,
                        const SubpatchArena& coefs, bool clip) const;

@@ -231,16 +231,6 @@ class PartRenderer {
                 certified_.paint({B.x0, B.y0, B.x1, B.y1}, r, &arena_[first], nmarks, pixel_, st);
                 return;
             }
-            if (r.cause == RenderStats::surfaces && pixel_count(B) <= kCoverArea) {
-                const CoverResult c = attempt_.try_cover({B.x0, B.y0, B.x1, B.y1}, &arena_[first],
-                                                         nmarks, coefs_, st);
-                if (c.proven) {
-                    ++st.attempts_failed[r.cause];
-                    B.cause = r.cause;
-                    paint_cover(B, first, nmarks, c, st);
-                    return;
-                }
-            }
             cause = r.cause;
             levels_over = r.levels_over;
             ++st.attempts_failed[cause];
@@ -338,72 +328,6 @@ class PartRenderer {
                 }
                 hits_.push_back(p);
             }
-        shade_pixels(B, st);
-    }
-
-    // B's pixels from a farther patch certified to cover B (CoverResult of
-    // cluster_attempt.h): each ray is solved on the marks that may lie in
-    // front of that patch only (those beyond its depths are q-separated
-    // behind it), shared by B's pixels as paint_pixels' are; where it
-    // certainly misses all of them, its hit is the covering patch's one zero
-    // in the certified box, found by Newton there (certified_pixels.h). A hit
-    // on a mark whose depths overlap the covering patch's, and Newton not
-    // converging in the box, leave the ray to step 6 on all of B's marks.
-    void paint_cover(const SubScreen& B, size_t first, size_t n, const CoverResult& c,
-                     RenderStats& st) {
-        const StepClock clock(st.single_pixel_seconds);
-        front_.clear();
-        for (size_t k = first; k < first + n; ++k)
-            if (arena_[k].patch != c.patch && !(arena_[k].hull[2].lo() > c.q.hi()))
-                front_.push_back(arena_[k]);
-        shared_.reset(ps_, coefs_, front_.data(), front_.size(), screen_a(B.x0, B.x1),
-                      screen_b(B.y0, B.y1));
-        const BezierPatch& patch = ps_.patches[c.patch].patch;
-        double ls = c.box.s.mid(), lt = c.box.t.mid(); // the last hit on the covering patch
-        SurfacePoint lat = evaluate(patch, ls, lt);
-        hits_.clear();
-        for (int y = B.y0; y <= B.y1; ++y)
-            for (int x = B.x0; x <= B.x1; ++x) {
-                const double a = ps_.frame.screen_a(x + 0.5), b = ps_.frame.screen_b(y + 0.5);
-                PixelShade p;
-                p.hit = solve_pixel(ps_, a, b, nullptr, 0, pixel_, st, &shared_);
-                bool solved = true;
-                if (p.hit.patch >= 0) {
-                    solved = p.hit.mark >= 0 && shared_.marks()[p.hit.mark].hull[2].hi() < c.q.lo();
-                } else {
-                    double s = ls, t = lt;
-                    solved = CertifiedPixels::newton(patch, a, b, c.box, lat, s, t);
-                    if (solved) p.hit = PixelHit{c.patch, s, t, 0, 1};
-                }
-                if (!solved) {
-                    ++st.cover_fallbacks;
-                    if (p.hit.patch >= 0 && p.hit.mark >= 0) {
-                        const Mark two[2] = {shared_.marks()[p.hit.mark], {c.patch, c.box, {}}};
-                        p.hit = solve_pixel(ps_, a, b, two, 2, pixel_, st);
-                    } else {
-                        p.hit = solve_pixel(ps_, a, b, &arena_[first], n, pixel_, st);
-                    }
-                    p.hit.candidates = 1;
-                }
-                if (p.hit.patch >= 0) {
-                    SurfacePoint at;
-                    surface_frame(ps_.patches[p.hit.patch].patch, p.hit.s, p.hit.t, p.P, p.N, &at);
-                    if (p.hit.patch == c.patch) {
-                        ls = p.hit.s;
-                        lt = p.hit.t;
-                        lat = at;
-                    } else if (solved) {
-                        shared_.evaluated(p.hit.mark, p.hit.s, p.hit.t, at);
-                    }
-                }
-                hits_.push_back(p);
-            }
-        st.cover_pixels += static_cast<long long>(hits_.size());
-        shade_pixels(B, st);
-    }
-
-    // paint_pixels' second half: hits_ (B's, row by row) shaded and painted.
-    void shade_pixels(const SubScreen& B, RenderStats& st) {
         if (ts_) share_lights();
         size_t i = 0;
         for (int y = B.y0; y <= B.y1; ++y)
@@ -523,11 +447,8 @@ class PartRenderer {
     std::uint16_t bg_[3];
     static constexpr int kMaxBisections = 64; // per marked patch and sub-screen
     static constexpr long long kFillLight = 1280, kFillSpan = 320; // fill(): pixels of B
-    // try_cover: sub-screens up to this many pixels whose step 7 failed
-    // with cause surfaces are painted from a farther covering patch.
-    static constexpr long long kCoverArea = 256;
-    std::vector<Mark> arena_, work_, front_; // front_: paint_cover's marks
-    SubpatchArena coefs_;                    // the marks' subpatches
+    std::vector<Mark> arena_, work_;
+    SubpatchArena coefs_; // the marks' subpatches
     std::vector<SubScreen> stack_;
     PixelScratch pixel_;
     SharedMarks shared_;           // paint_pixels: the marks of a small B

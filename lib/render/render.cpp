@@ -38,10 +38,6 @@ void RenderStats::merge(const RenderStats& o) {
     second_order_painted += o.second_order_painted;
     second_order_pixels += o.second_order_pixels;
     certified_pixel_fallbacks += o.certified_pixel_fallbacks;
-    cover_attempts += o.cover_attempts;
-    cover_proven += o.cover_proven;
-    cover_pixels += o.cover_pixels;
-    cover_fallbacks += o.cover_fallbacks;
     certified_pixel_seconds += o.certified_pixel_seconds;
     for (int i = 0; i < split_causes; ++i) {
         attempts_failed[i] += o.attempts_failed[i];

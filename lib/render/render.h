@@ -104,12 +104,6 @@ struct RenderStats {
     // the certified box (solved as step 6's), and their CPU seconds.
     std::array<long long, split_causes> certified_pixels_by_cause{};
     long long certified_pixel_fallbacks = 0;
-    // Sub-screens whose step 7 failed with cause surfaces, painted from a
-    // farther patch certified to cover them (ClusterAttempt::try_cover):
-    // patches tried and proven, the pixels painted so, and of those the ones
-    // that a mark in front was found to hit with depths overlapping the
-    // covering patch's, or whose Newton did not converge (solved as step 6's).
-    long long cover_attempts = 0, cover_proven = 0, cover_pixels = 0, cover_fallbacks = 0;
     double certified_pixel_seconds = 0;
 
     double single_pixel_fraction() const {
