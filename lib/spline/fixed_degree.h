@@ -138,10 +138,12 @@ void enclose_homogeneous_fixed(const BezierPatch& b, double s, double t, int dim
 // its partials along s and t at one point, in doubles: G[0..1], Gs[0..1],
 // Gt[0..1]. Its zeros are the ray's hits (W > 0), and Newton on G needs no
 // quotient; each control point is combined with the ray first, so the sums
-// run over two coordinates (one lane pair) instead of four.
+// run over two coordinates (one lane pair) instead of four. Inlined, like
+// bernstein_fixed: G's arrays stay in registers.
 template <int P, int Q>
-void ray_system_fixed(const BezierPatch& b, double a, double bb, double s, double t, double* G,
-                      double* Gs, double* Gt) {
+[[gnu::always_inline]] inline void ray_system_fixed(const BezierPatch& b, double a, double bb,
+                                                    double s, double t, double* G, double* Gs,
+                                                    double* Gt) {
     using Lanes = double __attribute__((vector_size(16)));
     double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
     bernstein_fixed<P>(s, Bu, dBu);
