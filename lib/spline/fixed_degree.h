@@ -14,7 +14,8 @@ namespace seamless {
 
 // B_i^N(s) and d/ds B_i^N(s), i = 0..N, as bezier_patch.cpp's bernstein().
 // Inlined: a call per polynomial cost a call and the arrays' round trip through memory.
-template <int N> [[gnu::always_inline]] inline void bernstein_fixed(double s, double* B, double* dB) {
+template <int N>
+[[gnu::always_inline]] inline void bernstein_fixed(double s, double* B, double* dB) {
     double tmp[N + 1];
     tmp[0] = 1.0;
     const double r = 1.0 - s;
@@ -130,6 +131,41 @@ void enclose_homogeneous_fixed(const BezierPatch& b, double s, double t, int dim
         e = next_up(next_up(e));
         out[c] = std::isfinite(v) && std::isfinite(e) ? Interval(next_down(v - e), next_up(v + e))
                                                       : Interval::entire();
+    }
+}
+
+// The primary ray's homogeneous system G = (X - a Z, Y - b Z) of a patch and
+// its partials along s and t at one point, in doubles: G[0..1], Gs[0..1],
+// Gt[0..1]. Its zeros are the ray's hits (W > 0), and Newton on G needs no
+// quotient; each control point is combined with the ray first, so the sums
+// run over two coordinates (one lane pair) instead of four. Inlined, like
+// bernstein_fixed: G's arrays stay in registers.
+template <int P, int Q>
+[[gnu::always_inline]] inline void ray_system_fixed(const BezierPatch& b, double a, double bb,
+                                                    double s, double t, double* G, double* Gs,
+                                                    double* Gt) {
+    using Lanes = double __attribute__((vector_size(16)));
+    double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
+    bernstein_fixed<P>(s, Bu, dBu);
+    bernstein_fixed<Q>(t, Bv, dBv);
+    const Lanes e = {a, bb};
+    Lanes X = {}, Xu = {}, Xv = {};
+    for (int i = 0; i <= P; ++i) {
+        Lanes row = {}, rowv = {};
+        for (int j = 0; j <= Q; ++j) {
+            const HPoint& h = b.at(i, j);
+            const Lanes c = Lanes{h.x, h.y} - e * h.z;
+            row = row + Bv[j] * c;
+            rowv = rowv + dBv[j] * c;
+        }
+        X = X + Bu[i] * row;
+        Xu = Xu + dBu[i] * row;
+        Xv = Xv + Bu[i] * rowv;
+    }
+    for (int k = 0; k < 2; ++k) {
+        G[k] = X[k];
+        Gs[k] = Xu[k];
+        Gt[k] = Xv[k];
     }
 }
 

@@ -84,3 +84,33 @@ TEST_CASE("enclose_homogeneous() of a bicubic, biquadratic or bilinear patch giv
         }
     }
 }
+
+TEST_CASE("ray_system_fixed (bicubic, biquadratic, bilinear) gives G = (X - a Z, Y - b Z) and its "
+          "partials within rounding",
+          "[spline][fixed_degree]") {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> U(0.0, 1.0), E(-2.0, 2.0);
+    for (int n = 0; n < 300; ++n) {
+        const bool rational = n % 2 == 1;
+        const int degree = 3 - n / 100;
+        const BezierPatch b = random_patch(rng, rational, degree);
+        for (int k = 0; k < 20; ++k) {
+            const double s = k == 0 ? 0.0 : U(rng), t = k == 0 ? 1.0 : U(rng);
+            const double a = E(rng), bb = E(rng);
+            double G[2], Gs[2], Gt[2];
+            if (degree == 3) ray_system_fixed<3, 3>(b, a, bb, s, t, G, Gs, Gt);
+            if (degree == 2) ray_system_fixed<2, 2>(b, a, bb, s, t, G, Gs, Gt);
+            if (degree == 1) ray_system_fixed<1, 1>(b, a, bb, s, t, G, Gs, Gt);
+            const HPoint X = evaluate_homogeneous(b, s, t);
+            CHECK(std::abs(G[0] - (X.x - a * X.z)) <= 1e-12 * (1 + X.w));
+            CHECK(std::abs(G[1] - (X.y - bb * X.z)) <= 1e-12 * (1 + X.w));
+            if (rational) continue;
+            // Polynomial: W = 1, so the partials are those of the point.
+            const SurfacePoint sp = evaluate(b, s, t);
+            CHECK(std::abs(Gs[0] - (sp.du.x - a * sp.du.z)) <= 1e-11);
+            CHECK(std::abs(Gs[1] - (sp.du.y - bb * sp.du.z)) <= 1e-11);
+            CHECK(std::abs(Gt[0] - (sp.dv.x - a * sp.dv.z)) <= 1e-11);
+            CHECK(std::abs(Gt[1] - (sp.dv.y - bb * sp.dv.z)) <= 1e-11);
+        }
+    }
+}
