@@ -12,12 +12,15 @@ namespace seamless {
 
 bool CertifiedPixels::newton(const BezierPatch& patch, double a, double b, const ParamBox& box,
                              SurfacePoint sp, double& s, double& t) {
+    // The first step from the kept evaluation, the rest on the ray's
+    // homogeneous system (ray_newton_step, as newton_hit's).
     for (int it = 0; it < kNewtonSteps; ++it) {
         double step = 0;
-        if (!newton_step(sp, a, b, s, t, step)) return false;
+        if (!(it == 0 ? newton_step(sp, a, b, s, t, step)
+                      : ray_newton_step(patch, a, b, s, t, step)))
+            return false;
         if (!box.s.contains(s) || !box.t.contains(t)) return false;
         if (step < kConverged) return true;
-        sp = evaluate(patch, s, t);
     }
     return false;
 }

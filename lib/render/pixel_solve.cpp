@@ -41,31 +41,6 @@ bool newton_step(const BezierPatch& p, double a, double b, double& s, double& t,
     return newton_step(evaluate(p, s, t), a, b, s, t, step);
 }
 
-// Newton's step on the homogeneous system G = (X - a Z, Y - b Z) (the same
-// zeros as on X / W, W > 0): bicubic, biquadratic and bilinear patches by
-// ray_system_fixed, without the quotient rule and with the sums over two
-// combined coordinates (teapot 640x480 x 16: paint_pixels 423.7 -> 405.0 M
-// instructions, PNGs byte-identical; Newton's point only steers, the
-// certificate is below).
-bool ray_newton_step(const BezierPatch& p, double a, double b, double& s, double& t, double& step) {
-    double G[2], Gs[2], Gt[2];
-    if (p.p == 3 && p.q == 3)
-        ray_system_fixed<3, 3>(p, a, b, s, t, G, Gs, Gt);
-    else if (p.p == 2 && p.q == 2)
-        ray_system_fixed<2, 2>(p, a, b, s, t, G, Gs, Gt);
-    else if (p.p == 1 && p.q == 1)
-        ray_system_fixed<1, 1>(p, a, b, s, t, G, Gs, Gt);
-    else
-        return newton_step(p, a, b, s, t, step);
-    const double det = Gs[0] * Gt[1] - Gt[0] * Gs[1];
-    if (!(std::abs(det) > 0)) return false;
-    const double ds = (G[0] * Gt[1] - G[1] * Gt[0]) / det, dt = (Gs[0] * G[1] - Gs[1] * G[0]) / det;
-    s -= ds;
-    t -= dt;
-    step = std::abs(ds) + std::abs(dt);
-    return std::isfinite(step);
-}
-
 // The interval Jacobian of G over a box.
 IMat<2> jacobian(const ClusterSystem& sys, const ParamBox& box) {
     IMat<2> A;
@@ -128,7 +103,36 @@ Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit, double cs, do
     return Z / intersect(over(3), pp.forms.w_hull);
 }
 
+// Newton's step on the homogeneous system G = (X - a Z, Y - b Z) (the same
+// zeros as on X / W, W > 0): bicubic, biquadratic and bilinear patches by
+// ray_system_fixed, without the quotient rule and with the sums over two
+// combined coordinates (teapot 640x480 x 16: paint_pixels 423.7 -> 405.0 M
+// instructions, PNGs byte-identical; Newton's point only steers, the
+// certificate is below).
+[[gnu::always_inline]] inline bool ray_step(const BezierPatch& p, double a, double b, double& s,
+                                            double& t, double& step) {
+    double G[2], Gs[2], Gt[2];
+    if (p.p == 3 && p.q == 3)
+        ray_system_fixed<3, 3>(p, a, b, s, t, G, Gs, Gt);
+    else if (p.p == 2 && p.q == 2)
+        ray_system_fixed<2, 2>(p, a, b, s, t, G, Gs, Gt);
+    else if (p.p == 1 && p.q == 1)
+        ray_system_fixed<1, 1>(p, a, b, s, t, G, Gs, Gt);
+    else
+        return newton_step(p, a, b, s, t, step);
+    const double det = Gs[0] * Gt[1] - Gt[0] * Gs[1];
+    if (!(std::abs(det) > 0)) return false;
+    const double ds = (G[0] * Gt[1] - G[1] * Gt[0]) / det, dt = (Gs[0] * G[1] - Gs[1] * G[0]) / det;
+    s -= ds;
+    t -= dt;
+    step = std::abs(ds) + std::abs(dt);
+    return std::isfinite(step);
+}
 } // namespace
+
+bool ray_newton_step(const BezierPatch& p, double a, double b, double& s, double& t, double& step) {
+    return ray_step(p, a, b, s, t, step);
+}
 
 IVec<2> RaySystem::at(double s, double t) const {
     Interval X[3];
@@ -231,7 +235,7 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
         // is one (the same bits either way), the later ones on G.
         if (!(it == 0 ? at_start ? newton_step(*at_start, a, b, s, t, step)
                                  : newton_step(pp.patch, a, b, s, t, step)
-                      : ray_newton_step(pp.patch, a, b, s, t, step)))
+                      : ray_step(pp.patch, a, b, s, t, step)))
             break;
         if (!box.s.contains(s) || !box.t.contains(t)) break;
         converged =

@@ -161,6 +161,10 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
 // One Newton step for X - aZ = 0, Y - bZ = 0 from (s, t) in doubles, sp: the
 // patch evaluated at (s, t); step: |ds| + |dt|. false where the Jacobian is singular.
 bool newton_step(const SurfacePoint& sp, double a, double b, double& s, double& t, double& step);
+// The same step on the homogeneous system G = (X - aZ, Y - bZ), the patch
+// evaluated at (s, t) inside (fixed-degree kernels for bicubic, biquadratic
+// and bilinear patches): the same zeros, fewer operations.
+bool ray_newton_step(const BezierPatch& p, double a, double b, double& s, double& t, double& step);
 
 // A corner ray of a certified cluster hits the patch exactly once in `box`;
 // its intensity only steers the bilinear form of step 9, whose levels are
