@@ -67,7 +67,7 @@ double bilinear_error(const IntervalJet2& I, double wa, double wb);
 
 // The certified intensity of one corner ray of a cluster (the ray through
 // screen point (a, b), hitting patch pp exactly once in `box`): the hit
-// certified by newton_hit (pixel_solve.h) on a small box, SHADE over that box.
+// certified by newton_hit (certified_newton.h) on a small box, SHADE over that box.
 // J: the Jacobian over box for every ray of B. false when not certified.
 bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
                       double a, double b, const ParamBox& box, const MarkJacobian& J,
