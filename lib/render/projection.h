@@ -4,6 +4,7 @@
 // that primary rays pose the two-dimensional problem of Theorem 10.
 #pragma once
 
+#include <seamless/base/raw_array.h>
 #include <seamless/render/camera.h>
 #include <seamless/render/scene.h>
 #include <seamless/spline/enclosure.h>
@@ -11,9 +12,7 @@
 #include <seamless/spline/subpatch.h>
 
 #include <cstddef>
-#include <memory>
 #include <new>
-#include <type_traits>
 #include <vector>
 
 namespace seamless {
@@ -36,11 +35,9 @@ struct ProjectedPatch {
 // (~4.5 ms at ~12 us a fault); in the workers those faults are shared.
 class ProjectedPatches {
   public:
-    static_assert(std::is_trivially_destructible_v<ProjectedPatch>);
     // Room for n patches, none constructed; place(i) constructs patch i.
     void reset(std::size_t n) {
-        data_.reset(n ? static_cast<ProjectedPatch*>(::operator new(n * sizeof(ProjectedPatch)))
-                      : nullptr);
+        data_ = raw_array<ProjectedPatch>(n);
         size_ = n;
     }
     ProjectedPatch& place(std::size_t i) { return *new (data_.get() + i) ProjectedPatch; }
@@ -53,10 +50,7 @@ class ProjectedPatches {
     const ProjectedPatch* end() const { return data_.get() + size_; }
 
   private:
-    struct Release {
-        void operator()(ProjectedPatch* p) const { ::operator delete(p); }
-    };
-    std::unique_ptr<ProjectedPatch[], Release> data_;
+    RawArray<ProjectedPatch> data_;
     std::size_t size_ = 0;
 };
 
