@@ -2,6 +2,7 @@
 // seamless check MESH: watertightness verification (issues 4 and 9, docs/check.md).
 #include "check_report.h"
 #include "commands.h"
+#include "number_options.h"
 
 #include <seamless/mesh/check.h>
 #include <seamless/mesh/mesh_io.h>
@@ -29,7 +30,7 @@ void add_check(CLI::App& app, Action& action) {
     cmd->add_option("MESH", *mesh_path, "mesh file (.off .obj .ply .stl .gltf .glb)")->required();
     cmd->add_flag("--json", *as_json, "print the whole report as JSON");
     cmd->add_flag("--closed", opts->require_closed, "also fail unless every component is closed");
-    cmd->add_option("--gap", opts->gap, gap_help.str())->check(CLI::PositiveNumber);
+    cmd->add_option("--gap", opts->gap, gap_help.str())->check(finite_number(Bound::positive));
     cmd->add_flag("--no-weld", *no_weld,
                   "do not weld bit-identical vertices; judge the file's own indices");
     cmd->callback([&action, mesh_path, as_json, opts, no_weld] {

@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
+        // One line, as for bad input (CLI11's own exit() adds a second).
+        std::cerr << "error: " << seamless::printable(e.what()) << " (--help for usage)\n";
         return 2;
     }
     try {

@@ -7,6 +7,7 @@
 // of docs/results/tessellation.md is written by bench/tessellation.
 // Exit status 1 when a measured deviation exceeds its bound.
 #include "commands.h"
+#include "number_options.h"
 
 #include <seamless/base/atomic_file.h>
 #include <seamless/mesh/sweep.h>
@@ -35,12 +36,14 @@ void add_sweep(CLI::App& app, Action& action) {
     auto args = std::make_shared<Args>();
     cmd->add_option("MODEL", args->models, "model files (.json version 1, or Newell .bpt)")
         ->required();
-    cmd->add_option("--first-decade", args->first, "start at f = 10^N (default 1: f = 10)");
+    cmd->add_option("--first-decade", args->first, "start at f = 10^N (default 1: f = 10)")
+        ->check(finite_number(Bound::any));
     cmd->add_option("--decades", args->decades, "decades of f to sweep")->check(CLI::Range(0, 12));
     cmd->add_option("--steps-per-decade", args->steps, "steps per decade")
         ->check(CLI::Range(1, 20));
     cmd->add_option("--max-triangles", args->max_triangles,
-                    "stop a model before a step predicted to exceed this many triangles");
+                    "stop a model before a step predicted to exceed this many triangles")
+        ->check(finite_number(Bound::positive));
     cmd->add_option("--threads", args->threads,
                     "worker threads of the tessellation and the deviation measurement (0: all)")
         ->check(CLI::Range(0, 1024));

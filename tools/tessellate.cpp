@@ -3,6 +3,7 @@
 // section 6) with the tolerances of section 8, written in OUT's format.
 #include "commands.h"
 #include "model_options.h"
+#include "number_options.h"
 #include <seamless/base/error.h>
 
 #include <seamless/base/atomic_file.h>
@@ -41,19 +42,19 @@ void add_tessellate(CLI::App& app, Action& action) {
         ->required();
     cmd->add_option("--eps1", args->eps1,
                     "planarity tolerance in model units (default 0.001 * d_max)")
-        ->check(CLI::PositiveNumber);
+        ->check(finite_number(Bound::positive));
     cmd->add_option("--eps2", args->eps2,
                     "boundary straightness tolerance in model units (default 0.02 * d_max)")
-        ->check(CLI::PositiveNumber);
+        ->check(finite_number(Bound::positive));
     cmd->add_option("--seam-tolerance", args->seam_tolerance,
                     "surfaces whose boundaries are closer than this (model units) share their "
                     "vertices there (default 1e-9 * d_max)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(finite_number(Bound::non_negative));
     cmd->add_option("--tolerance", args->tolerance,
                     "requested deviation in model units: subdivide until the certified two-way "
                     "distance between surfaces and mesh is at most this (planarity test off "
                     "unless --eps1/--eps2 are given)")
-        ->check(CLI::PositiveNumber);
+        ->check(finite_number(Bound::positive));
     cmd->add_option("--angle", args->angle,
                     "also bound the angle between the normals of neighbouring triangles, degrees")
         ->check(CLI::Range(0.0, 180.0));
