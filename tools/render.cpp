@@ -110,11 +110,12 @@ void add_render(CLI::App& app, Action& action) {
             opt.dither = !a->no_dither;
             if (!a->size.empty()) {
                 std::smatch m;
-                if (!std::regex_match(a->size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
+                if (!std::regex_match(a->size, m, std::regex(R"((\d+)x(\d+))")))
                     throw InputError("", "--size",
                                      "expected WxH, e.g. 640x480, got '" + a->size + "'");
-                opt.width = std::stoi(m[1]);
-                opt.height = std::stoi(m[2]);
+                // More than five digits is out of range, not a malformed size.
+                opt.width = m[1].length() > 5 ? 0 : std::stoi(m[1]);
+                opt.height = m[2].length() > 5 ? 0 : std::stoi(m[2]);
                 if (opt.width < 1 || opt.height < 1 || opt.width > 16384 || opt.height > 16384)
                     throw InputError("", "--size", "width and height must be in 1..16384");
             }
