@@ -13,17 +13,22 @@ namespace {
 
 // (X - a Z, Y - b Z) of a power form's coordinates, written only for f's
 // degrees (combine() of power_form.h for this system, without its generic
-// loop: one multiplication and one subtraction per coefficient).
+// loop: one multiplication and one subtraction per coefficient). f and g share
+// the degrees, so coordinate c of either is the n = (p + 1) (q + 1)
+// coefficients from at(c, 0, 0) on (power_form.h's packing), walked in the
+// order (i, j) as before: one index, no per-coefficient address arithmetic
+// (teapot 640x480 x 16: primary_rows 15.46 -> 15.04 M instructions).
 void primary_rows(const PowerForm& f, Interval a, Interval b, PowerForm& g) {
     g.p = f.p;
     g.q = f.q;
     g.dim = 2;
-    for (int i = 0; i <= f.p; ++i)
-        for (int j = 0; j <= f.q; ++j) {
-            const Interval z = f.at(2, i, j);
-            g.at(0, i, j) = f.at(0, i, j) - a * z;
-            g.at(1, i, j) = f.at(1, i, j) - b * z;
-        }
+    const int n = (f.p + 1) * (f.q + 1);
+    const Interval *x = &f.at(0, 0, 0), *y = &f.at(1, 0, 0), *z = &f.at(2, 0, 0);
+    Interval *g0 = &g.at(0, 0, 0), *g1 = &g.at(1, 0, 0);
+    for (int k = 0; k < n; ++k) {
+        g0[k] = x[k] - a * z[k];
+        g1[k] = y[k] - b * z[k];
+    }
 }
 
 // The zeros' range along one direction: the hull of the points (i / n, y),

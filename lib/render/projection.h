@@ -33,6 +33,8 @@ struct ProjectedPatch {
 // worker that builds it (project_scene): a vector's resize() zeroed all of
 // them (42 KB each) on one thread first, the teapot's 36 in ~370 page faults
 // (~4.5 ms at ~12 us a fault); in the workers those faults are shared.
+// Constructing one zeroes its BezierPatch only, not its forms (power_form.h):
+// a bicubic touches about 8 of its 10 pages, in 7 places.
 class ProjectedPatches {
   public:
     // Room for n patches, none constructed; place(i) constructs patch i.

@@ -246,17 +246,18 @@ template <class P, class Q>
 Interval horner_rows(const PowerForm& f, int c, ParamBox box, P p, Q q, bool unit) {
     double lo[K], hi[K];
     const Interval* a = &f.at(c, 0, 0);
+    const int row = q + 1; // packed rows (power_form.h): a constant for a fixed q
     // Section 5: sum_i b_i(t) s^i if [t] is narrower, else sum_j c_j(s) t^j.
     if (box.t.rad() <= box.s.rad()) {
         for (int i = 0; i <= p; ++i) {
-            const Interval b = strided_range(a + i * K, 1, q, box.t, unit);
+            const Interval b = strided_range(a + i * row, 1, q, box.t, unit);
             lo[i] = b.lo();
             hi[i] = b.hi();
         }
         return outer_range(lo, hi, p, box.s, unit);
     }
     for (int j = 0; j <= q; ++j) {
-        const Interval b = strided_range(a + j, K, p, box.s, unit);
+        const Interval b = strided_range(a + j, row, p, box.s, unit);
         lo[j] = b.lo();
         hi[j] = b.hi();
     }
@@ -323,12 +324,12 @@ PatchForms patch_forms(const BezierPatch& b) {
 }
 
 void patch_forms(const BezierPatch& b, PatchForms& f) {
-    f.X = power_form(b);
-    f.Xs = derivative_s(f.X);
-    f.Xt = derivative_t(f.X);
-    f.Xss = derivative_s(f.Xs);
-    f.Xst = derivative_t(f.Xs);
-    f.Xtt = derivative_t(f.Xt);
+    power_form(b, f.X);
+    derivative_s(f.X, f.Xs);
+    derivative_t(f.X, f.Xt);
+    derivative_s(f.Xs, f.Xss);
+    derivative_t(f.Xs, f.Xst);
+    derivative_t(f.Xt, f.Xtt);
     f.rational = b.rational;
     double wlo = b.at(0, 0).w, whi = wlo;
     IVec3 hull3 = IVec3::empty();

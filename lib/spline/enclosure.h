@@ -27,7 +27,8 @@ struct ParamBox {
 
 using IVec3 = IVec<3>;
 
-// Everything the enclosures need, computed once per patch (about 40 KB).
+// Everything the enclosures need, computed once per patch (room for 38 KB,
+// a bicubic's forms use 4 KB of it: power_form.h).
 struct PatchForms {
     PowerForm X, Xs, Xt, Xss, Xst, Xtt; // homogeneous coordinates and their derivatives
     bool rational = false;
@@ -35,7 +36,7 @@ struct PatchForms {
     IVec3 control_hull;   // hull of the projected control points, outward rounded
 };
 PatchForms patch_forms(const BezierPatch& b);
-// The same into f (38 KB: no temporary copy of the whole set).
+// The same into f (in place: no temporary copy of the set).
 void patch_forms(const BezierPatch& b, PatchForms& f);
 
 struct PatchEnclosure {

@@ -22,9 +22,14 @@ void bernstein_to_power(int n, double M[][PowerForm::kMaxOrder]) {
 } // namespace
 
 PowerForm power_form(const BezierPatch& b) {
+    PowerForm f;
+    power_form(b, f);
+    return f;
+}
+
+void power_form(const BezierPatch& b, PowerForm& f) {
     assert(b.p >= 0 && b.p <= kMaxDegree && b.q >= 0 && b.q <= kMaxDegree);
     constexpr int K = PowerForm::kMaxOrder;
-    PowerForm f;
     f.p = b.p;
     f.q = b.q;
     f.dim = 4;
@@ -47,11 +52,22 @@ PowerForm power_form(const BezierPatch& b) {
                 f.at(c, k, l) = s;
             }
     }
-    return f;
 }
 
 PowerForm derivative_s(const PowerForm& f) {
     PowerForm d;
+    derivative_s(f, d);
+    return d;
+}
+
+PowerForm derivative_t(const PowerForm& f) {
+    PowerForm d;
+    derivative_t(f, d);
+    return d;
+}
+
+void derivative_s(const PowerForm& f, PowerForm& d) {
+    assert(&d != &f); // d's degrees are set before f's coefficients are read
     d.dim = f.dim;
     d.q = f.q;
     d.p = f.p > 0 ? f.p - 1 : 0;
@@ -60,11 +76,10 @@ PowerForm derivative_s(const PowerForm& f) {
             for (int j = 0; j <= d.q; ++j)
                 d.at(c, i, j) =
                     f.p > 0 ? Interval(double(i + 1)) * f.at(c, i + 1, j) : Interval(0.0);
-    return d;
 }
 
-PowerForm derivative_t(const PowerForm& f) {
-    PowerForm d;
+void derivative_t(const PowerForm& f, PowerForm& d) {
+    assert(&d != &f);
     d.dim = f.dim;
     d.p = f.p;
     d.q = f.q > 0 ? f.q - 1 : 0;
@@ -73,7 +88,6 @@ PowerForm derivative_t(const PowerForm& f) {
             for (int j = 0; j <= d.q; ++j)
                 d.at(c, i, j) =
                     f.q > 0 ? Interval(double(j + 1)) * f.at(c, i, j + 1) : Interval(0.0);
-    return d;
 }
 
 PowerForm combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows) {
@@ -83,7 +97,7 @@ PowerForm combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], in
 }
 
 void combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows, PowerForm& g) {
-    assert(rows >= 1 && rows <= PowerForm::kMaxDim);
+    assert(rows >= 1 && rows <= PowerForm::kMaxDim && &g != &f);
     g.p = f.p;
     g.q = f.q;
     g.dim = rows;

@@ -15,7 +15,7 @@ struct RaySystem {
     PowerForm F, Fs, Ft;
 };
 
-RaySystem ray_system(const PatchForms& patch, const Ray& ray) {
+void ray_system(const PatchForms& patch, const Ray& ray, RaySystem& sys) {
     const Vec3 D = ray.direction;
     // e_1, e_2 EXACTLY orthogonal to D: with k the largest component of D,
     // e = D_k u_j - D_j u_k has e . D = D_k D_j - D_j D_k = 0 in floating point too,
@@ -40,11 +40,9 @@ RaySystem ray_system(const PatchForms& patch, const Ray& ray) {
         }
         m[r][3] = -eo; // e . X - (e . O) W
     }
-    RaySystem sys;
-    sys.F = combine(patch.X, m, 2);
-    sys.Fs = derivative_s(sys.F);
-    sys.Ft = derivative_t(sys.F);
-    return sys;
+    combine(patch.X, m, 2, sys.F);
+    derivative_s(sys.F, sys.Fs);
+    derivative_t(sys.F, sys.Ft);
 }
 
 IVec<2> to_ivec(ParamBox b) {
@@ -130,7 +128,8 @@ void intersect(const PatchForms& patch, const Ray& ray, ParamBox start,
     assert(dot(ray.direction, ray.direction) > 0);
     RayPatchStats local;
     RayPatchStats& st = stats ? *stats : local;
-    const RaySystem sys = ray_system(patch, ray);
+    RaySystem sys; // its coefficients unset until ray_system writes them (power_form.h)
+    ray_system(patch, ray, sys);
     const size_t first = hits.size();
 
     struct Entry {

@@ -102,3 +102,42 @@ TEST_CASE("derivative forms lower the degree; combine is linear", "[power_form]"
         CHECK(g0.width() < 1e-10);
     }
 }
+
+TEST_CASE("coefficients are packed by the degrees; copies and in-place forms agree",
+          "[power_form]") {
+    std::mt19937_64 rng(25);
+    const auto same = [](Interval x, Interval y) { return x.lo() == y.lo() && x.hi() == y.hi(); };
+    for (auto [p, q] : {std::pair{3, 3}, {2, 1}, {0, 4}, {9, 9}}) {
+        const BezierPatch b = test::random_patch(rng, p, q, true);
+        const PowerForm f = power_form(b);
+        // A bicubic's 4 x 4 x 4 coefficients are contiguous: (c (p + 1) + i) (q + 1) + j.
+        REQUIRE(f.size() == 4 * (p + 1) * (q + 1));
+        CHECK(&f.at(3, p, q) - &f.at(0, 0, 0) == f.size() - 1);
+        CHECK(&f.at(1, 0, 0) - &f.at(0, 0, 0) == (p + 1) * (q + 1));
+        CHECK(&f.at(0, 1, 0) - &f.at(0, 0, 0) == q + 1);
+        // In place (into forms holding other degrees) and by value: the same bits.
+        PowerForm g = derivative_t(derivative_s(f)), ds = g, dt = g;
+        power_form(b, g);
+        derivative_s(f, ds);
+        derivative_t(f, dt);
+        const PowerForm ds_value = derivative_s(f), dt_value = derivative_t(f);
+        PowerForm copy;
+        copy = f;
+        int differ = 0;
+        for (int c = 0; c < 4; ++c) {
+            for (int i = 0; i <= p; ++i)
+                for (int j = 0; j <= q; ++j)
+                    differ += !same(g.at(c, i, j), f.at(c, i, j)) +
+                              !same(copy.at(c, i, j), f.at(c, i, j));
+            for (int i = 0; i <= ds.p; ++i)
+                for (int j = 0; j <= ds.q; ++j)
+                    differ += !same(ds.at(c, i, j), ds_value.at(c, i, j));
+            for (int i = 0; i <= dt.p; ++i)
+                for (int j = 0; j <= dt.q; ++j)
+                    differ += !same(dt.at(c, i, j), dt_value.at(c, i, j));
+        }
+        CHECK(differ == 0);
+        CHECK((ds.p == std::max(p - 1, 0) && ds.q == q && dt.p == p && dt.q == std::max(q - 1, 0)));
+        CHECK((copy.p == p && copy.q == q && copy.dim == 4 && g.p == p && g.q == q));
+    }
+}
