@@ -11,16 +11,28 @@
 namespace seamless {
 
 bool CertifiedPixels::newton(const BezierPatch& patch, double a, double b, const ParamBox& box,
-                             SurfacePoint sp, double& s, double& t) {
-    // The first step from the kept evaluation, the rest on the ray's
+                             const Start& from, bool along, Start& to) {
+    // The first step from the kept evaluation (the previous hit), then, along
+    // a row, the previous pixel's correction added; the rest on the ray's
     // homogeneous system (ray_newton_step, as newton_hit's).
-    for (int it = 0; it < kNewtonSteps; ++it) {
-        double step = 0;
-        if (!(it == 0 ? newton_step(sp, a, b, s, t, step)
-                      : ray_newton_step(patch, a, b, s, t, step)))
-            return false;
+    double s = from.s, t = from.t, step = 0;
+    if (!newton_step(from.at, a, b, s, t, step)) return false;
+    const double s1 = s, t1 = t;
+    if (along && from.along) {
+        s += from.ds;
+        t += from.dt;
+    }
+    double k = from.k, prev = 0;
+    for (int it = 1; it < kNewtonSteps; ++it) {
         if (!box.s.contains(s) || !box.t.contains(t)) return false;
-        if (step < kConverged) return true;
+        if (!ray_newton_step(patch, a, b, s, t, step)) return false;
+        if (prev > kMeasurable) k = std::max(kLeast, step / (prev * prev));
+        if (step < kConverged || (step <= kQuadratic && k * step * step < kPredicted)) {
+            if (!box.s.contains(s) || !box.t.contains(t)) return false;
+            to = {s, t, {}, s - s1, t - t1, k, along};
+            return true;
+        }
+        prev = step;
     }
     return false;
 }
@@ -48,14 +60,16 @@ void CertifiedPixels::paint(const PixelRect& B, const ClusterAttemptResult& r, c
             Start row = last;
             for (int y = ty; y <= y1; ++y) {
                 last = row;
+                int last_x = -1; // the pixel of this row where `last` was set
                 const double b = ps_.frame.screen_b(y + 0.5);
                 for (int x = tx; x <= x1; ++x) {
                     const double a = ps_.frame.screen_a(x + 0.5);
                     ++st.primary_rays;
                     Shaded p;
-                    double s = last.s, t = last.t;
-                    if (newton(pp.patch, a, b, r.box, last.at, s, t)) {
-                        p.hit = PixelHit{r.patch, s, t, 0};
+                    Start next;
+                    const bool along = x > tx && last_x == x - 1;
+                    if (newton(pp.patch, a, b, r.box, last, along, next)) {
+                        p.hit = PixelHit{r.patch, next.s, next.t, 0};
                     } else {
                         ++st.certified_pixel_fallbacks;
                         p.hit = solve_pixel(ps_, a, b, &only, 1, scratch, st);
@@ -66,7 +80,11 @@ void CertifiedPixels::paint(const PixelRect& B, const ClusterAttemptResult& r, c
                         surface_frame(ps_.patches[p.hit.patch].patch, p.hit.s, p.hit.t, p.P, p.N,
                                       &sp);
                         if (p.hit.patch == r.patch) { // the next pixel's Newton starts here
-                            last = {p.hit.s, p.hit.t, sp};
+                            next.s = p.hit.s;
+                            next.t = p.hit.t;
+                            next.at = sp;
+                            last = next;
+                            last_x = x;
                             if (x == tx) row = last;
                             if (ts_) {
                                 const Vec3 w = ps_.frame.to_world(p.P);
