@@ -16,8 +16,9 @@
 // Why this is as certified as a single pixel: the certificate proves that the
 // ray of each pixel of B has exactly one zero of G = (X - aZ, Y - bZ) in box
 // and that it is the nearest hit of the ray; Newton converging inside box
-// (steps below kConverged) can only have converged to that zero; the shading is in
-// doubles at the hit, as for every single pixel and corner ray (shade_at of
+// (a step below kConverged, or one whose successor would be below
+// kPredicted) can only have converged to that zero; the shading is in doubles
+// at the hit, as for every single pixel and corner ray (shade_at of
 // cluster_attempt.h, with shadow rays for the lights).
 #pragma once
 
