@@ -7,20 +7,38 @@
 #include <seamless/render/step_clock.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace seamless {
 
 bool CertifiedPixels::newton(const BezierPatch& patch, double a, double b, const ParamBox& box,
-                             SurfacePoint sp, double& s, double& t) {
-    // The first step from the kept evaluation, the rest on the ray's
+                             const Start& from, bool along, Start& to) {
+    // The first step from the kept evaluation (the previous hit), then, along
+    // a row, the previous pixel's correction added; the rest on the ray's
     // homogeneous system (ray_newton_step, as newton_hit's).
-    for (int it = 0; it < kNewtonSteps; ++it) {
-        double step = 0;
-        if (!(it == 0 ? newton_step(sp, a, b, s, t, step)
-                      : ray_newton_step(patch, a, b, s, t, step)))
-            return false;
+    double s = from.s, t = from.t, step = 0;
+    if (!newton_step(from.at, a, b, s, t, step)) return false;
+    const double s1 = s, t1 = t;
+    if (along && from.along) {
+        s += from.ds;
+        t += from.dt;
+    }
+    double k = from.k, prev = 0;
+    for (int it = 1; it < kNewtonSteps; ++it) {
         if (!box.s.contains(s) || !box.t.contains(t)) return false;
-        if (step < kConverged) return true;
+        if (!ray_newton_step(patch, a, b, s, t, step)) return false;
+        if (prev > kMeasurable) k = std::max(kLeast, step / (prev * prev));
+        if (step < kConverged || (step <= kQuadratic && k * step * step < kPredicted)) {
+            if (!box.s.contains(s) || !box.t.contains(t)) return false;
+            to.s = s; // to.at is the caller's to fill
+            to.t = t;
+            to.ds = s - s1;
+            to.dt = t - t1;
+            to.k = k;
+            to.along = along;
+            return true;
+        }
+        prev = step;
     }
     return false;
 }
@@ -34,8 +52,13 @@ void CertifiedPixels::paint(const PixelRect& B, const ClusterAttemptResult& r, c
     lit_.resize(nl);
     hints_.resize(nl, -1);
     // Where Newton starts: the last hit (the previous pixel, or the row's
-    // first above at a row's start), with the patch evaluated there.
-    Start last{r.box.s.mid(), r.box.t.mid(), evaluate(pp.patch, r.box.s.mid(), r.box.t.mid())};
+    // first above at a row's start), with the patch evaluated there. Three
+    // slots, the last hit, the row's first and the next, taken by index
+    // (not copied per pixel: teapot 640x480 x 16 CertifiedPixels::paint
+    // 139.1 -> 136.5 M instructions).
+    Start slots[3];
+    Start *last = &slots[0], *row = &slots[1], *next = &slots[2];
+    *last = {r.box.s.mid(), r.box.t.mid(), evaluate(pp.patch, r.box.s.mid(), r.box.t.mid())};
     for (int ty = B.y0; ty <= B.y1; ty += kTileHeight)
         for (int tx = B.x0; tx <= B.x1; tx += kTileWidth) {
             const int x1 = std::min(B.x1, tx + kTileWidth - 1),
@@ -45,29 +68,33 @@ void CertifiedPixels::paint(const PixelRect& B, const ClusterAttemptResult& r, c
             hits_.clear();
             IVec<3> Pw = IVec<3>::empty();
             int on_patch = 0;
-            Start row = last;
+            *row = *last;
             for (int y = ty; y <= y1; ++y) {
-                last = row;
+                *last = *row;
+                int last_x = -1; // the pixel of this row where `last` was set
                 const double b = ps_.frame.screen_b(y + 0.5);
                 for (int x = tx; x <= x1; ++x) {
                     const double a = ps_.frame.screen_a(x + 0.5);
                     ++st.primary_rays;
-                    Shaded p;
-                    double s = last.s, t = last.t;
-                    if (newton(pp.patch, a, b, r.box, last.at, s, t)) {
-                        p.hit = PixelHit{r.patch, s, t, 0};
+                    Shaded& p = hits_.emplace_back();
+                    const bool along = x > tx && last_x == x - 1;
+                    if (newton(pp.patch, a, b, r.box, *last, along, *next)) {
+                        p.hit = PixelHit{r.patch, next->s, next->t, 0};
                     } else {
+                        *next = {}; // a fallback's hit: no correction, k unknown
                         ++st.certified_pixel_fallbacks;
                         p.hit = solve_pixel(ps_, a, b, &only, 1, scratch, st);
                         if (p.hit.patch < 0) p.hit = solve_pixel(ps_, a, b, marks, n, scratch, st);
                     }
                     if (p.hit.patch >= 0) {
-                        SurfacePoint sp;
                         surface_frame(ps_.patches[p.hit.patch].patch, p.hit.s, p.hit.t, p.P, p.N,
-                                      &sp);
+                                      &next->at);
                         if (p.hit.patch == r.patch) { // the next pixel's Newton starts here
-                            last = {p.hit.s, p.hit.t, sp};
-                            if (x == tx) row = last;
+                            next->s = p.hit.s;
+                            next->t = p.hit.t;
+                            std::swap(last, next);
+                            last_x = x;
+                            if (x == tx) *row = *last;
                             if (ts_) {
                                 const Vec3 w = ps_.frame.to_world(p.P);
                                 for (int c = 0; c < 3; ++c) Pw[c] = hull(Pw[c], Interval(w[c]));
@@ -75,7 +102,6 @@ void CertifiedPixels::paint(const PixelRect& B, const ClusterAttemptResult& r, c
                             ++on_patch;
                         }
                     }
-                    hits_.push_back(p);
                 }
             }
             const bool shared = ts_ && on_patch >= 4;
