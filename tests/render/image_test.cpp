@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdint>
 
 using namespace seamless;
 
@@ -56,4 +57,30 @@ TEST_CASE("Image: clear writes only its rectangle", "[image]") {
     CHECK(cleared == 9);
     im.clear(3, 0, 2, 5); // empty: x1 < x0
     CHECK(im.at(3, 0, 0) == 5);
+}
+
+TEST_CASE("Image: pixel storage from 1 MB up is 2 MB-aligned, writable, copyable", "[image]") {
+    for (const std::size_t bytes : {std::size_t{100}, std::size_t{1} << 20,
+                                    (std::size_t{2} << 20) + 1, std::size_t{9437184}}) {
+        auto* p = static_cast<unsigned char*>(allocate_pixels(bytes));
+        REQUIRE(p != nullptr);
+        if (bytes >= (std::size_t{1} << 20))
+            CHECK(reinterpret_cast<std::uintptr_t>(p) % (std::size_t{2} << 20) == 0);
+        std::fill_n(p, bytes, static_cast<unsigned char>(bytes % 251));
+        CHECK(p[0] == bytes % 251);
+        CHECK(p[bytes - 1] == bytes % 251);
+        release_pixels(p, bytes);
+    }
+    // An image of render size (1280 x 1024: 7.5 MB of levels) tiled by clears,
+    // copied, and compared.
+    Image im(1280, 1024, 256, Image::Unfilled{});
+    for (int p = 0; p < 64; ++p) {
+        const int i = p % 8, j = p / 8;
+        im.clear(i * 160, j * 128, i * 160 + 159, j * 128 + 127);
+    }
+    CHECK(all_clear(im));
+    im.at(1279, 1023, 2) = 255;
+    const Image copy = im;
+    CHECK(copy.level == im.level);
+    CHECK(copy.at(1279, 1023, 2) == 255);
 }
