@@ -6,46 +6,11 @@
 
 #include <stb/stb_image_write.h> // implementation in Debian's libstb
 
-#include <sys/mman.h>
-
 #include <algorithm>
 #include <cmath>
 #include <mutex>
-#include <new>
 
 namespace seamless {
-namespace {
-
-constexpr std::size_t kHugePage = std::size_t{2} << 20;
-
-std::size_t huge_bytes(std::size_t bytes) {
-    return (bytes + kHugePage - 1) / kHugePage * kHugePage;
-}
-
-} // namespace
-
-void* allocate_pixels(std::size_t bytes) {
-    if (bytes < kHugePage / 2) return ::operator new(bytes);
-    // A mapping one huge page longer, trimmed to the aligned pages inside it.
-    const std::size_t size = huge_bytes(bytes);
-    void* m =
-        mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (m == MAP_FAILED) throw std::bad_alloc();
-    char* const base = static_cast<char*>(m);
-    const std::size_t head =
-        (kHugePage - reinterpret_cast<std::uintptr_t>(base) % kHugePage) % kHugePage;
-    if (head > 0) munmap(base, head);
-    munmap(base + head + size, kHugePage - head);
-    madvise(base + head, size, MADV_HUGEPAGE); // advice: no huge pages is no error
-    return base + head;
-}
-
-void release_pixels(void* p, std::size_t bytes) {
-    if (bytes < kHugePage / 2)
-        ::operator delete(p);
-    else
-        munmap(p, huge_bytes(bytes));
-}
 
 void Image::clear(int x0, int y0, int x1, int y1) {
     if (x1 < x0) return;

@@ -2,6 +2,8 @@
 // RGB framebuffer of quantised intensity levels and its PNG output (stb).
 #pragma once
 
+#include <seamless/render/huge_pages.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -10,23 +12,16 @@
 
 namespace seamless {
 
-// Storage for an image's pixels: from 1 MB up in 2 MB-aligned pages advised
-// for transparent huge pages (madvise), else operator new. A 4 KB page's
-// first touch costs ~12 us here (an image's 2,250 pages at 1280x1024: ~26 ms
-// of the render's CPU); a test program touching 8 MB: 25-31 ms with 4 KB
-// pages, 0.7-2.4 ms advised (2026-12-02, bench/render/render_assessment.md).
-void* allocate_pixels(std::size_t bytes);
-void release_pixels(void* p, std::size_t bytes);
-
 // std::allocator whose resize(n) leaves new elements uninitialised (default
 // initialisation): fresh pages stay untouched until a pixel is written; its
-// storage from allocate_pixels.
+// storage from allocate_huge (huge_pages.h: the image is written once per
+// render, and its 4 KB pages' first touches cost ~26 ms of CPU at 1280x1024).
 template <class T> struct UninitialisedAllocator : std::allocator<T> {
     template <class U> struct rebind { using other = UninitialisedAllocator<U>; };
     UninitialisedAllocator() = default;
     template <class U> UninitialisedAllocator(const UninitialisedAllocator<U>&) {}
-    T* allocate(std::size_t n) { return static_cast<T*>(allocate_pixels(n * sizeof(T))); }
-    void deallocate(T* p, std::size_t n) { release_pixels(p, n * sizeof(T)); }
+    T* allocate(std::size_t n) { return static_cast<T*>(allocate_huge(n * sizeof(T))); }
+    void deallocate(T* p, std::size_t n) { release_huge(p, n * sizeof(T)); }
     template <class U> void construct(U* p) { ::new (static_cast<void*>(p)) U; }
     template <class U, class... A> void construct(U* p, A&&... a) {
         ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
