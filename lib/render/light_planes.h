@@ -52,7 +52,7 @@ class LightPlanes {
     // scene at 640x480 forms about a quarter of its 6,998 planes (304 bytes
     // each); indexed by light and triangle they were spread over the 2.1 MB
     // (perf record -e page-faults: ~260 faults of ~12 us in get), packed ~115;
-    // in huge pages (huge_pages.h) from 1 MB up: teapot 1280x1024, 136 -> 0.
+    // in huge pages (huge_pages.h) from 512 KB up: teapot 1280x1024, 136 -> 0.
     static constexpr std::uint32_t kStoring = ~std::uint32_t{0};
     std::size_t triangles_ = 0, count_ = 0;
     // slot_[i]: 0 not formed, kStoring being stored, else 1 + its place in planes_.

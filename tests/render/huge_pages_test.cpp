@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// huge_pages.h: storage below 1 MB from operator new, from 1 MB up 2 MB-aligned;
+// huge_pages.h: storage below 512 KB from operator new, from 512 KB up 2 MB-aligned;
 // every byte writable either way, and huge_array's deleter releases it.
 #include <seamless/render/huge_pages.h>
 
@@ -10,12 +10,12 @@
 
 using namespace seamless;
 
-TEST_CASE("huge pages: aligned from 1 MB up, every byte writable", "[huge_pages]") {
+TEST_CASE("huge pages: aligned from 512 KB up, every byte writable", "[huge_pages]") {
     constexpr std::size_t MB = std::size_t{1} << 20;
-    for (const std::size_t bytes : {std::size_t{100}, MB - 1, MB, 2 * MB + 1, 9 * MB}) {
+    for (const std::size_t bytes : {std::size_t{100}, MB / 2 - 1, MB / 2, MB, 2 * MB + 1, 9 * MB}) {
         auto* p = static_cast<unsigned char*>(allocate_huge(bytes));
         REQUIRE(p != nullptr);
-        if (bytes >= MB) CHECK(reinterpret_cast<std::uintptr_t>(p) % (2 * MB) == 0);
+        if (bytes >= MB / 2) CHECK(reinterpret_cast<std::uintptr_t>(p) % (2 * MB) == 0);
         const auto v = static_cast<unsigned char>(bytes % 251);
         std::fill_n(p, bytes, v);
         CHECK(std::count(p, p + bytes, v) == static_cast<std::ptrdiff_t>(bytes));
