@@ -36,11 +36,13 @@ void write_png(const std::filesystem::path& path, const Image& im) {
     std::vector<std::uint8_t> byte(static_cast<size_t>(std::max(im.levels, 2)));
     for (size_t k = 0; k < byte.size(); ++k)
         byte[k] = level_to_byte(static_cast<int>(k), im.levels);
-    std::vector<std::uint8_t> rgb(im.level.size());
-    for (size_t k = 0; k < rgb.size(); ++k)
-        rgb[k] = byte[std::min<size_t>(im.level[k], byte.size() - 1)];
+    // Uninitialised, in huge pages (huge_pages.h): value-initialised, its 4 KB
+    // pages were ~960 of a 1280x1024 run's faults (~11 ms of CPU).
+    const size_t n = im.level.size();
+    const HugeArray<std::uint8_t> rgb = huge_array<std::uint8_t>(n);
+    for (size_t k = 0; k < n; ++k) rgb[k] = byte[std::min<size_t>(im.level[k], byte.size() - 1)];
     write_atomically(path, [&](const std::filesystem::path& tmp) {
-        if (!stbi_write_png(tmp.c_str(), im.width, im.height, 3, rgb.data(), im.width * 3))
+        if (!stbi_write_png(tmp.c_str(), im.width, im.height, 3, rgb.get(), im.width * 3))
             throw InputError(path.string(), "", "cannot write PNG");
     });
 }

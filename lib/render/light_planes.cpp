@@ -27,7 +27,7 @@ void LightPlanes::reset(std::size_t lights, std::size_t triangles) {
     static_assert(std::is_trivially_copyable_v<ApexTriangle> &&
                   std::is_trivially_destructible_v<ApexTriangle>);
     if (count_ >= kStoring) throw std::length_error("LightPlanes: too many planes");
-    planes_ = raw_array<ApexTriangle>(count_);
+    planes_ = huge_array<ApexTriangle>(count_);
     slot_.reset(count_ ? new std::atomic<std::uint32_t>[count_]() : nullptr);
     stored_ = std::make_unique<std::atomic<std::uint32_t>>(0);
 }

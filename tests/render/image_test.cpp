@@ -57,3 +57,17 @@ TEST_CASE("Image: clear writes only its rectangle", "[image]") {
     im.clear(3, 0, 2, 5); // empty: x1 < x0
     CHECK(im.at(3, 0, 0) == 5);
 }
+
+TEST_CASE("Image: a render-size image (huge-page storage) tiled by clears, copied", "[image]") {
+    // 1280 x 1024: 7.5 MB of levels, 1.25 MB of surface flags (huge_pages.h).
+    Image im(1280, 1024, 256, Image::Unfilled{});
+    for (int p = 0; p < 64; ++p) {
+        const int i = p % 8, j = p / 8;
+        im.clear(i * 160, j * 128, i * 160 + 159, j * 128 + 127);
+    }
+    CHECK(all_clear(im));
+    im.at(1279, 1023, 2) = 255;
+    const Image copy = im;
+    CHECK(copy.level == im.level);
+    CHECK(copy.at(1279, 1023, 2) == 255);
+}
