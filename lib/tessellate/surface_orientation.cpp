@@ -205,15 +205,24 @@ OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
     std::vector<char> open(ns, 0);
     for (int s = 0; s < ns; ++s)
         if (open_surface[s]) open[root[s]] = 1;
+    // Each triangle's signed term in parallel, summed on one thread in
+    // triangle order: the same sums, bit for bit, as one loop (teapot
+    // D = 0.001: this function's instructions on the calling thread 4.3 M ->
+    // 1.9 M, callgrind, i11p).
+    const int nt = mesh.triangle_count();
+    std::vector<double> term(nt);
+    parallel_chunks(nt, threads, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            const int s = mesh.triangle_surface[f];
+            const Vec3 &p = mesh.positions[mesh.triangles[f][0]],
+                       &q = mesh.positions[mesh.triangles[f][1]],
+                       &r = mesh.positions[mesh.triangles[f][2]];
+            const double v = dot(p, cross(q, r));
+            term[f] = (parity[s] ^ flip_root[root[s]]) ? -v : v;
+        }
+    });
     std::vector<double> volume(ns, 0);
-    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-        const int s = mesh.triangle_surface[f];
-        const Vec3 &p = mesh.positions[mesh.triangles[f][0]],
-                   &q = mesh.positions[mesh.triangles[f][1]],
-                   &r = mesh.positions[mesh.triangles[f][2]];
-        const double v = dot(p, cross(q, r));
-        volume[root[s]] += (parity[s] ^ flip_root[root[s]]) ? -v : v;
-    }
+    for (int f = 0; f < nt; ++f) volume[root[mesh.triangle_surface[f]]] += term[f];
     for (int s = 0; s < ns; ++s)
         if (root[s] == s && !open[s] && volume[s] < 0) flip_root[s] ^= 1;
 

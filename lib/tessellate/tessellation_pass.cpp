@@ -62,7 +62,11 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     st.seam_tolerance =
         std::max(options.seam_tolerance >= 0 ? options.seam_tolerance : 1e-9 * st.d_max,
                  64 * std::numeric_limits<double>::epsilon() * scale);
-    const BoundaryMatch match = match_boundaries(patches, st.seam_tolerance);
+    if (memo.match_tolerance != st.seam_tolerance) {
+        memo.match = match_boundaries(patches, st.seam_tolerance);
+        memo.match_tolerance = st.seam_tolerance;
+    }
+    const BoundaryMatch& match = memo.match;
     st.shared_edges = match.shared_edges;
     st.collapsed_edges = match.collapsed_edges;
     // A patch not split again keeps its sides and interior lines (the
