@@ -135,7 +135,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     const bool certify = options.certify || st.tolerance > 0;
     if (certify) {
         certify_fans(patches, rings, vr.positions, ranges.leaf_start, scale, st.tolerance,
-                     options.threads, memo.keep, memo.bounds, out.subpatches);
+                     options.threads, memo.keep, previous.same, memo.bounds, out.subpatches);
         for (const Subpatch& sp : out.subpatches) {
             if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
             st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
