@@ -134,13 +134,7 @@ void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& ri
     std::vector<int> added(count);
     pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
-            Subpatch& sp = out.subpatches[i];
-            if (hull_scale != 1) {
-                sp.fan_error *= hull_scale;
-                sp.error_bound *= hull_scale;
-                sp.centre = hull_scale * sp.centre;
-                for (Vec3& c : sp.corners) c = hull_scale * c;
-            }
+            const Subpatch& sp = out.subpatches[i];
             const BezierPatch& b = patches[sp.patch];
             const ParamRect& r = sp.rect;
             const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));

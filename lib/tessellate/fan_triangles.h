@@ -28,11 +28,8 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
 // (`node_start`: where each patch's nodes start, one more entry: the end;
 // null: no trees, TessellationOptions::patch_trees);
 // out.mesh.positions = `positions`; stats max_depth and nonplanar_subpatches.
-// The hulls and the subpatches' lengths (corners, centre, fan_error,
-// error_bound) come out multiplied by `hull_scale` (a power of two: a pass at
-// unit scale gives them in the model's units, exactly, tessellation.cpp);
-// the subpatches are scaled here, where each is read anyway, rather than in
-// a pass of their own after the mesh.
+// The hulls come out multiplied by `hull_scale` (a power of two: a pass at
+// unit scale gives them in the model's units, exactly, tessellation.cpp).
 // Counted per subpatch, placed by prefix sums, written in parallel: the same
 // arrays for any thread count.
 void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,

@@ -76,8 +76,7 @@ void release(PassMemo& memo, int threads) {
 // above the tolerance once neighbours add vertices to its sides (its final
 // fan and phi differ from the four triangles'); such subpatches are split in
 // another pass (rarely more than one).
-// The trees' hulls and the subpatches' lengths come out multiplied by
-// `hull_scale` (tessellate_pass).
+// The trees' hulls come out multiplied by `hull_scale` (tessellate_pass).
 Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
                                       const TessellationOptions& options, double hull_scale) {
     const auto start = std::chrono::steady_clock::now();
@@ -159,17 +158,23 @@ Tessellation tessellate(const Model& model, const std::vector<BezierPatch>& patc
     if (o.seam_tolerance >= 0) o.seam_tolerance *= down;
     o.tolerance *= down;
     const double scale_in = lap();
-    // The trees' hulls and the subpatches, exactly up times theirs at unit
-    // scale, are written so by the fans (one pass over each fewer: teapot
-    // D = 0.001, the pass back over positions and subpatches took 0.5 ms of
-    // CPU on 2 threads against 0.16 ms on 1, its data last written on the
-    // other core).
+    // The trees' hulls, exactly up times theirs at unit scale, are written so
+    // by the fans (one pass over the nodes fewer).
     Tessellation t = tessellate_at_unit_scale(m, ps, o, up);
     lap();
     parallel_chunks(t.mesh.vertex_count(), options.threads, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) t.mesh.positions[i] = up * t.mesh.positions[i];
     });
-    // The subpatches came out scaled by write_fans (hull_scale).
+    parallel_chunks(static_cast<int>(t.subpatches.size()), options.threads,
+                    [&](int begin, int end) {
+                        for (int i = begin; i < end; ++i) {
+                            Subpatch& sp = t.subpatches[i];
+                            sp.fan_error *= up;
+                            sp.error_bound *= up;
+                            sp.centre = up * sp.centre;
+                            for (Vec3& c : sp.corners) c = up * c;
+                        }
+                    });
     t.stats.d_max *= up;
     t.stats.eps1 *= up;
     t.stats.eps2 *= up;

@@ -19,8 +19,7 @@ namespace seamless {
 // `split`: subpatches to split whatever the criteria say (subpatch_key).
 // Without `last`, a pass that leaves subpatches above the tolerance returns
 // before building the mesh (another pass follows). The patch trees' hulls
-// and, when the mesh is built, the subpatches' lengths come out multiplied by
-// `hull_scale` (write_fans), the rest at the model's scale.
+// come out multiplied by `hull_scale` (write_fans), the rest at the model's scale.
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
                              const TessellationOptions& options,
                              const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
