@@ -35,10 +35,14 @@ struct KnownBounds {
 // patch, read; with `keep` the fresh bounds are added to it (each patch's map
 // on its own, in parallel) for the next pass. `leaf_start`: where each patch's
 // subpatches start (one more entry: the end). `scale` and `tolerance` as
-// certified_fan_bound's.
+// certified_fan_bound's. `same` (may be null): per patch, whether its
+// subpatches, rings and vertex positions are the previous pass's (subpatch_ring.h,
+// PreviousRings), so that each subpatch's known bound is its own, found by key
+// alone (with `keep`, every pass leaves each subpatch's bound under its key).
 void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
                   const std::vector<Vec3>& positions, const std::vector<int>& leaf_start,
                   double scale, double tolerance, int threads, bool keep,
-                  std::vector<KnownBounds>& known, std::vector<Subpatch>& subpatches);
+                  const std::vector<char>* same, std::vector<KnownBounds>& known,
+                  std::vector<Subpatch>& subpatches);
 
 } // namespace seamless

@@ -44,6 +44,10 @@ struct SubpatchRings {
     std::vector<int> start;         // per subpatch into vertices; one more entry: the end
     std::vector<Vec3> centre_point; // S at the centre of the subpatch's parameters
     std::vector<int> centre;        // its mesh vertex (vertex_numbering.h)
+    // Per slot of `vertices`: its vertex's canonical key, where the numbering
+    // ran in parallel (vertex_numbering.h; else empty). A later pass copies
+    // the keys of rings it copies.
+    std::vector<VertexKey> keys;
 };
 
 // A previous pass's rings, copied where they cannot have changed: patch p's

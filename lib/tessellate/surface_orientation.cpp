@@ -72,10 +72,12 @@ struct EdgeUses {
 
 // In parallel: the triangles in kUseBlocks blocks; each block counts its uses
 // per bucket, then writes them after the earlier blocks' in each bucket: the
-// same triangle order in every bucket for any thread count.
+// same triangle order in every bucket for any thread count. In the same pass
+// over the triangles: each one's dot(p, q x r) (6 times its signed volume
+// against the origin) into `volume6`, for the closed components' volumes.
 constexpr int kUseBlocks = 8;
 
-EdgeUses edge_uses(const TriangleMesh& mesh, int threads) {
+EdgeUses edge_uses(const TriangleMesh& mesh, int threads, std::vector<double>& volume6) {
     EdgeUses e;
     const int nv = static_cast<int>(mesh.positions.size());
     const int nt = static_cast<int>(mesh.triangles.size());
@@ -90,12 +92,18 @@ EdgeUses edge_uses(const TriangleMesh& mesh, int threads) {
     };
     // at[b][v]: block b's uses in bucket v, then where they start.
     std::vector<std::vector<int>> at(kUseBlocks);
+    volume6.resize(nt);
     parallel_chunks(kUseBlocks, threads, [&](int begin, int end) {
         for (int b = begin; b < end; ++b) {
             std::vector<int>& n = at[b];
             n.assign(nv, 0);
-            for (int f = block_begin(b); f < block_begin(b + 1); ++f)
+            for (int f = block_begin(b); f < block_begin(b + 1); ++f) {
                 each_use(f, [&n](int a, int c) { ++n[std::min(a, c)]; });
+                const Vec3 &p = mesh.positions[mesh.triangles[f][0]],
+                           &q = mesh.positions[mesh.triangles[f][1]],
+                           &r = mesh.positions[mesh.triangles[f][2]];
+                volume6[f] = dot(p, cross(q, r));
+            }
         }
     });
     e.start.assign(nv + 1, 0);
@@ -139,7 +147,8 @@ OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
     // keeping both (opposite directions) or flipping one (equal directions).
     // Surfaces with an edge used once or more than twice are open. The
     // buckets are independent: counted in parallel, summed (order-free).
-    const EdgeUses e = edge_uses(mesh, threads);
+    std::vector<double> volume6;
+    const EdgeUses e = edge_uses(mesh, threads, volume6);
     std::map<std::uint64_t, std::array<int, 2>> votes;
     std::vector<char> open_surface(ns, 0);
     std::mutex merge;
@@ -205,14 +214,14 @@ OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
     std::vector<char> open(ns, 0);
     for (int s = 0; s < ns; ++s)
         if (open_surface[s]) open[root[s]] = 1;
+    // The terms were computed in parallel with the edge uses; summed here in
+    // triangle order, the same sums bit for bit as one loop (teapot D = 0.001:
+    // this function's instructions on the calling thread 4.3 M -> 2.0 M,
+    // callgrind, i11p).
     std::vector<double> volume(ns, 0);
-    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    for (size_t f = 0; f < volume6.size(); ++f) {
         const int s = mesh.triangle_surface[f];
-        const Vec3 &p = mesh.positions[mesh.triangles[f][0]],
-                   &q = mesh.positions[mesh.triangles[f][1]],
-                   &r = mesh.positions[mesh.triangles[f][2]];
-        const double v = dot(p, cross(q, r));
-        volume[root[s]] += (parity[s] ^ flip_root[root[s]]) ? -v : v;
+        volume[root[s]] += (parity[s] ^ flip_root[root[s]]) ? -volume6[f] : volume6[f];
     }
     for (int s = 0; s < ns; ++s)
         if (root[s] == s && !open[s] && volume[s] < 0) flip_root[s] ^= 1;

@@ -62,7 +62,11 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     st.seam_tolerance =
         std::max(options.seam_tolerance >= 0 ? options.seam_tolerance : 1e-9 * st.d_max,
                  64 * std::numeric_limits<double>::epsilon() * scale);
-    const BoundaryMatch match = match_boundaries(patches, st.seam_tolerance);
+    if (memo.match_tolerance != st.seam_tolerance) {
+        memo.match = match_boundaries(patches, st.seam_tolerance);
+        memo.match_tolerance = st.seam_tolerance;
+    }
+    const BoundaryMatch& match = memo.match;
     st.shared_edges = match.shared_edges;
     st.collapsed_edges = match.collapsed_edges;
     // A patch not split again keeps its sides and interior lines (the
@@ -131,7 +135,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     const bool certify = options.certify || st.tolerance > 0;
     if (certify) {
         certify_fans(patches, rings, vr.positions, ranges.leaf_start, scale, st.tolerance,
-                     options.threads, memo.keep, memo.bounds, out.subpatches);
+                     options.threads, memo.keep, previous.same, memo.bounds, out.subpatches);
         for (const Subpatch& sp : out.subpatches) {
             if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
             st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);

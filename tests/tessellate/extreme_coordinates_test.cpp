@@ -46,6 +46,17 @@ TEST_CASE("Huge and tiny coordinates tessellate to the same mesh, scaled", "[sti
         for (int v = 0; v < t.mesh.vertex_count(); ++v)
             exact &= t.mesh.positions[v] == scale * base.mesh.positions[v];
         CHECK(exact);
+        // The subpatches too (scaled back by the fans, write_fans).
+        REQUIRE(t.subpatches.size() == base.subpatches.size());
+        bool same_subpatches = true;
+        for (size_t i = 0; i < t.subpatches.size(); ++i) {
+            const Subpatch &p = t.subpatches[i], &q = base.subpatches[i];
+            same_subpatches &= p.rect == q.rect && p.centre == scale * q.centre &&
+                               p.fan_error == scale * q.fan_error &&
+                               p.error_bound == scale * q.error_bound;
+            for (int k = 0; k < 4; ++k) same_subpatches &= p.corners[k] == scale * q.corners[k];
+        }
+        CHECK(same_subpatches);
         CHECK(t.stats.max_error_bound == Approx(scale * base.stats.max_error_bound).epsilon(1e-9));
         const test::MeshReport r = test::analyse_mesh(t.mesh, t.stats.d_max, false);
         CHECK(r.duplicate_positions == 0);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The vertex numbering (vertex_numbering.h): the same numbers and positions
-// whether a previous pass's positions are taken or every point is evaluated.
+// whether a previous pass's positions (and keys) are taken or every point is
+// evaluated.
 #include "tessellate/teapot_pass.h"
 
 #include <seamless/tessellate/subpatch_ring.h>
@@ -55,6 +56,9 @@ TEST_CASE("vertices of rings kept from a previous pass keep their numbers and po
             for (size_t j = 0; j < fresh.vertices.size(); ++j)
                 CHECK(again.vertices[j].vertex == fresh.vertices[j].vertex);
             CHECK(again.centre == fresh.centre);
+            // The copied rings' keys are the ones computed afresh.
+            REQUIRE(fresh.keys.size() == fresh.vertices.size());
+            CHECK(again.keys == fresh.keys);
         }
     }
 }
