@@ -10,7 +10,7 @@
 #include <seamless/base/output_files.h>
 #include <seamless/mesh/mesh_io.h>
 #include <seamless/model/model.h>
-#include <seamless/tessellate/huge_pages.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <nlohmann/json.hpp>

@@ -13,7 +13,7 @@
 #include <seamless/mesh/deviation.h>
 #include <seamless/mesh/sweep.h>
 #include <seamless/model/model.h>
-#include <seamless/tessellate/huge_pages.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <BRepBuilderAPI_MakeFace.hxx>

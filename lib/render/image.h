@@ -2,7 +2,7 @@
 // RGB framebuffer of quantised intensity levels and its PNG output (stb).
 #pragma once
 
-#include <seamless/render/huge_pages.h>
+#include <seamless/base/huge_pages.h>
 
 #include <cstddef>
 #include <cstdint>

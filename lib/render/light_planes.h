@@ -12,7 +12,7 @@
 #pragma once
 
 #include <seamless/base/vec.h>
-#include <seamless/render/huge_pages.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/render/ray_cluster.h>
 
 #include <array>

@@ -2,7 +2,7 @@
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/fan_triangles.h>
-#include <seamless/tessellate/huge_pages.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/patch_tree.h>
 
 #include <algorithm>

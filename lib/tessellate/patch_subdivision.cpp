@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
-#include <seamless/tessellate/huge_pages.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/patch_subdivision.h>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/exact_point.h>
 #include <seamless/tessellate/first_met.h>
-#include <seamless/tessellate/huge_pages.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/shared_edges.h>
 
 #include <algorithm>

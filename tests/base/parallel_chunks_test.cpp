@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// parallel_chunks (lib/base/parallel.h, here beside its heaviest user): every
-// item once, for any thread count, with the arenas kept between calls, nested
-// calls and calls from several threads at once.
+// parallel_chunks (lib/base/parallel.h): every item once, for any thread
+// count, with the arenas kept between calls, nested calls and calls from
+// several threads at once.
 #include <seamless/base/parallel.h>
 
 #include <catch2/catch.hpp>

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// reserve_huge (huge_pages.h) changes only where an array lives: its
-// elements, their order and what a later resize writes stay the same; and
-// keep_freed_memory lets freed pages serve later allocations.
-#include <seamless/tessellate/huge_pages.h>
+// huge_pages.h: allocate_huge gives storage below 512 KB from operator new,
+// from 512 KB up 2 MB-aligned, every byte writable either way, and
+// huge_array's deleter releases it; reserve_huge changes only where an array
+// lives (its elements, their order and what a later resize writes stay the
+// same); keep_freed_memory lets freed pages serve later allocations.
+#include <seamless/base/huge_pages.h>
 
 #include <catch2/catch.hpp>
 
@@ -12,7 +14,33 @@
 
 using namespace seamless;
 
-TEST_CASE("reserve_huge keeps the elements and reserves at least n", "[tessellate][huge_pages]") {
+TEST_CASE("huge pages: aligned from 512 KB up, every byte writable", "[base][huge_pages]") {
+    constexpr std::size_t MB = std::size_t{1} << 20;
+    for (const std::size_t bytes : {std::size_t{100}, MB / 2 - 1, MB / 2, MB, 2 * MB + 1, 9 * MB}) {
+        auto* p = static_cast<unsigned char*>(allocate_huge(bytes));
+        REQUIRE(p != nullptr);
+        if (bytes >= MB / 2) CHECK(reinterpret_cast<std::uintptr_t>(p) % (2 * MB) == 0);
+        const auto v = static_cast<unsigned char>(bytes % 251);
+        std::fill_n(p, bytes, v);
+        CHECK(std::count(p, p + bytes, v) == static_cast<std::ptrdiff_t>(bytes));
+        release_huge(p, bytes);
+    }
+    release_huge(nullptr, 9 * MB); // nothing to release
+}
+
+TEST_CASE("huge pages: huge_array holds n objects", "[base][huge_pages]") {
+    struct Pair {
+        double a, b;
+    };
+    for (const std::size_t n : {std::size_t{0}, std::size_t{10}, std::size_t{200000}}) {
+        HugeArray<Pair> arr = huge_array<Pair>(n);
+        CHECK((n == 0) == (arr == nullptr));
+        for (std::size_t i = 0; i < n; ++i) arr[i] = {double(i), -double(i)};
+        if (n > 0) CHECK(arr[n - 1].a == double(n - 1));
+    }
+}
+
+TEST_CASE("reserve_huge keeps the elements and reserves at least n", "[base][huge_pages]") {
     // threads 2: the new storage is first touched by two workers (touch_pages).
     for (int threads : {1, 2})
         for (std::size_t size : {0u, 1u, 1000u, 300000u})
@@ -43,7 +71,7 @@ long minor_faults() {
 } // namespace
 
 TEST_CASE("keep_freed_memory: a freed 16 MB block's pages serve the next one",
-          "[tessellate][huge_pages]") {
+          "[base][huge_pages]") {
     keep_freed_memory();
     constexpr std::size_t n = std::size_t{16} << 20; // 4,096 pages of 4 KB
     auto fill = [] {
