@@ -7,10 +7,10 @@
 #include <seamless/base/error.h>
 
 #include <seamless/base/atomic_file.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/base/output_files.h>
 #include <seamless/mesh/mesh_io.h>
 #include <seamless/model/model.h>
-#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <nlohmann/json.hpp>
@@ -30,6 +30,7 @@ void add_tessellate(CLI::App& app, Action& action) {
         std::string model, out, stats;
         double eps1 = -1, eps2 = -1, seam_tolerance = -1, tolerance = 0, angle = 0;
         int max_depth = TessellationOptions{}.max_depth;
+        long long max_triangles = TessellationOptions{}.max_triangles;
         int threads = TessellationOptions{}.threads;
         ModelLoadOptions load;
     };
@@ -60,6 +61,11 @@ void add_tessellate(CLI::App& app, Action& action) {
         ->check(CLI::Range(0.0, 180.0));
     cmd->add_option("--max-depth", args->max_depth, "most halvings per Bezier patch")
         ->check(CLI::Range(0, 60));
+    cmd->add_option("--max-triangles", args->max_triangles,
+                    "refuse (exit 2, no output) a tolerance that needs more triangles than this "
+                    "(peak memory about 0.7 KB per triangle)")
+        ->capture_default_str()
+        ->check(CLI::Range(1LL, 2'000'000'000LL));
     cmd->add_option("--threads", args->threads,
                     "worker threads (0: all cores; 1: sequential); the mesh is the same for any")
         ->check(CLI::Range(0, 1024));
@@ -85,6 +91,7 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.eps1 = args->eps1;
             opt.eps2 = args->eps2;
             opt.max_depth = args->max_depth;
+            opt.max_triangles = args->max_triangles;
             opt.seam_tolerance = args->seam_tolerance;
             opt.tolerance = args->tolerance;
             opt.threads = args->threads;

@@ -24,6 +24,9 @@ std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& o
         }
         TessellationOptions topt;
         topt.threads = options.threads;
+        // The prediction above can be short: the library's budget, at least
+        // twice the sweep's, backs it.
+        topt.max_triangles = std::max<std::int64_t>(topt.max_triangles, 2 * options.max_triangles);
         SweepRow row;
         row.factor = factor;
         if (options.tolerance) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/huge_pages.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/fan_triangles.h>
-#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/patch_tree.h>
 
 #include <algorithm>

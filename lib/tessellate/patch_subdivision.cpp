@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/huge_pages.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
-#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/patch_subdivision.h>
 
 #include <algorithm>
@@ -27,9 +27,14 @@ double patch_cost(const BezierPatch& b, double D) {
 
 PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
                               const SubdivisionOptions& sub, double D, int threads, PassMemo& memo,
-                              PatchTrees* trees, std::vector<Subpatch>& subpatches) {
+                              PatchTrees* trees, std::vector<Subpatch>& subpatches,
+                              std::int64_t max_leaves) {
     std::vector<Part>& parts = memo.parts;
     const int np = static_cast<int>(patches.size());
+    std::int64_t kept = 0;
+    for (int i = 0; i < np; ++i)
+        if (!memo.changed[i]) kept += static_cast<std::int64_t>(parts[i].subpatches.size());
+    std::atomic<std::int64_t> leaves_left{max_leaves - kept};
     // Patches differ in cost by ten times and more (teapot): dearest first.
     std::vector<double> cost(np);
     std::vector<int> order(np);
@@ -41,6 +46,7 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
             SubdivisionOptions o = sub;
             o.memo = memo.keep ? &memo.verdicts[i] : nullptr;
             o.nodes = trees != nullptr;
+            o.leaves_left = &leaves_left;
             // Emptied, not freed: a later pass refills the storage this one touched.
             Part& part = parts[i];
             part.trees.nodes.clear();
@@ -50,6 +56,7 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
             part.root = subdivide(patches[i], i, o, part.trees, part.subpatches);
         }
     });
+    if (leaves_left.load() < 0) return PatchRanges{{}, {}, true};
     PatchRanges at{std::vector<int>(np + 1, 0), std::vector<int>(np + 1, 0)};
     for (int i = 0; i < np; ++i) {
         at.node_start[i + 1] = at.node_start[i] + static_cast<int>(parts[i].trees.nodes.size());

@@ -23,14 +23,20 @@ double patch_cost(const BezierPatch& b, double D);
 // more entry: the ends).
 struct PatchRanges {
     std::vector<int> node_start, leaf_start;
+    // The pass would need more than max_leaves subpatches: the subdivision
+    // stopped early, nothing was concatenated (both ranges empty).
+    bool over_budget = false;
 };
 
 // Splits the patches that memo.changed marks (the others keep memo.parts),
 // with memo.verdicts when memo.keep, and concatenates every patch's tree and
 // leaves into `trees` (unless null: no trees wanted, TessellationOptions::
-// patch_trees) and `subpatches`. D: the deviation patch_cost orders by.
+// patch_trees) and `subpatches`. D: the deviation patch_cost orders by. At
+// most max_leaves subpatches in all (the kept patches' included), else
+// over_budget.
 PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
                               const SubdivisionOptions& sub, double D, int threads, PassMemo& memo,
-                              PatchTrees* trees, std::vector<Subpatch>& subpatches);
+                              PatchTrees* trees, std::vector<Subpatch>& subpatches,
+                              std::int64_t max_leaves);
 
 } // namespace seamless

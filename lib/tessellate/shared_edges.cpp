@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/disjoint_sets.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/exact_point.h>
 #include <seamless/tessellate/first_met.h>
-#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/shared_edges.h>
 
 #include <algorithm>

@@ -108,7 +108,12 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     }
     // A side can only be halved while it spans more than one grid step.
     const bool can_u = r.s1 - r.s0 > 1, can_v = r.t1 - r.t0 > 1;
-    if (planar || depth >= cx.options.max_depth || (!can_u && !can_v)) {
+    // Past the budget (SubdivisionOptions::leaves_left) the pass is refused:
+    // stop splitting so that it ends at once.
+    std::atomic<std::int64_t>* const left = cx.options.leaves_left;
+    const bool spent = left && left->load(std::memory_order_relaxed) < 0;
+    if (planar || spent || depth >= cx.options.max_depth || (!can_u && !can_v)) {
+        if (left) left->fetch_sub(1, std::memory_order_relaxed);
         Subpatch leaf;
         leaf.patch = cx.patch_index;
         leaf.node = id;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/exact_point.h>
-#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/subpatch_ring.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/base/parallel.h>
 #include <seamless/base/huge_pages.h>
+#include <seamless/base/parallel.h>
 #include <seamless/tessellate/surface_orientation.h>
 
 #include <algorithm>

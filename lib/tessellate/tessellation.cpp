@@ -101,6 +101,8 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         memo.spare_subpatches = std::move(t.subpatches);
     }
     release(memo, options.threads);
+    // More than four triangles to a fan can pass the subdivision's count.
+    if (t.stats.triangles > options.max_triangles) refuse_triangle_budget(model, options);
     t.stats.passes = pass + 1;
     t.stats.phases = phases;
     t.stats.seconds = seconds_since(start);

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/error.h>
 #include <seamless/tessellate/edge_graph.h>
 #include <seamless/tessellate/fan_certification.h>
 #include <seamless/tessellate/fan_triangles.h>
@@ -14,8 +15,16 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace seamless {
+
+void refuse_triangle_budget(const Model& model, const TessellationOptions& options) {
+    throw InputError(model.source, options.tolerance > 0 ? "tolerance" : "eps1, eps2",
+                     "needs more than " + std::to_string(options.max_triangles) +
+                         " triangles, the max_triangles limit (--max-triangles); a larger "
+                         "tolerance needs fewer");
+}
 
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
                              const TessellationOptions& options,
@@ -50,9 +59,10 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     sub.max_depth = options.max_depth;
     sub.split = &split;
     const double D = st.tolerance > 0 ? st.tolerance : st.eps1 > 0 ? st.eps1 : 1e-3 * st.d_max;
-    const PatchRanges ranges =
-        subdivide_patches(patches, sub, D, options.threads, memo,
-                          options.patch_trees ? &out.trees : nullptr, out.subpatches);
+    const PatchRanges ranges = subdivide_patches(
+        patches, sub, D, options.threads, memo, options.patch_trees ? &out.trees : nullptr,
+        out.subpatches, std::max<std::int64_t>(options.max_triangles, 0) / 4);
+    if (ranges.over_budget) refuse_triangle_budget(model, options);
     phase.subdivision += lap();
 
     // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
