@@ -84,6 +84,51 @@ template <class Patch> Net make_net(const Patch& b, Vec3 c) {
     return n;
 }
 
+// make_net of a bicubic net with one weight throughout (polynomial, or all
+// weights equal): the same values in the same order, each coordinate apart
+// in flat arrays, so the differences run two at a time and are stored in
+// place. teapot D = 0.001, 1 thread: make_net 88 M instructions -> 38 M.
+Net one_weight_bicubic_net(const BicubicNet& b, Vec3 c) {
+    Net n;
+    n.p = n.q = 3;
+    n.wlo = std::numeric_limits<double>::infinity();
+    alignas(16) double X[3][16]; // w (P - c), by coordinate
+    for (int k = 0; k < 16; ++k) {
+        const HPoint& h = b.cp[k];
+        X[0][k] = h.x - h.w * c.x;
+        X[1][k] = h.y - h.w * c.y;
+        X[2][k] = h.z - h.w * c.z;
+        n.wlo = std::min(n.wlo, h.w);
+    }
+    assert(n.wlo > 0);
+    double* const out[3] = {n.dx.data(), n.dy.data(), n.dz.data()};
+    for (int d = 0; d < 3; ++d) {
+        const double* x = X[d];
+        double* ss = out[d] + Net::kXss * Net::kN;
+        double* tt = out[d] + Net::kXtt * Net::kN;
+        double* st = out[d] + Net::kXst * Net::kN;
+        for (int k = 0; k < 8; ++k)
+            ss[k] = x[k + 8] - 2 * x[k + 4] + x[k]; // (i, j) = (k / 4, k % 4)
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 2; ++j)
+                tt[i * 2 + j] = x[i * 4 + j + 2] - 2 * x[i * 4 + j + 1] + x[i * 4 + j];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                st[i * 3 + j] =
+                    x[(i + 1) * 4 + j + 1] - x[(i + 1) * 4 + j] - x[i * 4 + j + 1] + x[i * 4 + j];
+    }
+    n.count[Net::kXss] = 8;
+    n.count[Net::kXtt] = 8;
+    n.count[Net::kXst] = 9;
+    return n;
+}
+
+bool one_weight(const BicubicNet& b) {
+    for (const HPoint& h : b.cp)
+        if (h.w != b.cp[0].w) return false;
+    return true;
+}
+
 template <size_t M> using Tops = std::array<std::array<double, M>, Net::kGroups>;
 
 // The bounds from the largest magnitudes of each group of differences.
@@ -123,31 +168,41 @@ std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
 }
 
 // split_u / split_v (bezier_patch.h) of a bicubic net at s, keeping one part:
-// the same operations in the same order, so the same points.
-void split_bicubic(BicubicNet& b, double s, bool in_u, bool upper) {
-    for (int j = 0; j < 4; ++j) {
-        HPoint col[4], out[4];
-        for (int i = 0; i < 4; ++i) col[i] = in_u ? b.at(i, j) : b.at(j, i);
-        for (int level = 0; level <= 3; ++level) {
-            if (upper)
-                out[3 - level] = col[3 - level];
-            else
-                out[level] = col[0];
-            for (int i = 0; i < 3 - level; ++i) col[i] = lerp(col[i], col[i + 1], s);
-        }
-        for (int i = 0; i < 4; ++i) (in_u ? b.at(i, j) : b.at(j, i)) = out[i];
+// the same lerps in the same order, so the same points. The net as 64
+// doubles, point (i, j) at 16 i + 4 j; a curve's points are `stride` apart
+// (16 along u, 4 along v) and the 16 curves' coordinates are its lanes, so
+// each lerp runs over 16 lanes at once (teapot D = 0.001, 1 thread:
+// split_bicubic 44 M instructions -> 14 M).
+template <bool in_u, bool upper> void split_bicubic(double* b, double s) {
+    constexpr int stride = in_u ? 16 : 4;
+    // Lane l's first point: along u the row i = 0 (l = 4 j + coordinate);
+    // along v the column j = 0 of row l / 4.
+    auto base = [](int l) { return in_u ? l : (l / 4) * 16 + l % 4; };
+    double col[4][16], out[4][16];
+    for (int k = 0; k < 4; ++k)
+        for (int l = 0; l < 16; ++l) col[k][l] = b[k * stride + base(l)];
+    for (int level = 0; level <= 3; ++level) {
+        double* const to = upper ? out[3 - level] : out[level];
+        const double* const from = upper ? col[3 - level] : col[0];
+        for (int l = 0; l < 16; ++l) to[l] = from[l];
+        for (int i = 0; i < 3 - level; ++i)
+            for (int l = 0; l < 16; ++l) col[i][l] = col[i][l] + s * (col[i + 1][l] - col[i][l]);
     }
+    for (int k = 0; k < 4; ++k)
+        for (int l = 0; l < 16; ++l) b[k * stride + base(l)] = out[k][l];
 }
 
 // extract_box of a bicubic patch, as a net alone (the same points).
 BicubicNet extract_bicubic(const BezierPatch& patch, double s0, double s1, double t0, double t1) {
+    static_assert(sizeof(HPoint) == 4 * sizeof(double));
+    double f[64];
+    for (int i = 0; i < 4; ++i) std::memcpy(f + 16 * i, &patch.at(i, 0), 4 * sizeof(HPoint));
+    if (s0 > 0) split_bicubic<true, true>(f, s0);
+    if (s1 < 1) split_bicubic<true, false>(f, (s1 - s0) / (1 - s0));
+    if (t0 > 0) split_bicubic<false, true>(f, t0);
+    if (t1 < 1) split_bicubic<false, false>(f, (t1 - t0) / (1 - t0));
     BicubicNet b;
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) b.at(i, j) = patch.at(i, j);
-    if (s0 > 0) split_bicubic(b, s0, true, true);
-    if (s1 < 1) split_bicubic(b, (s1 - s0) / (1 - s0), true, false);
-    if (t0 > 0) split_bicubic(b, t0, false, true);
-    if (t1 < 1) split_bicubic(b, (t1 - t0) / (1 - t0), false, false);
+    std::memcpy(b.cp.data(), f, sizeof f);
     return b;
 }
 
@@ -158,13 +213,16 @@ Net net_of(const BezierPatch& b, Vec3 c) {
     BicubicNet n;
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) n.at(i, j) = b.at(i, j);
-    return make_net(n, c);
+    return one_weight(n) ? one_weight_bicubic_net(n, c) : make_net(n, c);
 }
 
 // M magnitudes of each difference at once (mag returns M values): the normal
 // and the tangential bounds in one pass over the differences.
 Net box_net(const BezierPatch& patch, double s0, double s1, double t0, double t1, Vec3 c) {
-    if (patch.p == 3 && patch.q == 3) return make_net(extract_bicubic(patch, s0, s1, t0, t1), c);
+    if (patch.p == 3 && patch.q == 3) {
+        const BicubicNet b = extract_bicubic(patch, s0, s1, t0, t1);
+        return one_weight(b) ? one_weight_bicubic_net(b, c) : make_net(b, c);
+    }
     return make_net(extract_box(patch, s0, s1, t0, t1), c);
 }
 

@@ -123,10 +123,14 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
         return id;
     }
     // A subpatch the tolerance rejected: halve where the remainder is larger.
-    bool in_u = split_in_u(b);
+    // Flatness only where the second derivatives do not decide (teapot
+    // D = 0.001: 36 M instructions of flatness_u/v spared).
+    bool in_u;
     if (cx.options.tolerance > 0 && (fan_error >= 0 || forced)) {
         const std::array<double, 2> d = second_derivative_bounds(b);
         in_u = d[0] >= d[1];
+    } else {
+        in_u = split_in_u(b);
     }
     if (in_u && !can_u) in_u = false;
     if (!in_u && !can_v) in_u = true;
