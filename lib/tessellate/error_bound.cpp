@@ -4,6 +4,7 @@
 #include <seamless/tessellate/net_bounds.h>
 #include <seamless/tessellate/planarity.h>
 #include <seamless/tessellate/power_basis.h>
+#include <seamless/tessellate/three_way.h>
 
 #include <algorithm>
 #include <cassert>
@@ -60,28 +61,6 @@ struct Surface {
     // Bound on the evaluation's rounding beyond rounding_allowance's.
     double error() const { return pb ? pb->error : 0; }
 };
-
-// power_basis(b) of the patch this thread asked about last (the certified
-// bounds run over a patch's subpatches in order): null when b has none.
-const PowerBasisPatch* last_power_basis(const BezierPatch& b) {
-    if (!has_power_basis(b)) return nullptr;
-    thread_local std::array<HPoint, 16> key;
-    thread_local bool valid = false;
-    thread_local PowerBasisPatch pb;
-    bool same = valid;
-    for (int i = 0; i < 4 && same; ++i)
-        for (int j = 0; j < 4 && same; ++j) {
-            const HPoint &h = b.at(i, j), &k = key[i * 4 + j];
-            same = h.x == k.x && h.y == k.y && h.z == k.z && h.w == k.w;
-        }
-    if (!same) {
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j) key[i * 4 + j] = b.at(i, j);
-        pb = power_basis(b);
-        valid = true;
-    }
-    return &pb;
-}
 
 // One Gauss-Newton step from u (sp = S and its derivatives there) toward the
 // foot of x on S, each coordinate's step at most `limit` (near a pole the foot
@@ -333,8 +312,8 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
                 et = std::max(et, gt[a][c]);
             }
             const Param &u0 = grid[a0][c0].u, &u1 = grid[a1][c1].u, &u2 = grid[a2][c2].u;
-            const double ds = std::max({u0.s, u1.s, u2.s}) - std::min({u0.s, u1.s, u2.s});
-            const double dt = std::max({u0.t, u1.t, u2.t}) - std::min({u0.t, u1.t, u2.t});
+            const double ds = max3(u0.s, u1.s, u2.s) - min3(u0.s, u1.s, u2.s);
+            const double dt = max3(u0.t, u1.t, u2.t) - min3(u0.t, u1.t, u2.t);
             en += taylor_remainder(nb[k].normal, ds, dt);
             et += taylor_remainder(nb[k].tangential, ds, dt);
             bound2 = std::max(bound2, en * en + et * et);
@@ -448,17 +427,25 @@ struct PhiMemo {
     };
     std::uint64_t generation = 0; // 0: nothing kept
     BezierPatch patch;
+    // power_basis(patch) when it has one (the bounds run over a patch's
+    // subpatches in order, so it is made once per patch and thread).
+    bool power = false;
+    PowerBasisPatch pb;
     std::array<Vertex, kSlots> vertices;
     std::array<Side, kSlots> sides;
 
-    // Starts a new generation when `b` is not the patch of the last call.
+    // Starts a new generation when `b` is not the patch of the last call:
+    // its control points compared (only those within its degrees are read).
     void use(const BezierPatch& b) {
-        const int nc = BezierPatch::kMaxOrder * BezierPatch::kMaxOrder;
-        if (generation != 0 && b.p == patch.p && b.q == patch.q && b.rational == patch.rational &&
-            std::memcmp(b.cp.data(), patch.cp.data(), nc * sizeof(HPoint)) == 0)
-            return;
+        bool same =
+            generation != 0 && b.p == patch.p && b.q == patch.q && b.rational == patch.rational;
+        for (int i = 0; i <= b.p && same; ++i)
+            same = std::memcmp(&b.at(i, 0), &patch.at(i, 0), (b.q + 1) * sizeof(HPoint)) == 0;
+        if (same) return;
         patch = b;
         ++generation;
+        power = has_power_basis(b);
+        if (power) pb = power_basis(b);
     }
     static bool same(const RingPoint& a, const RingPoint& b) {
         return std::memcmp(&a, &b, sizeof(RingPoint)) == 0;
@@ -640,10 +627,10 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
         auto tri = [&](int a0, int c0, int a1, int c1, int a2, int c2)
             __attribute__((always_inline)) {
             const Param &u0 = node(k, a0, c0).u, &u1 = node(k, a1, c1).u, &u2 = node(k, a2, c2).u;
-            const double gnt = std::max({gn[a0][c0], gn[a1][c1], gn[a2][c2]});
-            const double gtt = std::max({gt[a0][c0], gt[a1][c1], gt[a2][c2]});
-            const double s0 = std::min({u0.s, u1.s, u2.s}), s1 = std::max({u0.s, u1.s, u2.s});
-            const double t0 = std::min({u0.t, u1.t, u2.t}), t1 = std::max({u0.t, u1.t, u2.t});
+            const double gnt = max3(gn[a0][c0], gn[a1][c1], gn[a2][c2]);
+            const double gtt = max3(gt[a0][c0], gt[a1][c1], gt[a2][c2]);
+            const double s0 = min3(u0.s, u1.s, u2.s), s1 = max3(u0.s, u1.s, u2.s);
+            const double t0 = min3(u0.t, u1.t, u2.t), t1 = max3(u0.t, u1.t, u2.t);
             const double ds = (s1 - s0) / (bs1 - bs0), dt = (t1 - t0) / (bt1 - bt0);
             double Rn = taylor_remainder(nb.normal, ds, dt);
             double R = taylor_remainder(nb.tangential, ds, dt);
@@ -678,12 +665,12 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                            std::span<const RingPoint> ring, double scale, double target) {
     const size_t n = ring.size();
     assert(n >= 3);
-    const Surface S(patch, last_power_basis(patch));
     // On the heap (400 KB), one thread_local access (a call in a shared library).
     thread_local std::unique_ptr<PhiMemo> memo_store;
     if (!memo_store) memo_store = std::make_unique<PhiMemo>();
     PhiMemo& memo = *memo_store;
     memo.use(patch);
+    const Surface S(patch, memo.power ? &memo.pb : nullptr);
     // The evaluator's own rounding (power basis) on top of the usual allowance.
     const double allowance =
         rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale) + S.error();
