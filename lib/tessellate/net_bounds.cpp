@@ -153,20 +153,6 @@ std::array<DerivativeBounds, M> derivative_bounds_from(const Net& n, const Tops<
     return out;
 }
 
-template <size_t M, class Mag>
-std::array<DerivativeBounds, M> derivative_bounds_of(const Net& n, Mag&& mag) {
-    using Mags = std::array<double, M>;
-    Tops<M> top{};
-    for (int g = 0; g < Net::kGroups; ++g) {
-        Mags& to = top[g];
-        for (int i = 0; i < n.count[g]; ++i) {
-            const Mags m = mag(n.at(g, i));
-            for (size_t k = 0; k < M; ++k) to[k] = std::max(to[k], m[k]);
-        }
-    }
-    return derivative_bounds_from<M>(n, top);
-}
-
 // split_u / split_v (bezier_patch.h) of a bicubic net at s, keeping one part:
 // the same operations in the same order, so the same points.
 void split_bicubic(BicubicNet& b, double s, bool in_u, bool upper) {
@@ -217,7 +203,20 @@ Net box_net(const BezierPatch& patch, double s0, double s1, double t0, double t1
 }
 
 DerivativeBounds derivative_bounds(const Net& n) {
-    return derivative_bounds_of<1>(n, [](Vec3 v) { return std::array<double, 1>{norm(v)}; })[0];
+    // Each group's largest norm as the root of its largest square (the root
+    // is monotone and correctly rounded: the same value), one root per group
+    // rather than one per difference (a bicubic net: 6 roots, not 25; teapot
+    // D = 0.001: 19 M instructions -> 17 M).
+    Tops<1> top{};
+    for (int g = 0; g < Net::kGroups; ++g) {
+        double largest = 0;
+        for (int i = 0; i < n.count[g]; ++i) {
+            const Vec3 v = n.at(g, i);
+            largest = std::max(largest, dot(v, v));
+        }
+        top[g][0] = std::sqrt(largest);
+    }
+    return derivative_bounds_from<1>(n, top)[0];
 }
 
 SplitBounds split_bounds(const Net& net, Vec3 n) {
