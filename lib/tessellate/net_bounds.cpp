@@ -219,30 +219,31 @@ DerivativeBounds derivative_bounds(const Net& n) {
     return derivative_bounds_from<1>(n, top)[0];
 }
 
-SplitBounds split_bounds(const Net& net, Vec3 n) {
-    if (!(norm(n) > 0)) {
-        const DerivativeBounds full = derivative_bounds(net);
-        return {full, full};
-    }
-    // Per difference v: |v . n| and |v - (v . n) n|, two differences at a time
-    // (SSE2 vector extension; each lane does dot() and norm()'s operations in
-    // their order). The largest norm is the root of the largest square (the
-    // root is monotone and correctly rounded: the same value).
-    using Lanes = double __attribute__((vector_size(16)));
-    auto load = [](const double* p) {
-        Lanes v;
-        std::memcpy(&v, p, sizeof v);
-        return v;
-    };
-    const Lanes nx = {n.x, n.x}, ny = {n.y, n.y}, nz = {n.z, n.z};
+namespace {
+
+// Per difference v: |v . n| and |v - (v . n) n| (a unit n), L differences at
+// a time (vector extension; each lane does dot() and norm()'s operations in
+// their order). The largest norm is the root of the largest square (the root
+// is monotone and correctly rounded: the same value); a maximum does not
+// depend on the order its candidates come in, so any L gives the same tops.
+template <int L> struct LanesOf;
+template <> struct LanesOf<2> { using type = double __attribute__((vector_size(16))); };
+template <> struct LanesOf<4> { using type = double __attribute__((vector_size(32))); };
+
+template <int L> [[gnu::always_inline]] inline Tops<2> split_tops(const Net& net, Vec3 n) {
+    using Lanes = typename LanesOf<L>::type;
+    Lanes nx, ny, nz;
+    for (int l = 0; l < L; ++l) nx[l] = n.x, ny[l] = n.y, nz[l] = n.z;
     Tops<2> top{};
     for (int g = 0; g < Net::kGroups; ++g) {
         const int base = g * Net::kN, count = net.count[g];
-        Lanes tn = {0, 0}, tt = {0, 0};
+        Lanes tn = {}, tt = {};
         int i = 0;
-        for (; i + 1 < count; i += 2) {
-            const Lanes x = load(&net.dx[base + i]), y = load(&net.dy[base + i]),
-                        z = load(&net.dz[base + i]);
+        for (; i + L - 1 < count; i += L) {
+            Lanes x, y, z;
+            std::memcpy(&x, &net.dx[base + i], sizeof x);
+            std::memcpy(&y, &net.dy[base + i], sizeof y);
+            std::memcpy(&z, &net.dz[base + i], sizeof z);
             const Lanes d = x * nx + y * ny + z * nz;
             const Lanes ad = d < 0 ? -d : d;
             const Lanes tx = x - d * nx, ty = y - d * ny, tz = z - d * nz;
@@ -250,7 +251,8 @@ SplitBounds split_bounds(const Net& net, Vec3 n) {
             tn = tn < ad ? ad : tn;
             tt = tt < t2 ? t2 : tt;
         }
-        double mn = std::max(tn[0], tn[1]), mt = std::max(tt[0], tt[1]);
+        double mn = tn[0], mt = tt[0];
+        for (int l = 1; l < L; ++l) mn = std::max(mn, tn[l]), mt = std::max(mt, tt[l]);
         for (; i < count; ++i) {
             const Vec3 v = net.at(g, i);
             const double d = dot(v, n);
@@ -259,6 +261,28 @@ SplitBounds split_bounds(const Net& net, Vec3 n) {
         }
         top[g] = {mn, std::sqrt(mt)};
     }
+    return top;
+}
+
+// Four lanes in one AVX2 instruction where the processor has it (teapot
+// D = 0.001, 1 thread: split_bounds 150 M instructions -> 89 M here); two
+// SSE2 lanes elsewhere (four would take 214 M there).
+[[gnu::target("avx2")]] Tops<2> split_tops_avx2(const Net& net, Vec3 n) {
+    return split_tops<4>(net, n);
+}
+Tops<2> split_tops_sse2(const Net& net, Vec3 n) {
+    return split_tops<2>(net, n);
+}
+
+} // namespace
+
+SplitBounds split_bounds(const Net& net, Vec3 n) {
+    if (!(norm(n) > 0)) {
+        const DerivativeBounds full = derivative_bounds(net);
+        return {full, full};
+    }
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    const Tops<2> top = avx2 ? split_tops_avx2(net, n) : split_tops_sse2(net, n);
     const std::array<DerivativeBounds, 2> b = derivative_bounds_from<2>(net, top);
     return {b[0], b[1]};
 }
