@@ -265,7 +265,7 @@ template <int L> [[gnu::always_inline]] inline Tops<2> split_tops(const Net& net
 }
 
 // Four lanes in one AVX2 instruction where the processor has it (teapot
-// D = 0.001, 1 thread: split_bounds 150 M instructions -> 89 M here); two
+// D = 0.001, 1 thread: split_bounds 150 M instructions -> 110 M here); two
 // SSE2 lanes elsewhere (four would take 214 M there).
 [[gnu::target("avx2")]] Tops<2> split_tops_avx2(const Net& net, Vec3 n) {
     return split_tops<4>(net, n);
