@@ -25,9 +25,12 @@ namespace seamless {
 struct PowerBasisPatch {
     Vec3 origin;
     // a[c][j][i]: coordinate c's coefficient of s^i t^j (rows contiguous in i).
-    alignas(16) double a[3][4][4] = {};
+    // a and at are written in full by power_basis and not zeroed before (a
+    // default-constructed one is a placeholder: the subdivision makes one per
+    // subpatch, teapot D = 0.001: 7 M instructions of zeroing and copying).
+    alignas(16) double a[3][4][4];
     // The t-derivative's coefficients of s^i t^j, j = 0..2: a[c][j + 1][i] (j + 1).
-    alignas(16) double at[3][3][4] = {};
+    alignas(16) double at[3][3][4];
     double error = 0; // bound on |computed point - S(s, t)| for s, t in [0, 1]
 };
 

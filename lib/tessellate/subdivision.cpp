@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <deque>
 
 namespace seamless {
 namespace {
@@ -17,7 +18,16 @@ struct Context {
     const SubdivisionOptions& options;
     PatchTrees& trees;
     std::vector<Subpatch>& out;
+    // The two halves split at each depth, reused from split to split (two
+    // fresh BezierPatch per split zeroed 6.4 KB: teapot D = 0.001, 20 M
+    // instructions). Entries beyond the degrees stay as constructed.
+    std::deque<std::array<BezierPatch, 2>>& halves;
     int next = 0; // the next node id without nodes (options.nodes false)
+
+    std::array<BezierPatch, 2>& half(int depth) {
+        while (static_cast<int>(halves.size()) <= depth) halves.emplace_back();
+        return halves[depth];
+    }
 };
 
 // True to split in u (s), false for v (t).
@@ -39,8 +49,8 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
     // A polynomial bicubic subpatch in the power basis (power_basis.h) once,
     // for the quick rejection's points and the fan bound's evaluations.
     const bool power = o.tolerance > 0 && has_power_basis(b);
-    PowerBasisPatch pb;
-    if (power) pb = power_basis(b, false); // fan_bound adds no rounding allowance
+    // fan_bound adds no rounding allowance; not read without `power`.
+    const PowerBasisPatch pb = power ? power_basis(b, false) : PowerBasisPatch{};
     auto point = [&](double s, double t) {
         return power ? evaluate_point(pb, s, t) : evaluate_point(b, s, t);
     };
@@ -128,14 +138,19 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
         return id;
     }
     // A subpatch the tolerance rejected: halve where the remainder is larger.
-    bool in_u = split_in_u(b);
+    // Flatness only where the second derivatives do not decide (teapot
+    // D = 0.001: flatness_u/v 36 M instructions -> 21 M).
+    bool in_u;
     if (cx.options.tolerance > 0 && (fan_error >= 0 || forced)) {
         const std::array<double, 2> d = second_derivative_bounds(b);
         in_u = d[0] >= d[1];
+    } else {
+        in_u = split_in_u(b);
     }
     if (in_u && !can_u) in_u = false;
     if (!in_u && !can_v) in_u = true;
-    BezierPatch lo, hi;
+    std::array<BezierPatch, 2>& half = cx.half(depth);
+    BezierPatch &lo = half[0], &hi = half[1];
     ParamRect rlo = r, rhi = r;
     if (in_u) {
         split_u(b, 0.5, lo, hi);
@@ -171,7 +186,16 @@ std::uint64_t subpatch_key(int patch, const ParamRect& r) {
 int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
               PatchTrees& trees, std::vector<Subpatch>& out) {
     assert(options.max_depth >= 0);
-    Context cx{patch_index, options, trees, out};
+    // Per thread; emptied when the degrees change, so that every entry a
+    // split does not write is as in a fresh BezierPatch.
+    thread_local std::deque<std::array<BezierPatch, 2>> halves;
+    thread_local int halves_p = -1, halves_q = -1;
+    if (patch.p != halves_p || patch.q != halves_q) {
+        halves.clear();
+        halves_p = patch.p;
+        halves_q = patch.q;
+    }
+    Context cx{patch_index, options, trees, out, halves};
     return recurse(cx, patch, ParamRect{}, 0);
 }
 

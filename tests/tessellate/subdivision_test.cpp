@@ -126,3 +126,34 @@ TEST_CASE("an angle criterion splits further", "[subdivision]") {
     }
     CHECK(b.size() > 2 * a.size());
 }
+
+TEST_CASE("a thread's subdivisions agree whatever it subdivided before", "[subdivision]") {
+    // The split halves are kept per thread and depth (subdivision.cpp); a
+    // patch of other degrees in between must leave no trace.
+    const Model m = load_model(test::model_path("teapot.json"));
+    const auto patches = bezier_patches(m);
+    SubdivisionOptions opt;
+    opt.eps1 = opt.eps2 = std::numeric_limits<double>::infinity();
+    opt.tolerance = 0.002;
+    auto leaves = [&](const BezierPatch& b) {
+        PatchTrees trees;
+        std::vector<Subpatch> out;
+        subdivide(b, 0, opt, trees, out);
+        return out;
+    };
+    const std::vector<Subpatch> first = leaves(patches[0]);
+    BezierPatch other;
+    other.p = 2;
+    other.q = 4;
+    for (int i = 0; i <= 2; ++i)
+        for (int j = 0; j <= 4; ++j)
+            other.at(i, j) = HPoint::from({i * 0.5, j * 0.3, i * j * 0.1}, 1);
+    CHECK(leaves(other).size() >= 1);
+    const std::vector<Subpatch> again = leaves(patches[0]);
+    REQUIRE(again.size() == first.size());
+    for (size_t k = 0; k < first.size(); ++k) {
+        CHECK(again[k].rect == first[k].rect);
+        CHECK(again[k].centre == first[k].centre);
+        CHECK(again[k].fan_error == first[k].fan_error);
+    }
+}
