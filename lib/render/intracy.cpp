@@ -467,7 +467,6 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     const int H = opt.height > 0 ? opt.height : scene.camera.height;
     const int L = opt.levels > 0 ? opt.levels : scene.levels;
     const auto t0 = std::chrono::steady_clock::now();
-    const ProjectedScene ps = project_scene(scene, W, H, opt.threads); // step 1
     // Secondary rays (SHADE steps 2-4) need the triangles and patch trees; a
     // scene without lit diffuse or specular surfaces and without mirrors or
     // glass needs none, and gets none.
@@ -479,6 +478,12 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
         neighbours = triangle_neighbours(ts->tess.mesh.triangles);
         add_light_planes(scene, *ts);
     }
+    // Step 1 after the triangle scene: its patch array and temporaries then
+    // partly reuse memory the tessellation freed (teapot 640x480 x 16, 2
+    // threads: 1,698 -> 1,658 page faults, task-clock 156.3 -> 154.6 ms,
+    // medians of 11; step 1 first, overlapped with the triangle scene on a
+    // thread of its own, gained nothing: both cores are busy there).
+    const ProjectedScene ps = project_scene(scene, W, H, opt.threads);
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     st.patches = static_cast<long long>(ps.patches.size());
