@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string>
 
 namespace seamless::cli {
 
@@ -97,7 +98,16 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.threads = args->threads;
             opt.angle = args->angle * 3.14159265358979323846 / 180;
             opt.patch_trees = false; // the renderer's, not written
-            const Tessellation t = tessellate(m, opt);
+            const Tessellation t = [&] {
+                try {
+                    return tessellate(m, opt);
+                } catch (const TriangleBudgetError& e) { // name this command's flag
+                    throw InputError(e.file(), e.field(),
+                                     "needs more than " + std::to_string(e.limit()) +
+                                         " triangles, the --max-triangles limit; a larger "
+                                         "tolerance needs fewer");
+                }
+            }();
             write_mesh(files.staging(0), t.mesh);
             const TessellationStats& s = t.stats;
             std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches

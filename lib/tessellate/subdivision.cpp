@@ -13,6 +13,12 @@
 namespace seamless {
 namespace {
 
+// Leaves counted locally before one subtraction from leaves_left. The refusal
+// stays exact (every leaf is subtracted by the time subdivide returns, and
+// splitting stops only once the total is already past the budget); the batch
+// only delays when the workers see it by at most this many leaves each.
+constexpr std::int64_t kLeafBatch = 64;
+
 struct Context {
     int patch_index;
     const SubdivisionOptions& options;
@@ -23,6 +29,9 @@ struct Context {
     // instructions). Entries beyond the degrees stay as constructed.
     std::deque<std::array<BezierPatch, 2>>& halves;
     int next = 0; // the next node id without nodes (options.nodes false)
+    // Leaves not yet taken from options.leaves_left: one atomic subtraction
+    // per kLeafBatch leaves, not per leaf, so the workers do not contend.
+    std::int64_t unflushed = 0;
 
     std::array<BezierPatch, 2>& half(int depth) {
         while (static_cast<int>(halves.size()) <= depth) halves.emplace_back();
@@ -123,7 +132,10 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     std::atomic<std::int64_t>* const left = cx.options.leaves_left;
     const bool spent = left && left->load(std::memory_order_relaxed) < 0;
     if (planar || spent || depth >= cx.options.max_depth || (!can_u && !can_v)) {
-        if (left) left->fetch_sub(1, std::memory_order_relaxed);
+        if (left && ++cx.unflushed == kLeafBatch) {
+            left->fetch_sub(kLeafBatch, std::memory_order_relaxed);
+            cx.unflushed = 0;
+        }
         Subpatch leaf;
         leaf.patch = cx.patch_index;
         leaf.node = id;
@@ -196,7 +208,10 @@ int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOption
         halves_q = patch.q;
     }
     Context cx{patch_index, options, trees, out, halves};
-    return recurse(cx, patch, ParamRect{}, 0);
+    const int root = recurse(cx, patch, ParamRect{}, 0);
+    if (options.leaves_left && cx.unflushed > 0)
+        options.leaves_left->fetch_sub(cx.unflushed, std::memory_order_relaxed);
+    return root;
 }
 
 } // namespace seamless

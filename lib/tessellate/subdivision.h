@@ -62,9 +62,11 @@ struct SubdivisionOptions {
     // false: no tree nodes are written (trees.nodes stays empty; node ids, as
     // Subpatch::node, still count them in the same pre-order): for a caller
     // that wants no patch trees (TessellationOptions::patch_trees).
-    bool nodes = true; // The subpatches a budget still allows (TessellationOptions::max_triangles),
-    // shared by the workers of a pass and counted down by each leaf; once it is
-    // below zero no subpatch is split further and the caller refuses the pass
+    bool nodes = true;
+    // The subpatches a budget still allows (TessellationOptions::max_triangles),
+    // shared by the workers of a pass and counted down by their leaves (in
+    // batches of kLeafBatch, the rest when subdivide returns); once it is below
+    // zero no subpatch is split further and the caller refuses the pass
     // (subdivide_patches). Not owned; null: no budget.
     std::atomic<std::int64_t>* leaves_left = nullptr;
 };

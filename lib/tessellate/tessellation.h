@@ -9,12 +9,15 @@
 // Proposition 11, remark 2 are built in the same pass.
 #pragma once
 
+#include <seamless/base/error.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/patch_tree.h>
 #include <seamless/tessellate/subdivision.h>
 #include <seamless/tessellate/triangle_mesh.h>
 
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace seamless {
@@ -113,6 +116,22 @@ struct TessellationStats {
     int passes = 1; // tessellation passes (a tolerance may need more than one)
     double seconds = 0;
     PhaseSeconds phases;
+};
+
+// What tessellate() throws past TessellationOptions::max_triangles: an
+// InputError naming the model and the tolerance that asked for it, with the
+// limit kept so a front end can name its own way to raise it.
+class TriangleBudgetError : public InputError {
+  public:
+    TriangleBudgetError(std::string file, std::string field, std::int64_t limit)
+        : InputError(std::move(file), std::move(field),
+                     "needs more than " + std::to_string(limit) +
+                         " triangles, the max_triangles limit; a larger tolerance needs fewer"),
+          limit_(limit) {}
+    std::int64_t limit() const { return limit_; }
+
+  private:
+    std::int64_t limit_;
 };
 
 struct Tessellation {

@@ -20,10 +20,8 @@
 namespace seamless {
 
 void refuse_triangle_budget(const Model& model, const TessellationOptions& options) {
-    throw InputError(model.source, options.tolerance > 0 ? "tolerance" : "eps1, eps2",
-                     "needs more than " + std::to_string(options.max_triangles) +
-                         " triangles, the max_triangles limit (--max-triangles); a larger "
-                         "tolerance needs fewer");
+    throw TriangleBudgetError(model.source, options.tolerance > 0 ? "tolerance" : "eps1, eps2",
+                              options.max_triangles);
 }
 
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,

@@ -25,8 +25,8 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
                              const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
                              bool last, double hull_scale = 1);
 
-// Refuses a tessellation past TessellationOptions::max_triangles: an
-// InputError naming the model and the tolerance that asked for it.
+// Refuses a tessellation past TessellationOptions::max_triangles: throws
+// TriangleBudgetError (tessellation.h).
 [[noreturn]] void refuse_triangle_budget(const Model& model, const TessellationOptions& options);
 
 } // namespace seamless

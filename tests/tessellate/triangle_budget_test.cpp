@@ -42,7 +42,14 @@ TEST_CASE("max_triangles: an absurd tolerance is refused, not run out of memory"
     TessellationOptions o;
     o.tolerance = 1e-300;
     o.max_triangles = 200'000;
-    CHECK_THROWS_AS(tessellate(m, o), InputError);
+    try {
+        (void)tessellate(m, o);
+        FAIL("not refused");
+    } catch (const TriangleBudgetError& e) {
+        CHECK(e.limit() == 200'000);
+        CHECK(e.field() == "tolerance");
+        CHECK(std::string(e.what()).find("--") == std::string::npos); // no CLI flag
+    }
 }
 
 TEST_CASE("seamless tessellate --max-triangles: exit 2, one line, no output", "[cli]") {
@@ -55,6 +62,7 @@ TEST_CASE("seamless tessellate --max-triangles: exit 2, one line, no output", "[
     CHECK(r.status == 2);
     CHECK(r.err.find("teapot.json: tolerance: needs more than 100000 triangles") !=
           std::string::npos);
+    CHECK(r.err.find("the --max-triangles limit") != std::string::npos);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK_FALSE(std::filesystem::exists(out));
 }
