@@ -7,6 +7,7 @@
 #include <seamless/base/error.h>
 
 #include <iostream>
+#include <string>
 
 int main(int argc, char** argv) {
     CLI::App app{"seamless: B-spline surfaces to crack-free triangle meshes, watertightness "
@@ -30,6 +31,15 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         // One line, as for bad input (CLI11's own exit() adds a second).
+        // `seamless bogus`: CLI11 says only that a subcommand is required.
+        if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
+            std::string names;
+            for (const CLI::App* c : app.get_subcommands({}))
+                names += (names.empty() ? "" : ", ") + c->get_name();
+            std::cerr << "error: unknown command '" << seamless::printable(argv[1])
+                      << "' (expected one of " << names << "; --help for usage)\n";
+            return 2;
+        }
         std::cerr << "error: " << seamless::printable(e.what()) << " (--help for usage)\n";
         return 2;
     }

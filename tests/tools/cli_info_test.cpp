@@ -15,6 +15,12 @@ TEST_CASE("seamless --help and subcommand help", "[cli]") {
     CHECK_THAT(i.out, Catch::Contains("MODEL"));
     auto none = test::run_cli("");
     CHECK(none.status == 2);
+    // A mistyped command is named, with the commands there are, on one line.
+    auto bogus = test::run_cli("tesselate");
+    CHECK(bogus.status == 2);
+    CHECK_THAT(bogus.err, Catch::StartsWith("error: unknown command 'tesselate'") &&
+                              Catch::Contains("tessellate, convert, check, render, sweep"));
+    CHECK(std::count(bogus.err.begin(), bogus.err.end(), '\n') == 1);
 }
 
 TEST_CASE("seamless info reports the teapot's 32 Bezier patches and d_max", "[cli]") {
