@@ -56,9 +56,8 @@ ProjectedScene project_scene(const Scene& scene, int width, int height, int thre
             patches.push_back(b);
             surface.push_back(static_cast<int>(k));
         }
-    // A ProjectedPatch is large (its power forms are sized for the highest
-    // degree): constructed in place by its worker, once, in parallel; never
-    // copied or moved.
+    // Each ProjectedPatch (9.8 KB up to bicubic) constructed in place by its
+    // worker, once, in parallel; never copied or moved.
     ps.patches.reset(patches.size());
     for_each_item(static_cast<int>(patches.size()), threads, [&](int i) {
         ProjectedPatch& pp = ps.patches.place(i);
