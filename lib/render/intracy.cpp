@@ -44,6 +44,7 @@
 #include <seamless/render/trace.h>
 
 #include <seamless/interval/hansen_sengupta.h>
+#include <seamless/model/model.h>
 
 #include <algorithm>
 #include <atomic>
@@ -470,10 +471,12 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     // Secondary rays (SHADE steps 2-4) need the triangles and patch trees; a
     // scene without lit diffuse or specular surfaces and without mirrors or
     // glass needs none, and gets none.
+    // The model's Bezier patches, extracted once for both (knot insertion).
+    const std::vector<BezierPatch> patches = bezier_patches(scene.model);
     std::unique_ptr<TriangleScene> ts;
     std::vector<int> neighbours; // for shadows by a surface of triangles (ray_cluster.h)
     if (needs_secondary_rays(scene)) {
-        ts = std::make_unique<TriangleScene>(build_triangle_scene(scene, opt.threads));
+        ts = std::make_unique<TriangleScene>(build_triangle_scene(scene, patches, opt.threads));
         st.triangles = ts->tess.mesh.triangle_count();
         neighbours = triangle_neighbours(ts->tess.mesh.triangles);
         add_light_planes(scene, *ts);
@@ -483,7 +486,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     // threads: 1,698 -> 1,658 page faults, task-clock 156.3 -> 154.6 ms,
     // medians of 11; step 1 first, overlapped with the triangle scene on a
     // thread of its own, gained nothing: both cores are busy there).
-    const ProjectedScene ps = project_scene(scene, W, H, opt.threads);
+    const ProjectedScene ps = project_scene(scene, patches, W, H, opt.threads);
     st.precalc_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     st.patches = static_cast<long long>(ps.patches.size());

@@ -95,6 +95,10 @@ void set_camera_patch(ProjectedPatch& pp, const BezierPatch& b);
 // patches in parallel on `threads` (RenderOptions::threads; the same result
 // for any count).
 ProjectedScene project_scene(const Scene& scene, int width, int height, int threads = 1);
+// The same from the model's Bezier patches already extracted
+// (bezier_patches(scene.model), in its order).
+ProjectedScene project_scene(const Scene& scene, const std::vector<BezierPatch>& patches, int width,
+                             int height, int threads);
 
 // Surface point and normal of a patch at local (s, t), in camera coordinates,
 // for shading; at a pole (vanishing normal) the normal is taken slightly inside.
