@@ -468,11 +468,12 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     const int H = opt.height > 0 ? opt.height : scene.camera.height;
     const int L = opt.levels > 0 ? opt.levels : scene.levels;
     const auto t0 = std::chrono::steady_clock::now();
+    // The model's Bezier patches (knot insertion), extracted once for the
+    // triangle scene and step 1.
+    const std::vector<BezierPatch> patches = bezier_patches(scene.model);
     // Secondary rays (SHADE steps 2-4) need the triangles and patch trees; a
     // scene without lit diffuse or specular surfaces and without mirrors or
     // glass needs none, and gets none.
-    // The model's Bezier patches, extracted once for both (knot insertion).
-    const std::vector<BezierPatch> patches = bezier_patches(scene.model);
     std::unique_ptr<TriangleScene> ts;
     std::vector<int> neighbours; // for shadows by a surface of triangles (ray_cluster.h)
     if (needs_secondary_rays(scene)) {
