@@ -208,7 +208,7 @@ bool krawczyk_hit(const MarkJacobian& J, const IVec<2>& Gc, const IVec<2>& Y, co
 
 bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
                 const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
-                const double* start, const SurfacePoint* at_start) {
+                const double* start, const SurfacePoint* at_start, NewtonFrame* frame) {
     // At most one zero in box when A is regular: Newton in doubles from
     // `start` or the box's centre; a run whose step leaves the box (mostly
     // the ray passing beside the patch) stops there, and the ray goes on to
@@ -250,7 +250,13 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
                      intersect(Interval(next_down(t - e), next_up(t + e)), box.t)}};
     // X at Newton's point: G there for the step, and the centre of the depth's mean value form.
     Interval X[4];
-    enclose_homogeneous(pp.patch, s, t, pp.forms.rational ? 4 : 3, X);
+    if (frame) {
+        enclose_homogeneous(pp.patch, s, t, pp.forms.rational ? 4 : 3, X, frame->at);
+        frame->s = s;
+        frame->t = t;
+    } else {
+        enclose_homogeneous(pp.patch, s, t, pp.forms.rational ? 4 : 3, X);
+    }
     const IVec<2> F = sys.at(X);
     // A over the box bounds G' over Y too; only where it is too wide to
     // certify is the Jacobian enclosed over Y itself.

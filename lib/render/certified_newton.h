@@ -104,9 +104,18 @@ enum class NewtonOutcome { hit, miss, undecided };
 // The hit part alone: true (with hit and q as above) when J is regular and
 // Newton's result is certified; false leaves the ray undecided in box.
 // at_start: evaluate(pp.patch, start) when known (the first step then evaluates nothing).
+// frame (optional): Newton's point (s, t) and the patch there (point and
+// partial derivatives), from the evaluation that encloses G there for the
+// certificate (enclose_homogeneous of bezier_patch.h): for the shading and
+// the next run's first step, without evaluating the patch again.
+struct NewtonFrame {
+    double s = 0, t = 0;
+    SurfacePoint at{};
+};
 bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
                 const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
-                const double* start = nullptr, const SurfacePoint* at_start = nullptr);
+                const double* start = nullptr, const SurfacePoint* at_start = nullptr,
+                NewtonFrame* frame = nullptr);
 // The part after Newton: false when one Hansen-Sengupta step with J over box
 // proves that the ray meets the patch nowhere in box (Theorem 6 ii); else
 // rest receives the part of box holding every hit (Theorem 6 i). Xc: X, Y, Z

@@ -63,8 +63,13 @@ ProjectedScene project_scene(const Scene& scene, const std::vector<BezierPatch>&
 
 void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal,
                    SurfacePoint* at) {
-    SurfacePoint sp = evaluate(b, s, t);
+    const SurfacePoint sp = evaluate(b, s, t);
     if (at) *at = sp;
+    surface_frame(b, s, t, sp, point, normal);
+}
+
+void surface_frame(const BezierPatch& b, double s, double t, const SurfacePoint& sp, Vec3& point,
+                   Vec3& normal) {
     point = sp.point;
     normal = sp.normal();
     // At a collapsed edge the normal vanishes; take it a little way inside.

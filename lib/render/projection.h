@@ -105,5 +105,8 @@ ProjectedScene project_scene(const Scene& scene, const std::vector<BezierPatch>&
 // at (optional): receives evaluate(b, s, t) (for the next Newton run from (s, t)).
 void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal,
                    SurfacePoint* at = nullptr);
+// The same from sp, the patch already evaluated at (s, t).
+void surface_frame(const BezierPatch& b, double s, double t, const SurfacePoint& sp, Vec3& point,
+                   Vec3& normal);
 
 } // namespace seamless
