@@ -22,6 +22,8 @@
 
 #include <seamless/interval/hansen_sengupta.h>
 
+#include <limits>
+
 namespace seamless {
 
 // Whose power forms a ClusterSystem holds (RaySystem::forms): the patch and
@@ -102,9 +104,18 @@ enum class NewtonOutcome { hit, miss, undecided };
 // The hit part alone: true (with hit and q as above) when J is regular and
 // Newton's result is certified; false leaves the ray undecided in box.
 // at_start: evaluate(pp.patch, start) when known (the first step then evaluates nothing).
+// frame (optional): Newton's point (s, t) and the patch there (point and
+// partial derivatives), from the evaluation that encloses G there for the
+// certificate (enclose_homogeneous of bezier_patch.h): for the shading and
+// the next run's first step, without evaluating the patch again.
+struct NewtonFrame {
+    double s = 0, t = 0;
+    SurfacePoint at{};
+};
 bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
                 const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
-                const double* start = nullptr, const SurfacePoint* at_start = nullptr);
+                const double* start = nullptr, const SurfacePoint* at_start = nullptr,
+                NewtonFrame* frame = nullptr);
 // The part after Newton: false when one Hansen-Sengupta step with J over box
 // proves that the ray meets the patch nowhere in box (Theorem 6 ii); else
 // rest receives the part of box holding every hit (Theorem 6 i). Xc: X, Y, Z
@@ -124,10 +135,33 @@ bool newton_step(const SurfacePoint& sp, double a, double b, double& s, double& 
 // and bilinear patches): the same zeros, fewer operations.
 bool ray_newton_step(const BezierPatch& p, double a, double b, double& s, double& t, double& step);
 
-// A corner ray of a certified cluster hits the patch exactly once in `box`;
-// its intensity only steers the bilinear form of step 9, whose levels are
-// clamped to the certified enclosure, so plain Newton in doubles suffices.
-// false when it does not converge inside the box.
+// Newton in doubles for the ray through (a, b) on a patch known to be hit
+// exactly once in `box` (a certified cluster's pixels and corner rays): where
+// it starts (a hit, with the patch evaluated there) and what its run showed:
+// the hit minus the point of Newton's first step (a step from the previous
+// pixel's hit is a linear prediction whose error varies smoothly along a row,
+// so the next pixel's first point moves by it: an error of third order in the
+// pixel spacing instead of second), and the convergence constant k. along:
+// the run started from the previous pixel of its row.
+struct NewtonRun {
+    double s = 0, t = 0;
+    SurfacePoint at{};
+    double ds = 0, dt = 0;
+    double k = std::numeric_limits<double>::infinity();
+    bool along = false;
+};
+// The first step from from.at, then, when along && from.along, from's
+// correction added; the rest on the ray's homogeneous system
+// (ray_newton_step). Converged: a step below 1e-9 (near the regular zero the
+// error is then of its square's order), or a step d <= 1e-5 whose successor,
+// by quadratic convergence about k d^2, would be below 1e-12 (k measured on
+// this run or, at least 1, on from's). true with the hit in `to` (to.at left
+// to the caller) when it converges inside box; false otherwise.
+bool newton_in_box(const BezierPatch& patch, double a, double b, const ParamBox& box,
+                   const NewtonRun& from, bool along, NewtonRun& to);
+// A corner ray's: newton_in_box from box's centre. Its intensity only steers
+// the bilinear form of step 9, whose levels are clamped to the certified
+// enclosure, so plain Newton in doubles suffices.
 bool newton_corner(const BezierPatch& b, double a, double bb, const ParamBox& box, double& s,
                    double& t);
 

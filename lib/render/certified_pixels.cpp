@@ -11,38 +11,6 @@
 
 namespace seamless {
 
-bool CertifiedPixels::newton(const BezierPatch& patch, double a, double b, const ParamBox& box,
-                             const Start& from, bool along, Start& to) {
-    // The first step from the kept evaluation (the previous hit), then, along
-    // a row, the previous pixel's correction added; the rest on the ray's
-    // homogeneous system (ray_newton_step, as newton_hit's).
-    double s = from.s, t = from.t, step = 0;
-    if (!newton_step(from.at, a, b, s, t, step)) return false;
-    const double s1 = s, t1 = t;
-    if (along && from.along) {
-        s += from.ds;
-        t += from.dt;
-    }
-    double k = from.k, prev = 0;
-    for (int it = 1; it < kNewtonSteps; ++it) {
-        if (!box.s.contains(s) || !box.t.contains(t)) return false;
-        if (!ray_newton_step(patch, a, b, s, t, step)) return false;
-        if (prev > kMeasurable) k = std::max(kLeast, step / (prev * prev));
-        if (step < kConverged || (step <= kQuadratic && k * step * step < kPredicted)) {
-            if (!box.s.contains(s) || !box.t.contains(t)) return false;
-            to.s = s; // to.at is the caller's to fill
-            to.t = t;
-            to.ds = s - s1;
-            to.dt = t - t1;
-            to.k = k;
-            to.along = along;
-            return true;
-        }
-        prev = step;
-    }
-    return false;
-}
-
 void CertifiedPixels::paint(const PixelRect& B, const ClusterAttemptResult& r, const Mark* marks,
                             size_t n, PixelScratch& scratch, RenderStats& st) {
     const StepClock clock(st.certified_pixel_seconds);
@@ -56,8 +24,8 @@ void CertifiedPixels::paint(const PixelRect& B, const ClusterAttemptResult& r, c
     // slots, the last hit, the row's first and the next, taken by index
     // (not copied per pixel: teapot 640x480 x 16 CertifiedPixels::paint
     // 139.1 -> 136.5 M instructions).
-    Start slots[3];
-    Start *last = &slots[0], *row = &slots[1], *next = &slots[2];
+    NewtonRun slots[3];
+    NewtonRun *last = &slots[0], *row = &slots[1], *next = &slots[2];
     *last = {r.box.s.mid(), r.box.t.mid(), evaluate(pp.patch, r.box.s.mid(), r.box.t.mid())};
     for (int ty = B.y0; ty <= B.y1; ty += kTileHeight)
         for (int tx = B.x0; tx <= B.x1; tx += kTileWidth) {
@@ -78,7 +46,7 @@ void CertifiedPixels::paint(const PixelRect& B, const ClusterAttemptResult& r, c
                     ++st.primary_rays;
                     Shaded& p = hits_.emplace_back();
                     const bool along = x > tx && last_x == x - 1;
-                    if (newton(pp.patch, a, b, r.box, *last, along, *next)) {
+                    if (newton_in_box(pp.patch, a, b, r.box, *last, along, *next)) {
                         p.hit = PixelHit{r.patch, next->s, next->t, 0};
                     } else {
                         *next = {}; // a fallback's hit: no correction, k unknown

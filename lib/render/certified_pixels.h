@@ -16,12 +16,13 @@
 // Why this is as certified as a single pixel: the certificate proves that the
 // ray of each pixel of B has exactly one zero of G = (X - aZ, Y - bZ) in box
 // and that it is the nearest hit of the ray; Newton converging inside box
-// (a step below kConverged, or one whose successor would be below
-// kPredicted) can only have converged to that zero; the shading is in doubles
+// (newton_in_box of certified_newton.h: a step below 1e-9, or one whose
+// successor would be below 1e-12) can only have converged to that zero; the shading is in doubles
 // at the hit, as for every single pixel and corner ray (shade_at of
 // cluster_attempt.h, with shadow rays for the lights).
 #pragma once
 
+#include <seamless/render/certified_newton.h>
 #include <seamless/render/cluster_attempt.h>
 #include <seamless/render/image.h>
 #include <seamless/render/mark.h>
@@ -30,7 +31,6 @@
 #include <seamless/render/render.h>
 #include <seamless/render/trace.h>
 
-#include <limits>
 #include <vector>
 
 namespace seamless {
@@ -49,49 +49,12 @@ class CertifiedPixels {
                PixelScratch& scratch, RenderStats& st);
 
   private:
-    struct Start;
-    // Newton for the ray through (a, b) from the hit `from`; true when it
-    // converges inside box, with the hit in `to` (its evaluation left to the
-    // caller). along: `from` is the previous pixel of the row, whose
-    // correction then moves the first step's point (see Start).
-    static bool newton(const BezierPatch& patch, double a, double b, const ParamBox& box,
-                       const Start& from, bool along, Start& to);
-
-    static constexpr int kNewtonSteps = 12; // as newton_corner's
-    // A step this small near the regular zero (the certificate's Jacobian is
-    // regular on box) leaves an error of its square's order: converged. (1e-12,
-    // newton_corner's, costs one more evaluation per pixel for the same images:
-    // teapot 640x480 x 16 1.640 -> 1.630 G instructions, PNGs byte-identical.)
-    static constexpr double kConverged = 1e-9;
-    // Or a step d (at most kQuadratic) whose successor, by quadratic
-    // convergence about k d^2, would be below kPredicted: the point is then
-    // that close to the zero, closer than a single pixel's shading point
-    // (the middle of newton_hit's Krawczyk box, inside a 2e-9 wide box),
-    // without the evaluation that would show it. k: measured on the
-    // previous run with a step above kMeasurable (d_i / d_{i-1}^2, at least
-    // kLeast, so that one lucky step does not stop the next runs early;
-    // unknown, infinite, before the first).
-    static constexpr double kQuadratic = 1e-5, kPredicted = 1e-12, kMeasurable = 1e-7, kLeast = 1;
     // B is painted in tiles: a tile's hits on the certified patch share one
     // certificate per light (lights_reaching_box of pixel_lights.h), where
     // SHADE's for all of B failed; 8 x 4 by callgrind counts on scenes 2 and 3
     // (4 x 4, 5 x 4 and 10 x 8 took 0.3-1 % more; without: 11-23 % more).
     static constexpr int kTileWidth = 8, kTileHeight = 4;
 
-    // Where Newton starts (a pixel's hit), the patch evaluated there, and
-    // what its run showed: the hit minus the point of Newton's first step (a
-    // step from the previous hit is a linear prediction, whose error varies
-    // smoothly along a row, so the next pixel's first point moves by it:
-    // an error of third order in the pixel spacing instead of second), and
-    // the convergence constant k. along: the hit's run started from the
-    // previous pixel of its row (its correction is one along the row).
-    struct Start {
-        double s = 0, t = 0;
-        SurfacePoint at{};
-        double ds = 0, dt = 0;
-        double k = std::numeric_limits<double>::infinity();
-        bool along = false;
-    };
     struct Shaded { // a pixel's hit, with point and normal there (camera coordinates)
         PixelHit hit;
         Vec3 P, N;

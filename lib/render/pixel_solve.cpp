@@ -156,11 +156,16 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     }
     ParamBox hb;
     Interval q;
-    if (newton_hit(pp, a, b, mark.box, sys, J, hb, q, st, shared.start(k), shared.at_start(k))) {
+    NewtonFrame at;
+    if (newton_hit(pp, a, b, mark.box, sys, J, hb, q, st, shared.start(k), shared.at_start(k),
+                   &at)) {
         ++near.best.candidates;
         ++st.pixel_patch_solves;
         ++st.pixel_newton_certified;
-        shared.hit(k, hb.s.mid(), hb.t.mid());
+        // The next run on k starts at Newton's point, where the certificate's
+        // evaluation gave the patch's frame too (the shading's: paint_pixels).
+        shared.hit(k, at.s, at.t);
+        shared.evaluated(k, at.s, at.t, at.at);
         near.take(mark.patch, hb, q, static_cast<int>(k));
         return;
     }

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/projection.h>
 
+#include <seamless/model/model.h>
 #include <seamless/render/parallel.h>
 #include <seamless/render/trace.h>
-#include <seamless/spline/knot_insertion.h>
 
 namespace seamless {
 
@@ -32,6 +32,11 @@ void set_camera_patch(ProjectedPatch& pp, const BezierPatch& b) {
 }
 
 ProjectedScene project_scene(const Scene& scene, int width, int height, int threads) {
+    return project_scene(scene, bezier_patches(scene.model), width, height, threads);
+}
+
+ProjectedScene project_scene(const Scene& scene, const std::vector<BezierPatch>& patches, int width,
+                             int height, int threads) {
     Camera cam = scene.camera;
     cam.width = width;
     cam.height = height;
@@ -42,39 +47,29 @@ ProjectedScene project_scene(const Scene& scene, int width, int height, int thre
     ps.lighting.levels = scene.levels;
     for (const Light& l : scene.lights)
         if (l.on()) ps.lighting.lights.push_back({ps.frame.to_camera(l.position), l.color});
-    // Reserved: growing by doubling copied the 3.2 KB patches into fresh memory
-    // again and again (teapot 640x480 x 16: ~60 page faults of project_scene).
-    size_t count = 0;
-    for (const BSplineSurface& s : scene.model.surfaces)
-        count += static_cast<size_t>(bezier_patch_count(s));
-    std::vector<BezierPatch> patches;
-    std::vector<int> surface;
-    patches.reserve(count);
-    surface.reserve(count);
-    for (size_t k = 0; k < scene.model.surfaces.size(); ++k)
-        for (const BezierPatch& b : bezier_patches(scene.model.surfaces[k], static_cast<int>(k))) {
-            patches.push_back(b);
-            surface.push_back(static_cast<int>(k));
-        }
-    // A ProjectedPatch is large (its power forms are sized for the highest
-    // degree): constructed in place by its worker, once, in parallel; never
-    // copied or moved.
+    // Each ProjectedPatch (9.8 KB up to bicubic) constructed in place by its
+    // worker, once, in parallel; never copied or moved.
     ps.patches.reset(patches.size());
     for_each_item(static_cast<int>(patches.size()), threads, [&](int i) {
         ProjectedPatch& pp = ps.patches.place(i);
-        BezierPatch& b = patches[i];
+        BezierPatch b = patches[i];
         for (int u = 0; u <= b.p; ++u)
             for (int v = 0; v <= b.q; ++v) b.at(u, v) = ps.frame.to_camera(b.at(u, v));
         set_camera_patch(pp, b);
-        pp.material = scene.surface_material[surface[i]];
+        pp.material = scene.surface_material[b.surface];
     });
     return ps;
 }
 
 void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal,
                    SurfacePoint* at) {
-    SurfacePoint sp = evaluate(b, s, t);
+    const SurfacePoint sp = evaluate(b, s, t);
     if (at) *at = sp;
+    surface_frame(b, s, t, sp, point, normal);
+}
+
+void surface_frame(const BezierPatch& b, double s, double t, const SurfacePoint& sp, Vec3& point,
+                   Vec3& normal) {
     point = sp.point;
     normal = sp.normal();
     // At a collapsed edge the normal vanishes; take it a little way inside.

@@ -12,7 +12,9 @@
 #include <seamless/spline/subpatch.h>
 
 #include <cstddef>
+#include <memory>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace seamless {
@@ -31,15 +33,30 @@ struct ProjectedPatch {
 
 // The projected scene's patches in raw storage, each constructed by the
 // worker that builds it (project_scene): a vector's resize() zeroed all of
-// them (42 KB each) on one thread first, the teapot's 36 in ~370 page faults
-// (~4.5 ms at ~12 us a fault); in the workers those faults are shared.
-// Constructing one zeroes its BezierPatch only, not its forms (power_form.h):
-// a bicubic touches about 8 of its 10 pages, in 7 places.
+// them on one thread first (teapot: ~370 page faults, ~4.5 ms at ~12 us a
+// fault); in the workers those faults are shared. Constructing one zeroes its
+// BezierPatch only, not its forms (power_form.h). Every one of the n is
+// constructed before the set is destroyed (project_scene places them all).
 class ProjectedPatches {
   public:
+    ProjectedPatches() = default;
+    ProjectedPatches(ProjectedPatches&& o) noexcept
+        : data_(std::move(o.data_)), size_(std::exchange(o.size_, 0)) {}
+    ProjectedPatches& operator=(ProjectedPatches&& o) noexcept {
+        if (this != &o) {
+            destroy();
+            data_ = std::move(o.data_);
+            size_ = std::exchange(o.size_, 0);
+        }
+        return *this;
+    }
+    ~ProjectedPatches() { destroy(); }
+
     // Room for n patches, none constructed; place(i) constructs patch i.
     void reset(std::size_t n) {
-        data_ = raw_array<ProjectedPatch>(n);
+        destroy();
+        data_.reset(n ? static_cast<ProjectedPatch*>(::operator new(n * sizeof(ProjectedPatch)))
+                      : nullptr);
         size_ = n;
     }
     ProjectedPatch& place(std::size_t i) { return *new (data_.get() + i) ProjectedPatch; }
@@ -52,7 +69,11 @@ class ProjectedPatches {
     const ProjectedPatch* end() const { return data_.get() + size_; }
 
   private:
-    RawArray<ProjectedPatch> data_;
+    void destroy() {
+        for (std::size_t i = 0; i < size_; ++i) data_[i].~ProjectedPatch();
+        size_ = 0;
+    }
+    std::unique_ptr<ProjectedPatch[], ReleaseRaw> data_;
     std::size_t size_ = 0;
 };
 
@@ -74,11 +95,18 @@ void set_camera_patch(ProjectedPatch& pp, const BezierPatch& b);
 // patches in parallel on `threads` (RenderOptions::threads; the same result
 // for any count).
 ProjectedScene project_scene(const Scene& scene, int width, int height, int threads = 1);
+// The same from the model's Bezier patches already extracted
+// (bezier_patches(scene.model), in its order).
+ProjectedScene project_scene(const Scene& scene, const std::vector<BezierPatch>& patches, int width,
+                             int height, int threads);
 
 // Surface point and normal of a patch at local (s, t), in camera coordinates,
 // for shading; at a pole (vanishing normal) the normal is taken slightly inside.
 // at (optional): receives evaluate(b, s, t) (for the next Newton run from (s, t)).
 void surface_frame(const BezierPatch& b, double s, double t, Vec3& point, Vec3& normal,
                    SurfacePoint* at = nullptr);
+// The same from sp, the patch already evaluated at (s, t).
+void surface_frame(const BezierPatch& b, double s, double t, const SurfacePoint& sp, Vec3& point,
+                   Vec3& normal);
 
 } // namespace seamless

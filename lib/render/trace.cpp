@@ -107,6 +107,11 @@ bool needs_secondary_rays(const Scene& scene) {
 }
 
 TriangleScene build_triangle_scene(const Scene& scene, int threads) {
+    return build_triangle_scene(scene, bezier_patches(scene.model), threads);
+}
+
+TriangleScene build_triangle_scene(const Scene& scene, const std::vector<BezierPatch>& patches,
+                                   int threads) {
     TriangleScene ts;
     // The renderers shade with the surfaces' own normals (INTRACY on the
     // patches, TRAY on the triangles' corner normals): keep every surface's side.
@@ -115,7 +120,7 @@ TriangleScene build_triangle_scene(const Scene& scene, int threads) {
     // Nothing here reads the certified bound of the triangles (error_bound.h).
     to.certify = false;
     to.threads = threads;
-    ts.tess = tessellate(scene.model, to);
+    ts.tess = tessellate(scene.model, patches, to);
     const TriangleMesh& mesh = ts.tess.mesh;
     const int F = mesh.triangle_count();
     ts.triangle_material.resize(F);

@@ -61,6 +61,10 @@ bool needs_secondary_rays(const Scene& scene);
 // tessellate(scene.model) with the default tolerances (section 8), on
 // `threads` workers (0: every core; the same triangles on any).
 TriangleScene build_triangle_scene(const Scene& scene, int threads = 0);
+// The same from the model's Bezier patches already extracted
+// (bezier_patches(scene.model)), which INTRACY's step 1 uses too.
+TriangleScene build_triangle_scene(const Scene& scene, const std::vector<BezierPatch>& patches,
+                                   int threads);
 
 struct TraceHit {
     int triangle = -1;

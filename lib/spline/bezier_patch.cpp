@@ -78,6 +78,17 @@ void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Int
     enclose_homogeneous_any_degree(b, s, t, dims, out);
 }
 
+void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out,
+                         SurfacePoint& frame) {
+    if (b.p == b.q) {
+        if (b.p == 3) return enclose_homogeneous_fixed<3, 3, true>(b, s, t, dims, out, &frame);
+        if (b.p == 2) return enclose_homogeneous_fixed<2, 2, true>(b, s, t, dims, out, &frame);
+        if (b.p == 1) return enclose_homogeneous_fixed<1, 1, true>(b, s, t, dims, out, &frame);
+    }
+    enclose_homogeneous_any_degree(b, s, t, dims, out);
+    frame = evaluate(b, s, t);
+}
+
 void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,
                                     Interval* out) {
     assert(s >= 0 && s <= 1 && t >= 0 && t <= 1);

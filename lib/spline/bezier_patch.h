@@ -63,6 +63,11 @@ HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t);
 // error is below 4u (p + q) M, plus underflow_allowance(3 (p + q)) for underflow. Far
 // cheaper than interval Horner on the power form at a point.
 void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out);
+// The same enclosures, and the point with its partial derivatives at (s, t)
+// in doubles into frame (as evaluate() gives them, up to rounding: from the
+// same de Casteljau levels for equal degrees 1 to 3, else evaluate()'s).
+void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Interval* out,
+                         SurfacePoint& frame);
 // The same by the loops for any degree (enclose_homogeneous takes
 // enclose_homogeneous_fixed of fixed_degree.h for equal degrees 1 to 3: the same values).
 void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,

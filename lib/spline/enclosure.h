@@ -27,8 +27,8 @@ struct ParamBox {
 
 using IVec3 = IVec<3>;
 
-// Everything the enclosures need, computed once per patch (room for 38 KB,
-// a bicubic's forms use 4 KB of it: power_form.h).
+// Everything the enclosures need, computed once per patch (6.4 KB up to
+// bicubic forms, which are inside; higher degrees on the heap: power_form.h).
 struct PatchForms {
     PowerForm X, Xs, Xt, Xss, Xst, Xtt; // homogeneous coordinates and their derivatives
     bool rational = false;

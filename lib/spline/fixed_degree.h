@@ -95,14 +95,22 @@ SurfacePoint evaluate_fixed(const BezierPatch& b, double s, double t) {
 // operations per coordinate in the same order (so the same enclosures), the
 // four coordinates two lanes at a time, (x, y) and (z, w), held in registers
 // (the generic loops' stack arrays cost a store-forwarding stall per level).
-template <int P, int Q>
-void enclose_homogeneous_fixed(const BezierPatch& b, double s, double t, int dims, Interval* out) {
+//
+// Frame: also the point and its partial derivatives in doubles into *frame,
+// from the same de Casteljau levels (X_t = Q (b_1 - b_0) of each row's last
+// level but one, reduced along s as the rows are; X_s = P (c_1 - c_0) of the
+// columns' last level but one) and the quotient rule as evaluate()'s. The
+// enclosures are the same bits either way (single pixels: one pass serves
+// Newton's certificate and the shading, instead of evaluate() again).
+template <int P, int Q, bool Frame = false>
+void enclose_homogeneous_fixed(const BezierPatch& b, double s, double t, int dims, Interval* out,
+                               SurfacePoint* frame = nullptr) {
     using Lanes = double __attribute__((vector_size(16)));
     constexpr double u = 0x1p-53;
     constexpr int levels = P + Q;
     const double rs = 1.0 - s, rt = 1.0 - t;
     const Lanes sign = {-0.0, -0.0};
-    Lanes M[2] = {}, col[P + 1][2];
+    Lanes M[2] = {}, col[P + 1][2], tcol[P + 1][2], Xs[2];
     for (int i = 0; i <= P; ++i) {
         Lanes row[Q + 1][2];
         for (int j = 0; j <= Q; ++j) {
@@ -116,21 +124,40 @@ void enclose_homogeneous_fixed(const BezierPatch& b, double s, double t, int dim
                 M[k] = M[k] < a ? a : M[k];
             }
         }
-        for (int l = 1; l <= Q; ++l)
+        for (int l = 1; l <= Q; ++l) {
+            if constexpr (Frame)
+                if (l == Q)
+                    for (int k = 0; k < 2; ++k) tcol[i][k] = double(Q) * (row[1][k] - row[0][k]);
             for (int j = 0; j <= Q - l; ++j)
                 for (int k = 0; k < 2; ++k) row[j][k] = rt * row[j][k] + t * row[j + 1][k];
+        }
         col[i][0] = row[0][0];
         col[i][1] = row[0][1];
     }
-    for (int l = 1; l <= P; ++l)
+    for (int l = 1; l <= P; ++l) {
+        if constexpr (Frame) {
+            if (l == P)
+                for (int k = 0; k < 2; ++k) Xs[k] = double(P) * (col[1][k] - col[0][k]);
+            for (int i = 0; i <= P - l; ++i)
+                for (int k = 0; k < 2; ++k) tcol[i][k] = rs * tcol[i][k] + s * tcol[i + 1][k];
+        }
         for (int i = 0; i <= P - l; ++i)
             for (int k = 0; k < 2; ++k) col[i][k] = rs * col[i][k] + s * col[i + 1][k];
+    }
     for (int c = 0; c < dims; ++c) {
         const double v = col[0][c / 2][c % 2];
         double e = 4 * u * levels * M[c / 2][c % 2] + underflow_allowance(3.0 * levels);
         e = next_up(next_up(e));
         out[c] = std::isfinite(v) && std::isfinite(e) ? Interval(next_down(v - e), next_up(v + e))
                                                       : Interval::entire();
+    }
+    if constexpr (Frame) {
+        // Quotient rule: P = X/W, P_s = (X_s - P W_s) / W.
+        const double w = col[0][1][1];
+        frame->point = Vec3{col[0][0][0], col[0][0][1], col[0][1][0]} / w;
+        frame->du = (Vec3{Xs[0][0], Xs[0][1], Xs[1][0]} - Xs[1][1] * frame->point) / w;
+        frame->dv =
+            (Vec3{tcol[0][0][0], tcol[0][0][1], tcol[0][1][0]} - tcol[0][1][1] * frame->point) / w;
     }
 }
 

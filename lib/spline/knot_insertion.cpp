@@ -10,8 +10,8 @@ namespace {
 // Q_i = P_i (i <= k-p), (1-a_i) P_{i-1} + a_i P_i (k-p < i <= k), P_{i-1} (i > k),
 // a_i = (t - t_i) / (t_{i+p} - t_i). The denominators are positive because the
 // span k is non-empty and t_i <= t_k < t_{k+1} <= t_{i+p}.
-void boehm(int p, int k, const std::vector<double>& U, double t, const HPoint* P, HPoint* Q,
-           int n, int stride) {
+void boehm(int p, int k, const std::vector<double>& U, double t, const HPoint* P, HPoint* Q, int n,
+           int stride) {
     for (int i = 0; i <= k - p; ++i) Q[i * stride] = P[i * stride];
     for (int i = k - p + 1; i <= k; ++i) {
         double a = (t - U[i]) / (U[i + p] - U[i]);
@@ -103,6 +103,7 @@ std::vector<BezierPatch> bezier_patches(const BSplineSurface& s, int surface_ind
     // Spans of the refined vectors inside the domain. With multiplicity >= degree
     // at both ends of a span k, its control points k-p..k are its Bezier points.
     std::vector<BezierPatch> out;
+    out.reserve(static_cast<size_t>(bezier_patch_count(s))); // no copies by doubling
     const double umin = s.u_min(), umax = s.u_max(), vmin = s.v_min(), vmax = s.v_max();
     for (int ku = p; ku < net.rows; ++ku) {
         if (!(net.knots_u[ku] < net.knots_u[ku + 1])) continue;

@@ -30,9 +30,7 @@ PowerForm power_form(const BezierPatch& b) {
 void power_form(const BezierPatch& b, PowerForm& f) {
     assert(b.p >= 0 && b.p <= kMaxDegree && b.q >= 0 && b.q <= kMaxDegree);
     constexpr int K = PowerForm::kMaxOrder;
-    f.p = b.p;
-    f.q = b.q;
-    f.dim = 4;
+    f.set_degrees(b.p, b.q, 4);
     double Mu[K][K], Mv[K][K];
     bernstein_to_power(b.p, Mu);
     bernstein_to_power(b.q, Mv);
@@ -68,9 +66,7 @@ PowerForm derivative_t(const PowerForm& f) {
 
 void derivative_s(const PowerForm& f, PowerForm& d) {
     assert(&d != &f); // d's degrees are set before f's coefficients are read
-    d.dim = f.dim;
-    d.q = f.q;
-    d.p = f.p > 0 ? f.p - 1 : 0;
+    d.set_degrees(f.p > 0 ? f.p - 1 : 0, f.q, f.dim);
     for (int c = 0; c < f.dim; ++c)
         for (int i = 0; i <= d.p; ++i)
             for (int j = 0; j <= d.q; ++j)
@@ -80,9 +76,7 @@ void derivative_s(const PowerForm& f, PowerForm& d) {
 
 void derivative_t(const PowerForm& f, PowerForm& d) {
     assert(&d != &f);
-    d.dim = f.dim;
-    d.p = f.p;
-    d.q = f.q > 0 ? f.q - 1 : 0;
+    d.set_degrees(f.p, f.q > 0 ? f.q - 1 : 0, f.dim);
     for (int c = 0; c < f.dim; ++c)
         for (int i = 0; i <= d.p; ++i)
             for (int j = 0; j <= d.q; ++j)
@@ -98,9 +92,7 @@ PowerForm combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], in
 
 void combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows, PowerForm& g) {
     assert(rows >= 1 && rows <= PowerForm::kMaxDim && &g != &f);
-    g.p = f.p;
-    g.q = f.q;
-    g.dim = rows;
+    g.set_degrees(f.p, f.q, rows);
     for (int k = 0; k < rows; ++k)
         for (int i = 0; i <= f.p; ++i)
             for (int j = 0; j <= f.q; ++j) {

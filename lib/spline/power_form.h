@@ -9,45 +9,81 @@
 #include <seamless/interval/interval.h>
 #include <seamless/spline/bezier_patch.h>
 
+#include <seamless/base/raw_array.h>
+
 #include <algorithm>
+#include <cassert>
+#include <utility>
 
 namespace seamless {
 
-// Coefficients packed by the actual degrees: a(c, i, j) at (c (p + 1) + i) (q + 1) + j,
-// so a bicubic's 4 x 4 x 4 coefficients are 1 KB, contiguous, in room for degree
-// 9 (6.4 KB, never allocated). Set p, q and dim before writing coefficients.
+// Coefficients packed by the actual degrees: a(c, i, j) at (c (p + 1) + i) (q + 1) + j.
+// Room inside for a bicubic's 4 x 4 x 4 (1 KB); a form of higher degrees
+// takes room for degree 9 (6.4 KB) on the heap once, kept for reuse. (Room for
+// degree 9 inside spread a projected patch's six forms 6.4 KB apart over about
+// 8 of its 10 pages: ~290 of the teapot's page faults at ~11.5 us each; now a
+// bicubic ProjectedPatch is 9.8 KB, its forms one after another.) Set the
+// degrees with set_degrees() before writing coefficients: it makes the room.
 // Nothing is zeroed and copies take only the coefficients in use: every
-// producer writes exactly those of its degrees. (Zeroing and strided rows
-// touched all 6.4 KB of each of a projected patch's 6 forms: project_scene of
-// the teapot, 36 patches, 444 -> 320 page faults at ~11.5 us each.)
+// producer writes exactly those of its degrees.
 struct PowerForm {
     static constexpr int kMaxOrder = BezierPatch::kMaxOrder;
     static constexpr int kMaxDim = 4;
     static constexpr int kCapacity = kMaxDim * kMaxOrder * kMaxOrder;
+    static constexpr int kInline = kMaxDim * 4 * 4;
 
-    int p = 0, q = 0; // degrees in s and t (>= 0)
-    int dim = 4;      // number of coordinates: 4 for (wx, wy, wz, w), fewer for derived systems
+    // Degrees in s and t (>= 0) and the number of coordinates: 4 for (wx, wy,
+    // wz, w), fewer for derived systems. Read here; written by set_degrees.
+    int p = 0, q = 0;
+    int dim = 4;
 
-    PowerForm() {} // coefficients unset (not zeroed): see above
+    PowerForm() : a_(inline_) {} // coefficients unset (not zeroed): see above
     // Copies the degrees and the dim (p + 1) (q + 1) coefficients in use only.
-    PowerForm(const PowerForm& f) { *this = f; }
+    PowerForm(const PowerForm& f) : a_(inline_) { *this = f; }
     PowerForm& operator=(const PowerForm& f) {
         if (this == &f) return *this;
-        p = f.p;
-        q = f.q;
-        dim = f.dim;
-        std::copy_n(f.a, f.size(), a);
+        set_degrees(f.p, f.q, f.dim);
+        std::copy_n(f.a_, f.size(), a_);
         return *this;
     }
+    PowerForm(PowerForm&& f) noexcept : a_(inline_) { *this = std::move(f); }
+    PowerForm& operator=(PowerForm&& f) noexcept {
+        if (this == &f) return *this;
+        if (f.heap_) { // take f's room; f keeps its own inside
+            heap_ = std::move(f.heap_);
+            a_ = heap_.get();
+            f.a_ = f.inline_;
+            p = f.p;
+            q = f.q;
+            dim = f.dim;
+            return *this;
+        }
+        return *this = static_cast<const PowerForm&>(f);
+    }
 
+    // Sets the degrees and the dim, with room for their coefficients (their
+    // values unset).
+    void set_degrees(int p_, int q_, int dim_) {
+        assert(p_ >= 0 && p_ < kMaxOrder && q_ >= 0 && q_ < kMaxOrder && dim_ >= 1 &&
+               dim_ <= kMaxDim);
+        if (!heap_ && dim_ * (p_ + 1) * (q_ + 1) > kInline) {
+            heap_ = raw_array<Interval>(kCapacity);
+            a_ = heap_.get();
+        }
+        p = p_;
+        q = q_;
+        dim = dim_;
+    }
     // Number of coefficients in use.
     int size() const { return dim * (p + 1) * (q + 1); }
-    Interval& at(int c, int i, int j) { return a[(c * (p + 1) + i) * (q + 1) + j]; }
-    const Interval& at(int c, int i, int j) const { return a[(c * (p + 1) + i) * (q + 1) + j]; }
+    Interval& at(int c, int i, int j) { return a_[(c * (p + 1) + i) * (q + 1) + j]; }
+    const Interval& at(int c, int i, int j) const { return a_[(c * (p + 1) + i) * (q + 1) + j]; }
 
   private:
-    union { // left unconstructed by PowerForm(): no zeroing
-        Interval a[kCapacity];
+    Interval* a_;             // inline_ or heap_
+    RawArray<Interval> heap_; // room for degree 9, when the degrees need it
+    union {                   // left unconstructed by PowerForm(): no zeroing
+        Interval inline_[kInline];
     };
 };
 

@@ -193,10 +193,12 @@ TEST_CASE("Siblings sharing their parent's bisections solve their pixels as each
 
 TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the start point alone",
           "[pixel_solve]") {
-    // paint_pixels hands SharedMarks the patch evaluated at each shaded hit
-    // (surface_frame's), and the next ray's Newton run on that mark takes it
-    // as its first step's evaluation: the hits must be bit for bit those of
-    // the same sub-screens solved without it.
+    // A hit by certified Newton keeps the certificate's evaluation at
+    // Newton's point itself; for other hits paint_pixels hands SharedMarks
+    // the patch evaluated at the shaded hit (surface_frame's), and the next
+    // ray's Newton run on that mark takes it as its first step's evaluation:
+    // the hits must be bit for bit those of the same sub-screens solved
+    // without the latter.
     TwinSolves twin;
     TeapotMarks& tm = twin.tm;
     const ProjectedScene& ps = tm.ps;
@@ -218,10 +220,12 @@ TEST_CASE("Newton from a kept evaluation at the previous hit runs as from the st
                     if (h1.patch < 0) continue;
                     ++hits;
                     if (h1.mark < 0) continue;
-                    Vec3 P, N;
-                    SurfacePoint at;
-                    surface_frame(ps.patches[h1.patch].patch, h1.s, h1.t, P, N, &at);
-                    kept.evaluated(h1.mark, h1.s, h1.t, at);
+                    if (kept.at_start(h1.mark) == nullptr) { // as paint_pixels
+                        Vec3 P, N;
+                        SurfacePoint at;
+                        surface_frame(ps.patches[h1.patch].patch, h1.s, h1.t, P, N, &at);
+                        kept.evaluated(h1.mark, h1.s, h1.t, at);
+                    }
                     REQUIRE(kept.at_start(h1.mark) != nullptr);
                 }
         });

@@ -112,8 +112,7 @@ TEST_CASE("fast horner on power forms gives the generic code's bits and contains
     std::uniform_real_distribution<double> g(-1, 1), v(0, 1);
     for (int trial = 0; trial < 6000; ++trial) {
         PowerForm f;
-        f.p = trial % 10;
-        f.q = (trial / 10) % 10;
+        f.set_degrees(trial % 10, (trial / 10) % 10, 4);
         const int kind = (trial / 100) % 5;
         const double scale = trial % 211 == 0   ? 0x1p950
                              : trial % 199 == 0 ? 0x1p897

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <vector>
 
 using namespace seamless;
 
@@ -113,4 +114,41 @@ TEST_CASE("ray_system_fixed (bicubic, biquadratic, bilinear) gives G = (X - a Z,
             CHECK(std::abs(Gt[1] - (sp.dv.y - bb * sp.dv.z)) <= 1e-11);
         }
     }
+}
+
+TEST_CASE("enclose_homogeneous() with the frame: the same enclosures, and evaluate()'s point and "
+          "derivatives up to rounding",
+          "[spline][fixed_degree]") {
+    // Bicubic, biquadratic, bilinear (de Casteljau's levels), and degree
+    // (3, 2) patches (evaluate()'s frame), rational or not; the corners and
+    // random points.
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    std::vector<BezierPatch> patches;
+    for (int degree : {3, 2, 1, 3})
+        for (int n = 0; n < 200; ++n) {
+            patches.push_back(random_patch(rng, n % 2 == 1, degree));
+            if (patches.size() > 600) patches.back().q = 2;
+        }
+    for (const BezierPatch& b : patches)
+        for (int k = 0; k < 20; ++k) {
+            const double s = k < 4 ? k % 2 : U(rng), t = k < 4 ? k / 2 : U(rng);
+            for (int dims = 3; dims <= 4; ++dims) {
+                Interval plain[4], with[4];
+                SurfacePoint frame;
+                enclose_homogeneous(b, s, t, dims, plain);
+                enclose_homogeneous(b, s, t, dims, with, frame);
+                for (int c = 0; c < dims; ++c) {
+                    CHECK(std::bit_cast<std::uint64_t>(with[c].lo()) ==
+                          std::bit_cast<std::uint64_t>(plain[c].lo()));
+                    CHECK(std::bit_cast<std::uint64_t>(with[c].hi()) ==
+                          std::bit_cast<std::uint64_t>(plain[c].hi()));
+                }
+                const SurfacePoint sp = evaluate(b, s, t);
+                const double scale = 1 + norm(sp.point) + norm(sp.du) + norm(sp.dv);
+                CHECK(norm(frame.point - sp.point) <= 1e-12 * scale);
+                CHECK(norm(frame.du - sp.du) <= 1e-11 * scale);
+                CHECK(norm(frame.dv - sp.dv) <= 1e-11 * scale);
+            }
+        }
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/power_form.h>
 
+#include <seamless/spline/enclosure.h>
+
 #include "spline/patch_samples.h"
 #include "test_util.h"
 
@@ -9,10 +11,15 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <utility>
 
 using namespace seamless;
 
 namespace {
+
+bool same(Interval x, Interval y) {
+    return x.lo() == y.lo() && x.hi() == y.hi();
+}
 
 // Checks the power form (and its derivatives) of b at random points.
 void check_patch(const BezierPatch& b, std::mt19937_64& rng) {
@@ -106,7 +113,6 @@ TEST_CASE("derivative forms lower the degree; combine is linear", "[power_form]"
 TEST_CASE("coefficients are packed by the degrees; copies and in-place forms agree",
           "[power_form]") {
     std::mt19937_64 rng(25);
-    const auto same = [](Interval x, Interval y) { return x.lo() == y.lo() && x.hi() == y.hi(); };
     for (auto [p, q] : {std::pair{3, 3}, {2, 1}, {0, 4}, {9, 9}}) {
         const BezierPatch b = test::random_patch(rng, p, q, true);
         const PowerForm f = power_form(b);
@@ -139,5 +145,35 @@ TEST_CASE("coefficients are packed by the degrees; copies and in-place forms agr
         CHECK(differ == 0);
         CHECK((ds.p == std::max(p - 1, 0) && ds.q == q && dt.p == p && dt.q == std::max(q - 1, 0)));
         CHECK((copy.p == p && copy.q == q && copy.dim == 4 && g.p == p && g.q == q));
+    }
+}
+
+TEST_CASE("forms up to bicubic keep their coefficients inside, and moves keep every bit",
+          "[power_form]") {
+    // The room inside is a bicubic's (a projected patch's six forms one after
+    // another: power_form.h); higher degrees go to the heap.
+    STATIC_REQUIRE(sizeof(PowerForm) < 1100);
+    STATIC_REQUIRE(sizeof(PatchForms) < 7000);
+    std::mt19937_64 rng(31);
+    for (auto [p, q] : {std::pair{3, 3}, {2, 2}, {4, 3}, {9, 9}}) {
+        const BezierPatch b = test::random_patch(rng, p, q, true);
+        const PowerForm f = power_form(b);
+        const bool inside = 4 * (p + 1) * (q + 1) <= PowerForm::kInline;
+        const auto* object = reinterpret_cast<const char*>(&f);
+        const auto* first = reinterpret_cast<const char*>(&f.at(0, 0, 0));
+        CHECK((first >= object && first < object + sizeof(PowerForm)) == inside);
+        PowerForm moved(std::move(PowerForm(f)));
+        PowerForm assigned;
+        assigned = std::move(moved);
+        // The moved-from form is empty of room it gave away, and usable again.
+        moved.set_degrees(9, 9, 4);
+        moved.at(3, 9, 9) = Interval(1.0);
+        int differ = 0;
+        for (int c = 0; c < 4; ++c)
+            for (int i = 0; i <= p; ++i)
+                for (int j = 0; j <= q; ++j) differ += !same(assigned.at(c, i, j), f.at(c, i, j));
+        CHECK(differ == 0);
+        CHECK((assigned.p == p && assigned.q == q && assigned.dim == 4));
+        CHECK(same(moved.at(3, 9, 9), Interval(1.0)));
     }
 }
