@@ -6,6 +6,7 @@
 
 #include <seamless/base/atomic_file.h>
 #include <seamless/base/error.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/base/output_files.h>
 #include <seamless/render/render.h>
 
@@ -123,6 +124,7 @@ void add_render(CLI::App& app, Action& action) {
             std::vector<std::filesystem::path> outs{a->out};
             if (!a->stats.empty()) outs.push_back(a->stats);
             OutputFiles files(outs, {a->scene});
+            keep_freed_memory(); // the steps reuse each other's pages (huge_pages.h)
             const Scene scene = load_scene(a->scene);
             print_warnings(scene.model); // e.g. approximated STEP/IGES surfaces
             std::vector<std::filesystem::path> models;

@@ -9,6 +9,7 @@
 //   bench_render_embree SCENE [--size WxH] [--levels L] [--threads N] [-o OUT.png]
 // prints one JSON line: seconds (precalculation included), precalc_seconds.
 #include <seamless/base/error.h>
+#include <seamless/base/huge_pages.h>
 #include <seamless/render/camera.h>
 #include <seamless/render/image.h>
 #include <seamless/render/parallel.h>
@@ -55,6 +56,7 @@ int run(int argc, char** argv) {
     for (int i = 1; i < argc; ++i)
         if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
             return usage(argv[0], 0);
+    keep_freed_memory(); // as `seamless render` does (huge_pages.h)
     const Scene scene = load_scene(argv[1]);
     int W = scene.camera.width, H = scene.camera.height, L = scene.levels, threads = 0;
     std::string out;
