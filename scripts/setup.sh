@@ -12,7 +12,7 @@ build=${1:-$here/build}
 # targets); clang with libFuzzer and the sanitizer runtimes builds the fuzz
 # targets (tests/fuzz) that the test script runs.
 packages=(build-essential cmake pkg-config libopenmesh-dev libcgal-dev libtinygltf-dev catch2
-          nlohmann-json3-dev libstb-dev libcli11-dev libtbb-dev libboost-dev python3
+          nlohmann-json3-dev libstb-dev libpng-dev libcli11-dev libtbb-dev libboost-dev python3
           libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
           libocct-foundation-dev libembree-dev clang-14 libclang-rt-14-dev libfuzzer-14-dev)
 # node and npm run the Khronos glTF validator (tests/mesh/mesh_io_test.cpp);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// RGB framebuffer of quantised intensity levels and its PNG output (stb).
+// RGB framebuffer of quantised intensity levels and its PNG output (libpng).
 #pragma once
 
 #include <seamless/base/huge_pages.h>

@@ -1,12 +1,19 @@
 // SPDX-License-Identifier: MIT
 // Image (image.h): a filled image starts at level 0, background; an unfilled
 // one is made whole by clearing parts that tile it (render_intracy's parts),
-// and clear() writes only its rectangle.
+// and clear() writes only its rectangle. write_png: the file holds the
+// levels as bytes.
+#include "test_util.h"
+
+#include <seamless/base/error.h>
 #include <seamless/render/image.h>
 
 #include <catch2/catch.hpp>
+#include <stb/stb_image.h> // implementation in Debian's libstb
 
 #include <algorithm>
+#include <filesystem>
+#include <string>
 
 using namespace seamless;
 
@@ -70,4 +77,38 @@ TEST_CASE("Image: a render-size image (huge-page storage) tiled by clears, copie
     const Image copy = im;
     CHECK(copy.level == im.level);
     CHECK(copy.at(1279, 1023, 2) == 255);
+}
+
+TEST_CASE("write_png: the file decodes to the image's levels as bytes", "[image]") {
+    const auto dir = test::scratch_dir("image-png");
+    for (int levels : {2, 16, 256}) {
+        Image im(37, 23, levels);
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x)
+                for (int c = 0; c < 3; ++c)
+                    im.at(x, y, c) = static_cast<std::uint16_t>((x * 7 + y * 3 + c * 5) % levels);
+        const auto path = dir / ("levels" + std::to_string(levels) + ".png");
+        write_png(path, im);
+        // Decoded by stb_image, not by the libpng that wrote it.
+        int w = 0, h = 0, channels = 0;
+        unsigned char* rgb = stbi_load(path.string().c_str(), &w, &h, &channels, 3);
+        REQUIRE(rgb != nullptr);
+        CHECK(w == im.width);
+        CHECK(h == im.height);
+        CHECK(channels == 3);
+        int wrong = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                for (int c = 0; c < 3; ++c)
+                    wrong += rgb[(y * w + x) * 3 + c] != level_to_byte(im.at(x, y, c), levels);
+        stbi_image_free(rgb);
+        CHECK(wrong == 0);
+    }
+}
+
+TEST_CASE("write_png: an unwritable path is an InputError and leaves no file", "[image]") {
+    const auto dir = test::scratch_dir("image-png-bad");
+    const auto path = dir / "missing-folder" / "x.png";
+    CHECK_THROWS_AS(write_png(path, Image(4, 3, 16)), InputError);
+    CHECK_FALSE(std::filesystem::exists(path));
 }
