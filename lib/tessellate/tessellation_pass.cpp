@@ -19,6 +19,23 @@
 
 namespace seamless {
 
+namespace {
+
+// The previous pass's registry, rings and positions (copied from by now), this
+// pass's registry and the rings' keys (read by the numbering and by another
+// pass alone). Teapot 1e-4 d_max, 2 passes, 1 thread: the normals', fans'
+// and orientation's page faults 3,173 -> 989 (getrusage per phase, i11r).
+void release_before_mesh(PassMemo& memo, EdgeRegistry& reg, SubpatchRings& rings) {
+    memo.registry = EdgeRegistry();
+    memo.rings = SubpatchRings();
+    std::vector<Vec3>().swap(memo.positions);
+    memo.rings_kept = false;
+    reg = EdgeRegistry();
+    std::vector<VertexKey>().swap(rings.keys);
+}
+
+} // namespace
+
 void refuse_triangle_budget(const Model& model, const TessellationOptions& options) {
     throw TriangleBudgetError(model.source, options.tolerance > 0 ? "tolerance" : "eps1, eps2",
                               options.max_triangles);
@@ -167,6 +184,10 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         }
         return out;
     }
+    // The mesh follows: what only the numbering and another pass needed goes
+    // first, so that the normals, fans and orientation refill its pages
+    // instead of faulting in fresh ones.
+    release_before_mesh(memo, reg, rings);
 
     // (d3) Normals at the fans' vertices, in parallel.
     const FanNormals normals =
