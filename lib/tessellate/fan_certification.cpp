@@ -28,11 +28,11 @@ void fan_ring(const SubpatchRings& rings, const std::vector<Vec3>& positions, in
 
 } // namespace
 
-void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
-                  const std::vector<Vec3>& positions, const std::vector<int>& leaf_start,
-                  double scale, double tolerance, int threads, bool keep,
-                  const std::vector<char>* same, std::vector<KnownBounds>& known,
-                  std::vector<Subpatch>& subpatches) {
+std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
+                               const std::vector<Vec3>& positions, double scale, double tolerance,
+                               int threads, const std::vector<char>* same,
+                               const std::vector<KnownBounds>& known,
+                               std::vector<Subpatch>& subpatches) {
     const int count = static_cast<int>(subpatches.size());
     std::vector<char> fresh(count, 0);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
@@ -61,9 +61,15 @@ void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& 
             }
         }
     });
-    // The fresh bounds kept for the next pass: each patch's map on its own.
-    const int np = static_cast<int>(patches.size());
-    parallel_chunks(keep ? np : 0, threads, [&](int begin, int end) {
+    return fresh;
+}
+
+void keep_fan_bounds(const SubpatchRings& rings, const std::vector<Vec3>& positions,
+                     const std::vector<int>& leaf_start, int threads,
+                     const std::vector<char>& fresh, const std::vector<char>* compared,
+                     const std::vector<Subpatch>& subpatches, std::vector<KnownBounds>& known) {
+    const int np = static_cast<int>(leaf_start.size()) - 1;
+    parallel_chunks(np, threads, [&](int begin, int end) {
         for (int p = begin; p < end; ++p)
             for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i) {
                 if (!fresh[i]) continue;
@@ -71,7 +77,7 @@ void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& 
                 std::vector<RingPoint>& kept = known[p].rings;
                 KnownBound& k = known[p].bounds[subpatch_key(sp.patch, sp.rect)];
                 k.ring_first = static_cast<int>(kept.size());
-                fan_ring(rings, positions, i, kept);
+                if (!compared || (*compared)[p]) fan_ring(rings, positions, i, kept);
                 k.ring_size = static_cast<int>(kept.size()) - k.ring_first;
                 k.rect = sp.rect;
                 k.centre = positions[rings.centre[i]];

@@ -93,7 +93,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         if (last || t.stats.above_tolerance == 0) break;
         std::fill(memo.changed.begin(), memo.changed.end(), 0);
         for (const Subpatch& sp : t.subpatches)
-            if (sp.error_bound > t.stats.tolerance && sp.depth < options.max_depth) {
+            if (splits_again(sp, t.stats.tolerance, options.max_depth)) {
                 split.insert(subpatch_key(sp.patch, sp.rect));
                 memo.changed[sp.patch] = 1;
             }

@@ -21,6 +21,24 @@ namespace seamless {
 
 namespace {
 
+// Per patch: whether its rings are the previous pass's, where `changed` says
+// which patches were split again: neither it nor a patch across one of its
+// edges was (its sides' lines hold the same segments).
+std::vector<char> unchanged_rings(const BoundaryMatch& match, const std::vector<char>& changed) {
+    const int np = static_cast<int>(changed.size());
+    std::vector<char> dirty(match.group_ref.size(), 0), same(np, 0);
+    for (int pe = 0; pe < 4 * np; ++pe)
+        if (match.edge_group[pe] >= 0 && changed[pe / 4]) dirty[match.edge_group[pe]] = 1;
+    for (int p = 0; p < np; ++p) {
+        same[p] = !changed[p];
+        for (int e = 0; e < 4; ++e) {
+            const int g = match.edge_group[4 * p + e];
+            if (g >= 0 && dirty[g]) same[p] = 0;
+        }
+    }
+    return same;
+}
+
 // The previous pass's registry, rings and positions (copied from by now), this
 // pass's registry and the rings' keys (read by the numbering and by another
 // pass alone). Teapot 1e-4 d_max, 2 passes, 1 thread: the normals', fans'
@@ -136,16 +154,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     std::vector<char> same(np, 0);
     PreviousRings previous;
     if (memo.rings_kept && graph.points.empty() && graph.alias.empty()) {
-        std::vector<char> dirty(match.group_ref.size(), 0);
-        for (int pe = 0; pe < 4 * np; ++pe)
-            if (match.edge_group[pe] >= 0 && memo.changed[pe / 4]) dirty[match.edge_group[pe]] = 1;
-        for (int p = 0; p < np; ++p) {
-            same[p] = !memo.changed[p];
-            for (int e = 0; e < 4; ++e) {
-                const int g = match.edge_group[4 * p + e];
-                if (g >= 0 && dirty[g]) same[p] = 0;
-            }
-        }
+        same = unchanged_rings(match, memo.changed);
         previous = {&memo.rings, &memo.leaf_start, &ranges.leaf_start, &same, &memo.positions};
     }
     SubpatchRings rings = collect_rings(patches, out.subpatches, reg, graph, options.crack_free,
@@ -159,11 +168,26 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     // (d2) Each subpatch's certified bound on its own, in parallel.
     const bool certify = options.certify || st.tolerance > 0;
     if (certify) {
-        certify_fans(patches, rings, vr.positions, ranges.leaf_start, scale, st.tolerance,
-                     options.threads, memo.keep, previous.same, memo.bounds, out.subpatches);
+        const std::vector<char> fresh =
+            certify_fans(patches, rings, vr.positions, scale, st.tolerance, options.threads,
+                         previous.same, memo.bounds, out.subpatches);
+        std::vector<char> next_changed(np, 0);
         for (const Subpatch& sp : out.subpatches) {
             if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
             st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
+            next_changed[sp.patch] |= splits_again(sp, st.tolerance, options.max_depth);
+        }
+        // For the next pass, if one follows: the rings of patches it may
+        // compare rings of (all where this pass's rings are not kept).
+        if (memo.keep && !last && st.above_tolerance > 0) {
+            const bool kept = graph.points.empty() && graph.alias.empty();
+            std::vector<char> compared;
+            if (kept) {
+                compared = unchanged_rings(match, next_changed);
+                for (char& c : compared) c = !c;
+            }
+            keep_fan_bounds(rings, vr.positions, ranges.leaf_start, options.threads, fresh,
+                            kept ? &compared : nullptr, out.subpatches, memo.bounds);
         }
     } else {
         for (Subpatch& sp : out.subpatches)
