@@ -4,6 +4,7 @@
 #include <seamless/tessellate/fan_certification.h>
 
 #include <algorithm>
+#include <numeric>
 #include <span>
 
 namespace seamless {
@@ -69,20 +70,31 @@ void keep_fan_bounds(const SubpatchRings& rings, const std::vector<Vec3>& positi
                      const std::vector<char>& fresh, const std::vector<char>* compared,
                      const std::vector<Subpatch>& subpatches, std::vector<KnownBounds>& known) {
     const int np = static_cast<int>(leaf_start.size()) - 1;
-    parallel_chunks(np, threads, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p)
-            for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i) {
-                if (!fresh[i]) continue;
-                const Subpatch& sp = subpatches[i];
-                std::vector<RingPoint>& kept = known[p].rings;
-                KnownBound& k = known[p].bounds[subpatch_key(sp.patch, sp.rect)];
-                k.ring_first = static_cast<int>(kept.size());
-                if (!compared || (*compared)[p]) fan_ring(rings, positions, i, kept);
-                k.ring_size = static_cast<int>(kept.size()) - k.ring_first;
-                k.rect = sp.rect;
-                k.centre = positions[rings.centre[i]];
-                k.bound = sp.error_bound;
-            }
+    // Patches differ in subpatches by ten times and more (teapot): largest
+    // first. Each patch's table and rings sized once for what it adds.
+    std::vector<int> order(np);
+    std::iota(order.begin(), order.end(), 0);
+    const auto size = [&](int p) { return leaf_start[p + 1] - leaf_start[p]; };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size(a) > size(b); });
+    pull_blocks(np, 1, threads, &order, [&](int p, int) {
+        const bool with_rings = !compared || (*compared)[p];
+        std::size_t added = 0, slots = 0;
+        for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i)
+            if (fresh[i]) ++added, slots += rings.start[i + 1] - rings.start[i];
+        std::vector<RingPoint>& kept = known[p].rings;
+        known[p].bounds.reserve(known[p].bounds.size() + added);
+        if (with_rings) kept.reserve(kept.size() + slots);
+        for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i) {
+            if (!fresh[i]) continue;
+            const Subpatch& sp = subpatches[i];
+            KnownBound& k = known[p].bounds[subpatch_key(sp.patch, sp.rect)];
+            k.ring_first = static_cast<int>(kept.size());
+            if (with_rings) fan_ring(rings, positions, i, kept);
+            k.ring_size = static_cast<int>(kept.size()) - k.ring_first;
+            k.rect = sp.rect;
+            k.centre = positions[rings.centre[i]];
+            k.bound = sp.error_bound;
+        }
     });
 }
 
