@@ -135,6 +135,9 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     }
     EdgeRegistry reg =
         build_edge_registry(match, out.subpatches, options.threads, previous_registry);
+    // The previous pass's registry is copied from by now: freed, so that the
+    // rings and the numbering refill its pages.
+    memo.registry = EdgeRegistry();
     // (c') The rest of the boundaries by geometry: one edge graph of the model.
     const EdgeGraph graph =
         options.crack_free ? build_edge_graph(patches, match, reg, st.seam_tolerance) : EdgeGraph{};
