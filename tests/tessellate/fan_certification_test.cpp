@@ -16,7 +16,7 @@
 
 using namespace seamless;
 
-TEST_CASE("bounds kept with their rings are found again; kept without, computed again the same",
+TEST_CASE("bounds kept with their rings are found again, kept without computed again the same",
           "[fan_certification]") {
     const test::TeapotPass in;
     const auto& patches = in.patches;
