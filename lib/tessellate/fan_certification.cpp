@@ -4,6 +4,7 @@
 #include <seamless/tessellate/fan_certification.h>
 
 #include <algorithm>
+#include <numeric>
 #include <span>
 
 namespace seamless {
@@ -28,11 +29,11 @@ void fan_ring(const SubpatchRings& rings, const std::vector<Vec3>& positions, in
 
 } // namespace
 
-void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
-                  const std::vector<Vec3>& positions, const std::vector<int>& leaf_start,
-                  double scale, double tolerance, int threads, bool keep,
-                  const std::vector<char>* same, std::vector<KnownBounds>& known,
-                  std::vector<Subpatch>& subpatches) {
+std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
+                               const std::vector<Vec3>& positions, double scale, double tolerance,
+                               int threads, const std::vector<char>* same,
+                               const std::vector<KnownBounds>& known,
+                               std::vector<Subpatch>& subpatches) {
     const int count = static_cast<int>(subpatches.size());
     std::vector<char> fresh(count, 0);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
@@ -61,22 +62,39 @@ void certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& 
             }
         }
     });
-    // The fresh bounds kept for the next pass: each patch's map on its own.
-    const int np = static_cast<int>(patches.size());
-    parallel_chunks(keep ? np : 0, threads, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p)
-            for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i) {
-                if (!fresh[i]) continue;
-                const Subpatch& sp = subpatches[i];
-                std::vector<RingPoint>& kept = known[p].rings;
-                KnownBound& k = known[p].bounds[subpatch_key(sp.patch, sp.rect)];
-                k.ring_first = static_cast<int>(kept.size());
-                fan_ring(rings, positions, i, kept);
-                k.ring_size = static_cast<int>(kept.size()) - k.ring_first;
-                k.rect = sp.rect;
-                k.centre = positions[rings.centre[i]];
-                k.bound = sp.error_bound;
-            }
+    return fresh;
+}
+
+void keep_fan_bounds(const SubpatchRings& rings, const std::vector<Vec3>& positions,
+                     const std::vector<int>& leaf_start, int threads,
+                     const std::vector<char>& fresh, const std::vector<char>* compared,
+                     const std::vector<Subpatch>& subpatches, std::vector<KnownBounds>& known) {
+    const int np = static_cast<int>(leaf_start.size()) - 1;
+    // Patches differ in subpatches by ten times and more (teapot): largest
+    // first. Each patch's table and rings sized once for what it adds.
+    std::vector<int> order(np);
+    std::iota(order.begin(), order.end(), 0);
+    const auto size = [&](int p) { return leaf_start[p + 1] - leaf_start[p]; };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size(a) > size(b); });
+    pull_blocks(np, 1, threads, &order, [&](int p, int) {
+        const bool with_rings = !compared || (*compared)[p];
+        std::size_t added = 0, slots = 0;
+        for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i)
+            if (fresh[i]) ++added, slots += rings.start[i + 1] - rings.start[i];
+        std::vector<RingPoint>& kept = known[p].rings;
+        known[p].bounds.reserve(known[p].bounds.size() + added);
+        if (with_rings) kept.reserve(kept.size() + slots);
+        for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i) {
+            if (!fresh[i]) continue;
+            const Subpatch& sp = subpatches[i];
+            KnownBound& k = known[p].bounds[subpatch_key(sp.patch, sp.rect)];
+            k.ring_first = static_cast<int>(kept.size());
+            if (with_rings) fan_ring(rings, positions, i, kept);
+            k.ring_size = static_cast<int>(kept.size()) - k.ring_first;
+            k.rect = sp.rect;
+            k.centre = positions[rings.centre[i]];
+            k.bound = sp.error_bound;
+        }
     });
 }
 

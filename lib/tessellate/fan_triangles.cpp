@@ -4,6 +4,7 @@
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/fan_triangles.h>
 #include <seamless/tessellate/patch_tree.h>
+#include <seamless/tessellate/touched_storage.h>
 
 #include <algorithm>
 #include <array>
@@ -19,6 +20,7 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
     FanNormals normals;
     reserve_huge(normals.ring, rings.vertices.size(), threads);
     normals.ring.resize(rings.vertices.size());
+    reserve_touched(normals.centre, count, threads);
     normals.centre.resize(count);
     // A vertex is on the rings of up to four subpatches of a patch: its normal
     // there, where regular (regular_unit_normal), is computed at its first

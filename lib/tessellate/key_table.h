@@ -42,6 +42,12 @@ template <class Value> class KeyTable {
         }
     }
     std::size_t size() const { return count_; }
+    // Room for n keys in all: no doubling (and no rehashing) up to them.
+    void reserve(std::size_t n) {
+        std::size_t size = slots_.empty() ? 64 : slots_.size();
+        while (size < 2 * n) size *= 2;
+        if (size > slots_.size()) rehash(size);
+    }
 
   private:
     struct Slot {
@@ -49,8 +55,9 @@ template <class Value> class KeyTable {
         Value value{};
         bool used = false;
     };
-    void grow() {
-        std::vector<Slot> old(slots_.empty() ? 64 : 2 * slots_.size());
+    void grow() { rehash(slots_.empty() ? 64 : 2 * slots_.size()); }
+    void rehash(std::size_t size) {
+        std::vector<Slot> old(size);
         old.swap(slots_);
         mask_ = slots_.size() - 1;
         count_ = 0;

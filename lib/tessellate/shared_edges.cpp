@@ -6,6 +6,7 @@
 #include <seamless/tessellate/exact_point.h>
 #include <seamless/tessellate/first_met.h>
 #include <seamless/tessellate/shared_edges.h>
+#include <seamless/tessellate/touched_storage.h>
 
 #include <algorithm>
 #include <cassert>
@@ -355,6 +356,7 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
         seg_base[p + 1] = seg_base[p] + sum;
     }
     reg.offsets[lines] = seg_base[np];
+    reserve_touched(reg.segments, seg_base[np], threads);
     reg.segments.resize(seg_base[np]);
     reg.interior_keys.resize(lines - B);
     reg.interior_lines.resize(lines - B);

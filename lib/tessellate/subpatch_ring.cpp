@@ -3,6 +3,7 @@
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/exact_point.h>
 #include <seamless/tessellate/subpatch_ring.h>
+#include <seamless/tessellate/touched_storage.h>
 
 #include <algorithm>
 #include <span>
@@ -61,8 +62,10 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
     const int count = static_cast<int>(subpatches.size());
     std::vector<std::vector<RingVertex>> block_rings((count + kSubpatchBlock - 1) / kSubpatchBlock);
     SubpatchRings out;
+    reserve_touched(out.centre_point, count, threads);
     out.centre_point.resize(count);
-    out.start.assign(count + 1, 0);
+    assign_touched(out.start, count + 1, 0, threads);
+    reserve_touched(out.centre, count, threads);
     out.centre.resize(count);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         std::vector<int> scratch;

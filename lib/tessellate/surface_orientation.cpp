@@ -2,6 +2,7 @@
 #include <seamless/base/huge_pages.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/surface_orientation.h>
+#include <seamless/tessellate/touched_storage.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -92,6 +93,7 @@ EdgeUses edge_uses(const TriangleMesh& mesh, int threads, std::vector<double>& v
     };
     // at[b][v]: block b's uses in bucket v, then where they start.
     std::vector<std::vector<int>> at(kUseBlocks);
+    reserve_touched(volume6, nt, threads);
     volume6.resize(nt);
     parallel_chunks(kUseBlocks, threads, [&](int begin, int end) {
         for (int b = begin; b < end; ++b) {
@@ -106,7 +108,7 @@ EdgeUses edge_uses(const TriangleMesh& mesh, int threads, std::vector<double>& v
             }
         }
     });
-    e.start.assign(nv + 1, 0);
+    assign_touched(e.start, nv + 1, 0, threads);
     parallel_chunks(nv, threads, [&](int begin, int end) {
         for (int v = begin; v < end; ++v)
             for (int b = 0; b < kUseBlocks; ++b) e.start[v + 1] += at[b][v];

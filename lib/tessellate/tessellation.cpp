@@ -59,19 +59,6 @@ void add(PhaseSeconds& sum, const PhaseSeconds& p) {
     sum.orientation += p.orientation;
 }
 
-// The memo's per-patch tables and trees: freed patch by patch in parallel
-// rather than on the calling thread when the memo goes.
-void release(PassMemo& memo, int threads) {
-    const int np = static_cast<int>(memo.parts.size());
-    parallel_chunks(np, threads, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p) {
-            memo.verdicts[p] = FanMemo();
-            memo.bounds[p] = KnownBounds();
-            memo.parts[p] = Part();
-        }
-    });
-}
-
 // With a tolerance: a subpatch accepted by its four-triangle bound can end
 // above the tolerance once neighbours add vertices to its sides (its final
 // fan and phi differ from the four triangles'); such subpatches are split in
@@ -93,14 +80,13 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
         if (last || t.stats.above_tolerance == 0) break;
         std::fill(memo.changed.begin(), memo.changed.end(), 0);
         for (const Subpatch& sp : t.subpatches)
-            if (sp.error_bound > t.stats.tolerance && sp.depth < options.max_depth) {
+            if (splits_again(sp, t.stats.tolerance, options.max_depth)) {
                 split.insert(subpatch_key(sp.patch, sp.rect));
                 memo.changed[sp.patch] = 1;
             }
         memo.spare_nodes = std::move(t.trees.nodes);
         memo.spare_subpatches = std::move(t.subpatches);
     }
-    release(memo, options.threads);
     // More than four triangles to a fan can pass the subdivision's count.
     if (t.stats.triangles > options.max_triangles) refuse_triangle_budget(model, options);
     t.stats.passes = pass + 1;

@@ -25,6 +25,12 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
                              const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
                              bool last, double hull_scale = 1);
 
+// Whether the pass after this one splits `sp` (its final fan's bound is above
+// the tolerance, when there is one).
+inline bool splits_again(const Subpatch& sp, double tolerance, int max_depth) {
+    return tolerance > 0 && sp.error_bound > tolerance && sp.depth < max_depth;
+}
+
 // Refuses a tessellation past TessellationOptions::max_triangles: throws
 // TriangleBudgetError (tessellation.h).
 [[noreturn]] void refuse_triangle_budget(const Model& model, const TessellationOptions& options);

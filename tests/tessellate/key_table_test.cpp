@@ -37,3 +37,27 @@ TEST_CASE("KeyTable stores and finds as unordered_map does", "[key_table]") {
         CHECK((table.find(k) == nullptr) == (reference.count(k) == 0));
     }
 }
+
+TEST_CASE("KeyTable::reserve keeps every key and value, before and between insertions",
+          "[key_table]") {
+    KeyTable<int> table;
+    table.reserve(1000);
+    std::unordered_map<std::uint64_t, int> reference;
+    std::mt19937_64 rng(5);
+    for (int round = 0; round < 3; ++round) {
+        for (int i = 0; i < 700; ++i) {
+            const std::uint64_t k = rng() << (round * 8);
+            table[k] = i + round;
+            reference[k] = i + round;
+        }
+        // Room for more than is stored (a rehash), and for less (nothing).
+        table.reserve(table.size() + 5000);
+        table.reserve(1);
+        CHECK(table.size() == reference.size());
+        for (const auto& [k, v] : reference) {
+            const int* found = table.find(k);
+            REQUIRE(found != nullptr);
+            CHECK(*found == v);
+        }
+    }
+}
