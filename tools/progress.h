@@ -19,7 +19,7 @@ class ProgressBar {
         if (!enabled_) return;
         std::lock_guard<std::mutex> lock(mutex_);
         const int percent = static_cast<int>(fraction * 100.0 + 0.5);
-        if (percent == last_) return;
+        if (percent <= last_) return; // workers may report out of order: never backwards
         last_ = percent;
         const int filled = percent * kWidth / 100;
         std::string bar(static_cast<size_t>(filled), '#');

@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "model_options.h"
 #include "number_options.h"
+#include "progress.h"
 #include <seamless/base/error.h>
 
 #include <seamless/base/atomic_file.h>
@@ -98,6 +99,8 @@ void add_tessellate(CLI::App& app, Action& action) {
             opt.threads = args->threads;
             opt.angle = args->angle * 3.14159265358979323846 / 180;
             opt.patch_trees = false; // the renderer's, not written
+            ProgressBar bar("tessellate");
+            opt.progress = [&bar](double f) { bar.update(f); };
             const Tessellation t = [&] {
                 try {
                     return tessellate(m, opt);
@@ -108,6 +111,7 @@ void add_tessellate(CLI::App& app, Action& action) {
                                          "tolerance needs fewer");
                 }
             }();
+            bar.finish();
             write_mesh(files.staging(0), t.mesh);
             const TessellationStats& s = t.stats;
             std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches

@@ -2,8 +2,10 @@
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
 #include <seamless/tessellate/fan_certification.h>
+#include <seamless/tessellate/pass_progress.h>
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <span>
 
@@ -33,9 +35,10 @@ std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const Su
                                const std::vector<Vec3>& positions, double scale, double tolerance,
                                int threads, const std::vector<char>* same,
                                const std::vector<KnownBounds>& known,
-                               std::vector<Subpatch>& subpatches) {
+                               std::vector<Subpatch>& subpatches, const PassProgress* progress) {
     const int count = static_cast<int>(subpatches.size());
     std::vector<char> fresh(count, 0);
+    std::atomic<int> done{0};
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         std::vector<RingPoint> fan;
         for (int i = begin; i < end; ++i) {
@@ -61,6 +64,9 @@ std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const Su
                 fresh[i] = 1;
             }
         }
+        if (progress && *progress)
+            progress->within(PassProgress::kNumbered, PassProgress::kBounded,
+                             done.fetch_add(end - begin) + (end - begin), count);
     });
     return fresh;
 }

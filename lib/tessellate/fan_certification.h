@@ -15,6 +15,8 @@
 
 namespace seamless {
 
+class PassProgress;
+
 // A certified fan bound (error_bound.h) of an earlier pass, with the ring it
 // was computed for (ring_size points from ring_first in KnownBounds::rings):
 // the bound is a function of the subpatch and its ring.
@@ -42,7 +44,8 @@ std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const Su
                                const std::vector<Vec3>& positions, double scale, double tolerance,
                                int threads, const std::vector<char>* same,
                                const std::vector<KnownBounds>& known,
-                               std::vector<Subpatch>& subpatches);
+                               std::vector<Subpatch>& subpatches,
+                               const PassProgress* progress = nullptr);
 
 // The `fresh` bounds added to `known` for the next pass, each patch's map on
 // its own, in parallel (`leaf_start`: where each patch's subpatches start, one

@@ -2,9 +2,11 @@
 #include <seamless/base/huge_pages.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/pass_progress.h>
 #include <seamless/tessellate/patch_subdivision.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace seamless {
@@ -28,7 +30,7 @@ double patch_cost(const BezierPatch& b, double D) {
 PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
                               const SubdivisionOptions& sub, double D, int threads, PassMemo& memo,
                               PatchTrees* trees, std::vector<Subpatch>& subpatches,
-                              std::int64_t max_leaves) {
+                              std::int64_t max_leaves, const PassProgress* progress) {
     std::vector<Part>& parts = memo.parts;
     const int np = static_cast<int>(patches.size());
     std::int64_t kept = 0;
@@ -40,6 +42,11 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
     std::vector<int> order(np);
     for (int i = 0; i < np; ++i) cost[i] = patch_cost(patches[i], D), order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+    // Progress by the patches' costs done of the cost of those split again.
+    double total = 0;
+    for (int i = 0; i < np; ++i)
+        if (memo.changed[i]) total += cost[i];
+    std::atomic<double> done{0};
     pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             if (!memo.changed[i]) continue;
@@ -54,6 +61,9 @@ PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
             part.trees.depth = 0;
             part.subpatches.clear();
             part.root = subdivide(patches[i], i, o, part.trees, part.subpatches);
+            if (progress && *progress)
+                progress->within(0, PassProgress::kSubdivided, done.fetch_add(cost[i]) + cost[i],
+                                 total);
         }
     });
     if (leaves_left.load() < 0) return PatchRanges{{}, {}, true};

@@ -14,6 +14,8 @@
 
 namespace seamless {
 
+class PassProgress;
+
 // Expected relative cost of subdividing `b` to deviation D, for the order of
 // the work only: a subpatch of size h deviates about h^2 |second difference|,
 // so about sqrt(M/D) splits per direction.
@@ -37,6 +39,6 @@ struct PatchRanges {
 PatchRanges subdivide_patches(const std::vector<BezierPatch>& patches,
                               const SubdivisionOptions& sub, double D, int threads, PassMemo& memo,
                               PatchTrees* trees, std::vector<Subpatch>& subpatches,
-                              std::int64_t max_leaves);
+                              std::int64_t max_leaves, const PassProgress* progress = nullptr);
 
 } // namespace seamless

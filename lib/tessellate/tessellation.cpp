@@ -75,7 +75,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     int pass = 0;
     for (;; ++pass) {
         const bool last = options.tolerance <= 0 || pass == kPasses - 1;
-        t = tessellate_pass(model, patches, options, split, memo, last, hull_scale);
+        t = tessellate_pass(model, patches, options, split, memo, last, hull_scale, pass);
         add(phases, t.stats.phases);
         if (last || t.stats.above_tolerance == 0) break;
         std::fill(memo.changed.begin(), memo.changed.end(), 0);
@@ -90,6 +90,7 @@ Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<Bezi
     // More than four triangles to a fan can pass the subdivision's count.
     if (t.stats.triangles > options.max_triangles) refuse_triangle_budget(model, options);
     t.stats.passes = pass + 1;
+    if (options.progress) options.progress(1.0);
     t.stats.phases = phases;
     t.stats.seconds = seconds_since(start);
     return t;

@@ -16,6 +16,7 @@
 #include <seamless/tessellate/triangle_mesh.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +54,9 @@ struct TessellationOptions {
     // MB). Counted during the subdivision as four triangles per subpatch (a
     // fan has at least four), and checked again on the final mesh.
     std::int64_t max_triangles = 10'000'000;
+    // Called with the fraction done (0..1), from any thread, a few hundred
+    // times at most per pass (pass_progress.h); empty: nothing is reported.
+    std::function<void(double)> progress;
     // false: the naive rule (every vertex the exact surface point, four
     // triangles per subpatch whatever the neighbours did), which leaves cracks;
     // kept so tests can show the difference.

@@ -4,6 +4,7 @@
 #include <seamless/tessellate/edge_graph.h>
 #include <seamless/tessellate/fan_certification.h>
 #include <seamless/tessellate/fan_triangles.h>
+#include <seamless/tessellate/pass_progress.h>
 #include <seamless/tessellate/patch_subdivision.h>
 #include <seamless/tessellate/phase_clock.h>
 #include <seamless/tessellate/shared_edges.h>
@@ -74,7 +75,8 @@ void refuse_triangle_budget(const Model& model, const TessellationOptions& optio
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
                              const TessellationOptions& options,
                              const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
-                             bool last, double hull_scale) {
+                             bool last, double hull_scale, int pass) {
+    const PassProgress progress(options.progress, pass);
     const auto start = std::chrono::steady_clock::now();
     Lap lap;
     Tessellation out;
@@ -106,9 +108,10 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     const double D = st.tolerance > 0 ? st.tolerance : st.eps1 > 0 ? st.eps1 : 1e-3 * st.d_max;
     const PatchRanges ranges = subdivide_patches(
         patches, sub, D, options.threads, memo, options.patch_trees ? &out.trees : nullptr,
-        out.subpatches, std::max<std::int64_t>(options.max_triangles, 0) / 4);
+        out.subpatches, std::max<std::int64_t>(options.max_triangles, 0) / 4, &progress);
     if (ranges.over_budget) refuse_triangle_budget(model, options);
     phase.subdivision += lap();
+    progress.at(PassProgress::kSubdivided);
 
     // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
     // Shared boundaries agree to the seam tolerance, and at least to the
@@ -157,6 +160,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     // over every vertex on their sides, by index, so no crack opens.
     vr.straight_segments = st.tolerance <= 0;
     phase.boundaries += lap();
+    progress.at(PassProgress::kBoundaries);
 
     // (d) Fans: each planar subpatch from its centre over its ring.
     TriangleMesh& mesh = out.mesh;
@@ -175,17 +179,19 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     SubpatchRings rings = collect_rings(patches, out.subpatches, reg, graph, options.crack_free,
                                         options.threads, previous);
     phase.rings += lap();
+    progress.at(PassProgress::kRings);
     // (d1) Their vertices, numbered as first met in subpatch order (each ring,
     // then its centre).
     number_vertices(out.subpatches, ranges.leaf_start, graph, options.threads, vr, rings, previous);
     phase.numbering += lap();
+    progress.at(PassProgress::kNumbered);
 
     // (d2) Each subpatch's certified bound on its own, in parallel.
     const bool certify = options.certify || st.tolerance > 0;
     if (certify) {
         const std::vector<char> fresh =
             certify_fans(patches, rings, vr.positions, scale, st.tolerance, options.threads,
-                         previous.same, memo.bounds, out.subpatches);
+                         previous.same, memo.bounds, out.subpatches, &progress);
         std::vector<char> next_changed(np, 0);
         for (const Subpatch& sp : out.subpatches) {
             if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
@@ -210,6 +216,7 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
         st.max_error_bound = std::numeric_limits<double>::quiet_NaN();
     }
     phase.bounds += lap();
+    progress.at(PassProgress::kBounded);
     // Another pass will follow: the mesh of this one is not needed.
     if (!last && st.above_tolerance > 0) {
         if (memo.keep) {
@@ -232,16 +239,19 @@ Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>&
     const FanNormals normals =
         fan_normals(patches, out.subpatches, ranges.leaf_start, rings, options.threads);
     phase.normals += lap();
+    progress.at(PassProgress::kNormals);
 
     // (d4) Fan triangles in subpatch order, their patch-tree leaves and hulls.
     write_fans(patches, rings, normals, options.patch_trees ? &ranges.node_start : nullptr,
                std::move(vr.positions), hull_scale, options.threads, out);
     phase.fans += lap();
+    progress.at(PassProgress::kFans);
 
     // At unit scale: the signed volume of a closed component stays finite.
     if (options.orient_surfaces)
         st.flipped_surfaces = orient_surfaces(mesh, options.threads).flipped_surfaces;
     phase.orientation += lap();
+    progress.at(1.0);
 
     st.subpatches = static_cast<int>(out.subpatches.size());
     st.triangles = mesh.triangle_count();

@@ -20,10 +20,11 @@ namespace seamless {
 // Without `last`, a pass that leaves subpatches above the tolerance returns
 // before building the mesh (another pass follows). The patch trees' hulls
 // come out multiplied by `hull_scale` (write_fans), the rest at the model's scale.
+// `pass` (0 first) places its part of TessellationOptions::progress.
 Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
                              const TessellationOptions& options,
                              const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
-                             bool last, double hull_scale = 1);
+                             bool last, double hull_scale = 1, int pass = 0);
 
 // Whether the pass after this one splits `sp` (its final fan's bound is above
 // the tolerance, when there is one).
