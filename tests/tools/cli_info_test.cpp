@@ -35,12 +35,15 @@ TEST_CASE("seamless info reports the teapot's 32 Bezier patches and d_max", "[cl
 
 TEST_CASE("seamless info on bad input: one line naming file and field, exit 2", "[cli]") {
     auto dir = test::scratch_dir("cli-info");
-    test::write_file(dir / "bad.json", R"({"version": 1, "surfaces": [{"degree": [3, 3], "size": [4, 4],
+    test::write_file(dir / "bad.json",
+                     R"({"version": 1, "surfaces": [{"degree": [3, 3], "size": [4, 4],
       "knots_u": [0,0,0,0,1,1,1,1], "knots_v": [0,0,0,0,1,1,1],
       "control_points": []}]})");
     auto r = test::run_cli("info \"" + (dir / "bad.json").string() + "\"");
     CHECK(r.status == 2);
-    CHECK_THAT(r.err, Catch::StartsWith("error: ") && Catch::Contains("bad.json: surfaces[0].knots_v: expected 8 numbers, got 7"));
+    CHECK_THAT(r.err,
+               Catch::StartsWith("error: ") &&
+                   Catch::Contains("bad.json: surfaces[0].knots_v: expected 8 numbers, got 7"));
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     auto missing = test::run_cli("info \"" + (dir / "missing.json").string() + "\"");
     CHECK(missing.status == 2);
