@@ -28,7 +28,11 @@ bool write_png_rows(std::FILE* f, int width, int height, png_bytepp rows) {
         png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, png_failed, png_warned);
     if (!png) return false;
     png_infop info = png_create_info_struct(png);
-    if (!info || setjmp(png_jmpbuf(png))) {
+    if (!info) {
+        png_destroy_write_struct(&png, nullptr);
+        return false;
+    }
+    if (setjmp(png_jmpbuf(png))) { // the whole condition, as C requires of setjmp
         png_destroy_write_struct(&png, &info);
         return false;
     }
