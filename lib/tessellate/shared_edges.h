@@ -12,6 +12,9 @@
 //
 // Patch edges: 0 = v0 (t = 0), 1 = u1 (s = 1), 2 = v1 (t = 1), 3 = u0 (s = 0),
 // each parametrised by increasing s or t; corners as BezierPatch::corner.
+//
+// Implemented by concept: boundary_match.cpp (BoundaryMatch), edge_registry.cpp
+// (EdgeRegistry, over edge_lines.h), vertex_registry.cpp (VertexRegistry).
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>

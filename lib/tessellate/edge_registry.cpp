@@ -1,41 +1,19 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/base/disjoint_sets.h>
+// The edge registry (shared_edges.h): every subpatch side on its line, the
+// lines' segments sorted, built per patch in parallel.
 #include <seamless/base/huge_pages.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
-#include <seamless/tessellate/exact_point.h>
+#include <seamless/tessellate/edge_lines.h>
 #include <seamless/tessellate/first_met.h>
-#include <seamless/tessellate/shared_edges.h>
 #include <seamless/tessellate/touched_storage.h>
 
 #include <algorithm>
 #include <cassert>
 #include <numeric>
+#include <vector>
 
 namespace seamless {
-namespace {
-
-constexpr int kEdgeCorners[4][2] = {{0, 1}, {1, 2}, {3, 2}, {0, 3}};
-
-// Largest deviation between two edges' control polygons (points and weights),
-// forwards or with the second reversed; infinity when the orders differ.
-double polygon_deviation(const BezierPatch& A, int ea, const BezierPatch& B, int eb, bool reverse) {
-    const int n = edge_order(A, ea);
-    if (edge_order(B, eb) != n) return std::numeric_limits<double>::infinity();
-    double dev = 0;
-    for (int k = 0; k <= n; ++k) {
-        const HPoint a = edge_control(A, ea, k), b = edge_control(B, eb, reverse ? n - k : k);
-        dev = std::max({dev, distance(a.point(), b.point()), std::abs(a.w - b.w)});
-    }
-    return dev;
-}
-
-constexpr std::uint64_t line_key(int patch, int dir, int c) {
-    return (static_cast<std::uint64_t>(patch) << 32) | (static_cast<std::uint64_t>(dir) << 31) |
-           static_cast<std::uint64_t>(c);
-}
-
-constexpr std::uint64_t kNoKey = ~std::uint64_t{0};
 
 // Side k of rect on its line. A side inside the patch gets its line's key in
 // `key` (its line is left to the caller); a side on a patch edge, kNoKey.
@@ -105,115 +83,6 @@ int find_interior_line(const EdgeRegistry& reg, std::uint64_t key) {
     auto it = std::lower_bound(reg.interior_keys.begin(), reg.interior_keys.end(), key);
     if (it == reg.interior_keys.end() || *it != key) return -1;
     return reg.interior_lines[it - reg.interior_keys.begin()];
-}
-
-} // namespace
-
-int edge_order(const BezierPatch& b, int e) {
-    return (e == 0 || e == 2) ? b.p : b.q;
-}
-
-HPoint edge_control(const BezierPatch& b, int e, int k) {
-    switch (e) {
-    case 0:
-        return b.at(k, 0);
-    case 1:
-        return b.at(b.p, k);
-    case 2:
-        return b.at(k, b.q);
-    default:
-        return b.at(0, k);
-    }
-}
-
-void edge_grid_point(int e, int x, int& s, int& t) {
-    switch (e) {
-    case 0:
-        s = x, t = 0;
-        break;
-    case 1:
-        s = kParamOne, t = x;
-        break;
-    case 2:
-        s = x, t = kParamOne;
-        break;
-    default:
-        s = 0, t = x;
-        break;
-    }
-}
-
-BoundaryMatch match_boundaries(const std::vector<BezierPatch>& patches, double tol) {
-    const int np = static_cast<int>(patches.size());
-    BoundaryMatch m;
-    m.edge_group.assign(4 * np, -1);
-    m.edge_reversed.assign(4 * np, 0);
-    m.collapsed.assign(4 * np, 0);
-
-    // Collapsed edges (poles) and the sweep keys of the others.
-    std::vector<int> order;
-    std::vector<double> key(4 * np, 0);
-    for (int pe = 0; pe < 4 * np; ++pe) {
-        const BezierPatch& b = patches[pe / 4];
-        const int e = pe % 4, n = edge_order(b, e);
-        const Vec3 first = edge_control(b, e, 0).point();
-        bool collapsed = true;
-        for (int k = 1; k <= n && collapsed; ++k)
-            collapsed = distance(edge_control(b, e, k).point(), first) <= tol;
-        m.collapsed[pe] = collapsed;
-        if (collapsed) {
-            ++m.collapsed_edges;
-            continue;
-        }
-        key[pe] = std::min(first.x, edge_control(b, e, n).point().x);
-        order.push_back(pe);
-    }
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
-    DisjointSets edges(4 * static_cast<size_t>(np));
-    for (size_t i = 0; i < order.size(); ++i)
-        for (size_t j = i + 1; j < order.size() && key[order[j]] - key[order[i]] <= tol; ++j) {
-            const int a = order[i], b = order[j];
-            const BezierPatch &A = patches[a / 4], &B = patches[b / 4];
-            if (polygon_deviation(A, a % 4, B, b % 4, false) <= tol ||
-                polygon_deviation(A, a % 4, B, b % 4, true) <= tol)
-                edges.unite(a, b);
-        }
-    std::vector<int> group_of_root(4 * np, -1);
-    for (int pe = 0; pe < 4 * np; ++pe) {
-        if (m.collapsed[pe]) continue;
-        const int root = edges.find(pe);
-        if (group_of_root[root] < 0) {
-            group_of_root[root] = static_cast<int>(m.group_ref.size());
-            m.group_ref.push_back(pe); // the smallest member: the reference
-            m.group_size.push_back(0);
-        }
-        const int g = group_of_root[root];
-        m.edge_group[pe] = g;
-        ++m.group_size[g];
-        const int ref = m.group_ref[g];
-        if (ref != pe) {
-            const BezierPatch &A = patches[ref / 4], &B = patches[pe / 4];
-            m.edge_reversed[pe] = polygon_deviation(A, ref % 4, B, pe % 4, true) <
-                                  polygon_deviation(A, ref % 4, B, pe % 4, false);
-        }
-    }
-    for (int n : m.group_size)
-        if (n >= 2) ++m.shared_edges;
-
-    // Weld corners by position (sweep in x).
-    std::vector<Vec3> corners(4 * np);
-    for (int c = 0; c < 4 * np; ++c) corners[c] = patches[c / 4].corner(c % 4);
-    std::vector<int> by_x(4 * np);
-    std::iota(by_x.begin(), by_x.end(), 0);
-    std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return corners[a].x < corners[b].x; });
-    DisjointSets welded(4 * static_cast<size_t>(np));
-    for (size_t i = 0; i < by_x.size(); ++i)
-        for (size_t j = i + 1; j < by_x.size() && corners[by_x[j]].x - corners[by_x[i]].x <= tol;
-             ++j)
-            if (distance(corners[by_x[i]], corners[by_x[j]]) <= tol) welded.unite(by_x[i], by_x[j]);
-    m.corner_root.resize(4 * np);
-    for (int c = 0; c < 4 * np; ++c) m.corner_root[c] = welded.find(c);
-    return m;
 }
 
 SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int patch,
@@ -449,118 +318,6 @@ void points_inside(const EdgeRegistry& reg, const SideOnLine& side, std::vector<
     }
     std::sort(out.begin() + first, out.end());
     out.erase(std::unique(out.begin() + first, out.end()), out.end());
-}
-
-VertexKey vertex_key(const BoundaryMatch& m, int patch, int s, int t) {
-    const int N = kParamOne;
-    int corner = -1;
-    if (s == 0 && t == 0)
-        corner = 0;
-    else if (s == N && t == 0)
-        corner = 1;
-    else if (s == N && t == N)
-        corner = 2;
-    else if (s == 0 && t == N)
-        corner = 3;
-    if (corner >= 0) return {0, m.corner_root[4 * patch + corner], 0, 0};
-    int e = -1, x = 0;
-    if (t == 0)
-        e = 0, x = s;
-    else if (s == N)
-        e = 1, x = t;
-    else if (t == N)
-        e = 2, x = s;
-    else if (s == 0)
-        e = 3, x = t;
-    if (e < 0) return {2, patch, s, t};
-    const int pe = 4 * patch + e;
-    if (m.collapsed[pe]) return {0, m.corner_root[4 * patch + kEdgeCorners[e][0]], 0, 0};
-    return {1, m.edge_group[pe], m.edge_reversed[pe] ? N - x : x, 0};
-}
-
-Vec3 exact_position(const std::vector<BezierPatch>& patches, const BoundaryMatch& m,
-                    VertexKey key) {
-    if (key.kind == 0) return patches[key.id / 4].corner(key.id % 4);
-    if (key.kind == 1) {
-        // Also every seam vertex (edge_graph.h): its line has one side only.
-        const int ref = m.group_ref[key.id];
-        int gs = 0, gt = 0;
-        edge_grid_point(ref % 4, key.a, gs, gt);
-        return exact_point(patches[ref / 4], param_of(gs), param_of(gt));
-    }
-    return exact_point(patches[key.id], param_of(key.a), param_of(key.b));
-}
-
-VertexKey canonical_key(const VertexRegistry& vr, VertexKey key) {
-    if (vr.alias && !vr.alias->empty()) {
-        auto a = vr.alias->find(key);
-        if (a != vr.alias->end()) return a->second;
-    }
-    return key;
-}
-
-int vertex_at(VertexRegistry& vr, int patch, int s, int t) {
-    return vertex_of(vr, vertex_key(*vr.match, patch, s, t));
-}
-
-namespace {
-
-// Crack-free with straight segments: the point on the straight segment of
-// the subpatch side holding `key` strictly inside (Fig. 3, Q0 = (Q1 + Q2) / 2
-// recursively), placing the segment's ends first; false when no side holds it.
-bool straight_point(VertexRegistry& vr, VertexKey key, Vec3& p) {
-    if (!vr.crack_free || !vr.straight_segments) return false;
-    if (key.kind == 1) {
-        // A point of global edge g, on the reference patch's side.
-        const LineSegment* seg = containing(*vr.edges, key.id, key.a);
-        if (!seg) return false;
-        const int ref = vr.match->group_ref[key.id];
-        int gs = 0, gt = 0;
-        edge_grid_point(ref % 4, seg->a, gs, gt);
-        const int ia = vertex_at(vr, ref / 4, gs, gt);
-        edge_grid_point(ref % 4, seg->b, gs, gt);
-        const int ib = vertex_at(vr, ref / 4, gs, gt);
-        p = lerp(vr.positions[ia], vr.positions[ib],
-                 static_cast<double>(key.a - seg->a) / (seg->b - seg->a));
-        return true;
-    }
-    if (key.kind != 2) return false;
-    const int patch = key.id, s = key.a, t = key.b;
-    // At most one subpatch side holds a grid point strictly inside.
-    const LineSegment* seg = nullptr;
-    bool along_s = true;
-    const int h = find_interior_line(*vr.edges, line_key(patch, 0, t));
-    if (h >= 0) seg = containing(*vr.edges, h, s);
-    if (!seg) {
-        const int v = find_interior_line(*vr.edges, line_key(patch, 1, s));
-        if (v >= 0) seg = containing(*vr.edges, v, t), along_s = false;
-    }
-    if (!seg) return false;
-    const int ia = along_s ? vertex_at(vr, patch, seg->a, t) : vertex_at(vr, patch, s, seg->a);
-    const int ib = along_s ? vertex_at(vr, patch, seg->b, t) : vertex_at(vr, patch, s, seg->b);
-    const int x = along_s ? s : t;
-    p = lerp(vr.positions[ia], vr.positions[ib],
-             static_cast<double>(x - seg->a) / (seg->b - seg->a));
-    return true;
-}
-
-} // namespace
-
-int vertex_of(VertexRegistry& vr, VertexKey key) {
-    key = canonical_key(vr, key);
-    auto [it, fresh] = vr.index.try_emplace(key, static_cast<int>(vr.positions.size()));
-    const int id = it->second;
-    if (!fresh) {
-        assert(vr.placed[id] && "crack-free placement must not be cyclic");
-        return id;
-    }
-    vr.positions.emplace_back();
-    vr.placed.push_back(0);
-    Vec3 p;
-    if (!straight_point(vr, key, p)) p = exact_position(*vr.patches, *vr.match, key);
-    vr.positions[id] = p;
-    vr.placed[id] = 1;
-    return id;
 }
 
 } // namespace seamless
