@@ -68,15 +68,16 @@ void add_sweep(CLI::App& app, Action& action) {
             for (const std::string& path : args->models) {
                 const Model m = load_model(path);
                 text << std::filesystem::path(path).stem().string() << ":\n";
-                const std::vector<SweepRow> rows = sweep_tolerances(m, opt);
-                for (const SweepRow& r : rows) {
+                // Each row printed as soon as it is measured.
+                opt.on_row = [&](const SweepRow& r) {
                     text << "  f " << r.factor << ": " << r.tess.triangles << " triangles, "
                          << r.tess.seconds << " s, bound " << r.tess.max_error_bound
                          << ", measured " << r.deviation.max() << " (measured/bound "
                          << r.tightness() << ")" << (r.within_bound() ? "" : "  EXCEEDS THE BOUND")
-                         << "\n";
+                         << std::endl;
                     ok = ok && r.within_bound();
-                }
+                };
+                const std::vector<SweepRow> rows = sweep_tolerances(m, opt);
                 all.push_back({{"model", path},
                                {"d_max", d_max(m)},
                                {"rows", nlohmann::json::parse(sweep_json(rows))}});

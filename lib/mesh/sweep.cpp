@@ -41,6 +41,7 @@ std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& o
         row.tess = t.stats;
         row.deviation = measure_deviation(model, t, options.deviation);
         rows.push_back(row);
+        if (options.on_row) options.on_row(rows.back());
     }
     return rows;
 }

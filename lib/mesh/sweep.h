@@ -11,6 +11,7 @@
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ struct SweepOptions {
     // count; seconds are per this count).
     int threads = 0;
     DeviationOptions deviation;
+    // Called with each row as soon as it is measured (a sweep of a fine model
+    // runs for tens of seconds: the CLI prints its rows as they come).
+    std::function<void(const SweepRow&)> on_row;
 };
 
 std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& options = {});

@@ -116,8 +116,12 @@ TEST_CASE("a sweep scales both tolerances and stops at the triangle limit", "[de
     opt.decades = 6;
     opt.steps_per_decade = 1;
     opt.max_triangles = 20'000;
+    std::vector<double> seen; // SweepOptions::on_row: each row once, in order
+    opt.on_row = [&](const SweepRow& r) { seen.push_back(r.factor); };
     const std::vector<SweepRow> rows = sweep_tolerances(m, opt);
     REQUIRE(rows.size() >= 2);
+    REQUIRE(seen.size() == rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) CHECK(seen[i] == rows[i].factor);
     CHECK(rows.size() < 7);
     CHECK(rows[0].factor == Approx(10));
     CHECK(rows[1].factor == Approx(1));
