@@ -105,10 +105,9 @@ void add_tessellate(CLI::App& app, Action& action) {
                 try {
                     return tessellate(m, opt);
                 } catch (const TriangleBudgetError& e) { // name this command's flag
-                    throw InputError(e.file(), e.field(),
-                                     "needs more than " + std::to_string(e.limit()) +
-                                         " triangles, the --max-triangles limit; a larger "
-                                         "tolerance needs fewer");
+                    throw InputError(
+                        e.file(), e.field(),
+                        TriangleBudgetError::message_for(e.limit(), "--max-triangles"));
                 }
             }();
             bar.finish();

@@ -128,11 +128,14 @@ struct TessellationStats {
 class TriangleBudgetError : public InputError {
   public:
     TriangleBudgetError(std::string file, std::string field, std::int64_t limit)
-        : InputError(std::move(file), std::move(field),
-                     "needs more than " + std::to_string(limit) +
-                         " triangles, the max_triangles limit; a larger tolerance needs fewer"),
+        : InputError(std::move(file), std::move(field), message_for(limit, "max_triangles")),
           limit_(limit) {}
     std::int64_t limit() const { return limit_; }
+    // The message, with the limit called by `name` (a front end's own flag).
+    static std::string message_for(std::int64_t limit, const std::string& name) {
+        return "needs more than " + std::to_string(limit) + " triangles, the " + name +
+               " limit; a larger tolerance needs fewer";
+    }
 
   private:
     std::int64_t limit_;
