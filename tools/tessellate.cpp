@@ -10,6 +10,7 @@
 #include <seamless/base/atomic_file.h>
 #include <seamless/base/huge_pages.h>
 #include <seamless/base/output_files.h>
+#include <seamless/base/workers_warm_up.h>
 #include <seamless/mesh/mesh_io.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
@@ -87,7 +88,10 @@ void add_tessellate(CLI::App& app, Action& action) {
             if (!args->stats.empty()) outs.push_back(args->stats);
             OutputFiles files(outs, {args->model});
             keep_freed_memory(); // the passes reuse each other's pages (huge_pages.h)
-            const Model m = load_model(args->model, args->load);
+            const Model m = [&] {
+                const WorkersWarmUp warm_up(args->threads); // while the model is read
+                return load_model(args->model, args->load);
+            }();
             print_warnings(m);
             TessellationOptions opt;
             opt.eps1 = args->eps1;

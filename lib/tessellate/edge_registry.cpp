@@ -4,11 +4,13 @@
 #include <seamless/base/huge_pages.h>
 #include <seamless/base/parallel.h>
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/cache_line.h>
 #include <seamless/tessellate/edge_lines.h>
 #include <seamless/tessellate/first_met.h>
 #include <seamless/tessellate/touched_storage.h>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <numeric>
 #include <vector>
@@ -96,14 +98,23 @@ SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int pat
 
 namespace {
 
+// Patch p's part of build_edge_registry's step (1), on a cache line of its
+// own (the workers fill the patches' side by side, cache_line.h).
+struct PatchLines {
+    std::vector<std::uint64_t> keys; // its interior lines' keys, as first met
+    std::vector<int> count;          // sides per interior line
+    std::array<int, 4> edge_count{}; // sides per patch edge
+};
+
 // Patch p's part of build_edge_registry's step (1) from the previous registry
 // `old` (its subpatches from o on there): its interior lines' keys in their
 // order there, the sides on each, its sides (interior lines local) and the
 // sides on its patch edges. Returns its first interior line there.
 int reuse_patch(const EdgeRegistry& old, const std::vector<Subpatch>& subpatches,
                 const std::vector<int>& by_patch, const std::vector<int>& first, int p, int o,
-                std::vector<std::uint64_t>& keys, std::vector<int>& count,
-                std::vector<int>& edge_count, std::vector<SideOnLine>& sides) {
+                PatchLines& lines, std::vector<SideOnLine>& sides) {
+    std::vector<std::uint64_t>& keys = lines.keys;
+    std::vector<int>& count = lines.count;
     // Its lines: the keys with patch p, numbered l0, l0 + 1, ... there.
     const auto r0 =
         std::lower_bound(old.interior_keys.begin(), old.interior_keys.end(), line_key(p, 0, 0)) -
@@ -124,7 +135,7 @@ int reuse_patch(const EdgeRegistry& old, const std::vector<Subpatch>& subpatches
         for (int k = 0; k < 4; ++k) {
             SideOnLine side = old.sides[4 * static_cast<size_t>(io) + k];
             if (on_patch_edge(subpatches[i].rect, k)) {
-                if (side.line >= 0) ++edge_count[side.side];
+                if (side.line >= 0) ++lines.edge_count[side.side % 4];
             } else {
                 side.line -= l0;
             }
@@ -163,23 +174,24 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
     reg.sides.resize(4 * static_cast<size_t>(n));
     // (1) Per patch: its sides, its interior lines' keys (sorted: the lines'
     // order), the sides on each of them and on each of its patch edges.
-    std::vector<std::vector<std::uint64_t>> keys(np);
-    std::vector<std::vector<int>> count(np); // per interior line of the patch
-    std::vector<int> edge_count(4 * static_cast<size_t>(np), 0);
+    std::vector<OwnLine<PatchLines>> of_patch(np);
+    const auto edge_count = [&of_patch](int pe) {
+        return of_patch[pe / 4].value.edge_count[pe % 4];
+    };
     // Per patch taken from the previous registry: its first line there, else -1.
     std::vector<int> old_l0(np, -1);
     pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
         FirstMet<std::uint64_t, MixHash> met;
         for (int p = begin; p < end; ++p) {
             if (previous.registry && (*previous.same)[p]) {
-                old_l0[p] = reuse_patch(*previous.registry, subpatches, by_patch, first, p,
-                                        (*previous.previous_start)[p], keys[p], count[p],
-                                        edge_count, reg.sides);
+                old_l0[p] =
+                    reuse_patch(*previous.registry, subpatches, by_patch, first, p,
+                                (*previous.previous_start)[p], of_patch[p].value, reg.sides);
                 continue;
             }
             met.reset(4 * static_cast<size_t>(first[p + 1] - first[p]));
-            std::vector<std::uint64_t>& k_p = keys[p];
-            std::vector<int>& c_p = count[p];
+            std::vector<std::uint64_t>& k_p = of_patch[p].value.keys;
+            std::vector<int>& c_p = of_patch[p].value.count;
             for (int j = first[p]; j < first[p + 1]; ++j) {
                 const int i = by_patch[j];
                 for (int k = 0; k < 4; ++k) {
@@ -187,7 +199,7 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
                     SideOnLine& side = reg.sides[4 * i + k];
                     side = locate_side(m, p, subpatches[i].rect, k, key);
                     if (key == kNoKey) {
-                        if (side.line >= 0) ++edge_count[side.side];
+                        if (side.line >= 0) ++of_patch[p].value.edge_count[side.side % 4];
                         continue;
                     }
                     side.line = met.emplace(key, static_cast<int>(k_p.size())); // local for now
@@ -203,11 +215,12 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
     // (2) The lines' numbers and offsets: the boundary lines first (each
     // patch edge's sides a run of its line), then each patch's interior lines.
     std::vector<int> line_base(np + 1, B);
-    for (int p = 0; p < np; ++p) line_base[p + 1] = line_base[p] + static_cast<int>(keys[p].size());
+    for (int p = 0; p < np; ++p)
+        line_base[p + 1] = line_base[p] + static_cast<int>(of_patch[p].value.keys.size());
     const int lines = line_base[np];
     reg.offsets.assign(lines + 1, 0);
     for (int pe = 0; pe < 4 * np; ++pe)
-        if (m.edge_group[pe] >= 0) reg.offsets[m.edge_group[pe] + 1] += edge_count[pe];
+        if (m.edge_group[pe] >= 0) reg.offsets[m.edge_group[pe] + 1] += edge_count(pe);
     for (int l = 0; l < B; ++l) reg.offsets[l + 1] += reg.offsets[l];
     std::vector<int> edge_start(4 * static_cast<size_t>(np), 0);
     {
@@ -215,13 +228,13 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
         for (int pe = 0; pe < 4 * np; ++pe)
             if (m.edge_group[pe] >= 0) {
                 edge_start[pe] = fill[m.edge_group[pe]];
-                fill[m.edge_group[pe]] += edge_count[pe];
+                fill[m.edge_group[pe]] += edge_count(pe);
             }
     }
     std::vector<int> seg_base(np + 1, reg.offsets[B]);
     for (int p = 0; p < np; ++p) {
         int sum = 0;
-        for (int c : count[p]) sum += c;
+        for (int c : of_patch[p].value.count) sum += c;
         seg_base[p + 1] = seg_base[p] + sum;
     }
     reg.offsets[lines] = seg_base[np];
@@ -237,22 +250,24 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
     pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
         std::vector<int> fill, key_order;
         for (int p = begin; p < end; ++p) {
-            const int nl = static_cast<int>(keys[p].size()), l0 = line_base[p];
+            const std::vector<std::uint64_t>& keys = of_patch[p].value.keys;
+            const std::vector<int>& count = of_patch[p].value.count;
+            const int nl = static_cast<int>(keys.size()), l0 = line_base[p];
             // Its lines' keys ascending, for look-ups (a patch's keys follow
             // the previous patch's).
             std::vector<int>& by_key = key_order;
             by_key.resize(nl);
             std::iota(by_key.begin(), by_key.end(), 0);
             std::sort(by_key.begin(), by_key.end(),
-                      [&](int x, int y) { return keys[p][x] < keys[p][y]; });
+                      [&](int x, int y) { return keys[x] < keys[y]; });
             for (int r = 0; r < nl; ++r) {
-                reg.interior_keys[l0 - B + r] = keys[p][by_key[r]];
+                reg.interior_keys[l0 - B + r] = keys[by_key[r]];
                 reg.interior_lines[l0 - B + r] = l0 + by_key[r];
             }
             fill.resize(nl);
             for (int l = 0, at = seg_base[p]; l < nl; ++l) {
                 reg.offsets[l0 + l] = fill[l] = at;
-                at += count[p][l];
+                at += count[l];
             }
             // A patch taken from the previous registry: its interior lines'
             // runs as they were (sorted).
@@ -285,7 +300,7 @@ EdgeRegistry build_edge_registry(const BoundaryMatch& m, const std::vector<Subpa
                 for (int l = 0; l < nl; ++l)
                     std::sort(reg.segments.begin() + reg.offsets[l0 + l],
                               reg.segments.begin() + fill[l], by_side_then_a);
-            std::vector<std::uint64_t>().swap(keys[p]);
+            std::vector<std::uint64_t>().swap(of_patch[p].value.keys);
         }
     });
     parallel_chunks(B, threads, [&](int begin, int end) {

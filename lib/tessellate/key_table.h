@@ -7,6 +7,7 @@
 // and freed one by one at the end).
 #pragma once
 
+#include <seamless/tessellate/cache_line.h>
 #include <seamless/tessellate/first_met.h>
 
 #include <cstddef>
@@ -16,7 +17,9 @@
 
 namespace seamless {
 
-template <class Value> class KeyTable {
+// On a cache line of its own: one table per patch, filled by the workers
+// side by side (cache_line.h).
+template <class Value> class alignas(kCacheLine) KeyTable {
   public:
     // The value stored with `key`, or null.
     const Value* find(std::uint64_t key) const {

@@ -4,6 +4,7 @@
 // verdicts, the final fans' bounds and the last pass's split of each patch.
 #pragma once
 
+#include <seamless/tessellate/cache_line.h>
 #include <seamless/tessellate/fan_certification.h>
 #include <seamless/tessellate/patch_tree.h>
 #include <seamless/tessellate/shared_edges.h>
@@ -14,8 +15,9 @@
 
 namespace seamless {
 
-// One patch's split tree and leaves.
-struct Part {
+// One patch's split tree and leaves, on a cache line of its own (the workers
+// fill the patches' parts side by side, cache_line.h).
+struct alignas(kCacheLine) Part {
     PatchTrees trees;
     std::vector<Subpatch> subpatches;
     int root = -1;

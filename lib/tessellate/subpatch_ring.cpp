@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/cache_line.h>
 #include <seamless/tessellate/exact_point.h>
 #include <seamless/tessellate/subpatch_ring.h>
 #include <seamless/tessellate/touched_storage.h>
@@ -60,7 +61,9 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
     // Each subpatch's ring and centre point on its own, in parallel; the rings
     // of a block end to end in one array (not one allocation per subpatch).
     const int count = static_cast<int>(subpatches.size());
-    std::vector<std::vector<RingVertex>> block_rings((count + kSubpatchBlock - 1) / kSubpatchBlock);
+    // Each on its own cache line (cache_line.h).
+    std::vector<OwnLine<std::vector<RingVertex>>> block_rings((count + kSubpatchBlock - 1) /
+                                                              kSubpatchBlock);
     SubpatchRings out;
     reserve_touched(out.centre_point, count, threads);
     out.centre_point.resize(count);
@@ -71,7 +74,7 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
         std::vector<int> scratch;
         std::vector<SideVertex> inside;
         std::vector<RingVertex> ring;
-        std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock];
+        std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock].value;
         for (int i = begin; i < end; ++i) {
             const Subpatch& sp = subpatches[i];
             if (previous.rings && (*previous.same)[sp.patch]) {
@@ -100,7 +103,7 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
     reserve_huge(out.vertices, out.start[count], threads);
     out.vertices.resize(out.start[count]);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int) {
-        std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock];
+        std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock].value;
         std::copy(block.begin(), block.end(), out.vertices.begin() + out.start[begin]);
         std::vector<RingVertex>().swap(block);
     });

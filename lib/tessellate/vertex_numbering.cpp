@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/block_schedule.h>
+#include <seamless/tessellate/cache_line.h>
 #include <seamless/tessellate/first_met.h>
 #include <seamless/tessellate/touched_storage.h>
 #include <seamless/tessellate/vertex_numbering.h>
@@ -87,13 +88,13 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
     // Each patch's slots of shared points (keys not interior to it), in slot
     // order: found here rather than by a scan of every slot on the calling
     // thread (teapot D = 0.001: 90,000 slots a pass).
-    std::vector<std::vector<int>> shared_of(np);
+    std::vector<OwnLine<std::vector<int>>> shared_of(np); // cache_line.h
     pull_blocks(np, 1, threads, &order, [&](int begin, int end) {
         FirstMet<std::uint64_t, MixHash> seen; // (s, t) -> first slot
         std::vector<int> first_of;             // previous vertex number -> first slot
         for (int p = begin; p < end; ++p) {
             const int j0 = ring_start[leaf_start[p]], j1 = ring_start[leaf_start[p + 1]];
-            std::vector<int>& shared_slots = shared_of[p];
+            std::vector<int>& shared_slots = shared_of[p].value;
             const int o = previous.positions ? (*previous.previous_start)[p] : 0;
             const int n = leaf_start[p + 1] - leaf_start[p];
             if (previous.positions && (*previous.same)[p] && n > 0) {
@@ -128,11 +129,11 @@ void number_in_parallel(const std::vector<Subpatch>& subpatches, const std::vect
         }
     });
     size_t shared_count = 0;
-    for (const std::vector<int>& slots_of_p : shared_of) shared_count += slots_of_p.size();
+    for (const auto& slots_of_p : shared_of) shared_count += slots_of_p.value.size();
     FirstMet<VertexKey, VertexKeyHash> shared;
     shared.reset(shared_count);
-    for (const std::vector<int>& slots_of_p : shared_of)
-        for (int j : slots_of_p) first[j] = shared.emplace(key[j], j);
+    for (const auto& slots_of_p : shared_of)
+        for (int j : slots_of_p.value) first[j] = shared.emplace(key[j], j);
     std::vector<int> base(count + 1, 0);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
