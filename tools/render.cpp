@@ -8,6 +8,7 @@
 #include <seamless/base/error.h>
 #include <seamless/base/huge_pages.h>
 #include <seamless/base/output_files.h>
+#include <seamless/base/workers_warm_up.h>
 #include <seamless/render/render.h>
 
 #include <nlohmann/json.hpp>
@@ -125,7 +126,10 @@ void add_render(CLI::App& app, Action& action) {
             if (!a->stats.empty()) outs.push_back(a->stats);
             OutputFiles files(outs, {a->scene});
             keep_freed_memory(); // the steps reuse each other's pages (huge_pages.h)
-            const Scene scene = load_scene(a->scene);
+            const Scene scene = [&] {
+                const WorkersWarmUp warm_up(a->threads); // while the scene is read
+                return load_scene(a->scene);
+            }();
             print_warnings(scene.model); // e.g. approximated STEP/IGES surfaces
             std::vector<std::filesystem::path> models;
             for (const SceneObject& o : scene.objects) models.push_back(o.model_path);
