@@ -283,6 +283,9 @@ void cluster_system(const PatchForms& f, Interval a, Interval b, ClusterSystem& 
     primary_rows(f.X, a, b, out.G);
     primary_rows(f.Xs, a, b, out.Gs);
     primary_rows(f.Xt, a, b, out.Gt);
+    out.X = &f.X;
+    out.a = a;
+    out.b = b;
 }
 
 int solve_pieces(Interval n, Interval d, Interval X, double x0, Interval out[2]) {
@@ -409,8 +412,20 @@ ClusterCertificate certify_steps(const ClusterSystem& sys, IVec<2>& x, ParamBox&
         // 640x480x16 -2.8 % instructions, images byte-identical).
         if ((A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0)).contains(0.0))
             return ClusterCertificate::failed;
+        // G at the midpoint. G's power form holds [a] in every coefficient, and
+        // Horner adds up their widths (3 times the width of X - [a] Z near
+        // s, t = 1, branch i10t); X, Y, Z at the point with [a], [b] multiplied
+        // once enclose the same values, tighter: teapot 640x480 x 16, single
+        // pixels 44,155 -> 40,605, instructions -2.9 % (i10t, callgrind).
         const double cs = x[0].mid(), ct = x[1].mid();
-        for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, ParamBox{Interval(cs), Interval(ct)});
+        const ParamBox xm{Interval(cs), Interval(ct)};
+        if (sys.X) {
+            const Interval Z = horner(*sys.X, 2, xm);
+            F[0] = horner(*sys.X, 0, xm) - sys.a * Z;
+            F[1] = horner(*sys.X, 1, xm) - sys.b * Z;
+        } else {
+            for (int k = 0; k < 2; ++k) F[k] = horner(sys.G, k, xm);
+        }
         const HansenSenguptaStep<2> step = hansen_sengupta<2>(A, F, x, RVec<2>{cs, ct});
         if (steps) ++*steps;
         if (step.box.is_empty()) return ClusterCertificate::failed;

@@ -15,6 +15,11 @@ namespace seamless {
 // G = (X - [a] Z, Y - [b] Z) and its partial derivatives, in power form.
 struct ClusterSystem {
     PowerForm G, Gs, Gt;
+    // The patch's own forms and the cluster's screen ranges (cluster_system):
+    // G at a point as X - [a] Z, [a] multiplied once, not G's coefficients,
+    // each of which carries [a] (null: G alone, e.g. a single ray's system).
+    const PowerForm* X = nullptr;
+    Interval a, b;
 };
 void cluster_system(const PatchForms& f, Interval a, Interval b, ClusterSystem& out);
 
