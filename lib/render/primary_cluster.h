@@ -15,9 +15,10 @@ namespace seamless {
 // G = (X - [a] Z, Y - [b] Z) and its partial derivatives, in power form.
 struct ClusterSystem {
     PowerForm G, Gs, Gt;
-    // The patch's own forms and the cluster's screen ranges (cluster_system):
-    // G at a point as X - [a] Z, [a] multiplied once, not G's coefficients,
-    // each of which carries [a] (null: G alone, e.g. a single ray's system).
+    // The patch's forms and the screen ranges G was formed from, set with G by
+    // cluster_system (its only writer): certify_steps takes G at a point as
+    // X - [a] Z, [a] multiplied once, instead of Horner on G's coefficients,
+    // each of which carries [a]. X points into the caller's PatchForms.
     const PowerForm* X = nullptr;
     Interval a, b;
 };
