@@ -4,9 +4,9 @@
 #include "commands.h"
 #include "model_options.h"
 
-#include <seamless/base/atomic_file.h>
 #include <seamless/base/error.h>
-#include <seamless/base/output_files.h>
+#include <seamless/base/files/atomic_file.h>
+#include <seamless/base/files/output_files.h>
 #include <seamless/model/model.h>
 
 #include <cctype>

@@ -4,11 +4,11 @@
 #include "model_options.h"
 #include "progress.h"
 
-#include <seamless/base/atomic_file.h>
 #include <seamless/base/error.h>
-#include <seamless/base/huge_pages.h>
-#include <seamless/base/output_files.h>
-#include <seamless/base/workers_warm_up.h>
+#include <seamless/base/files/atomic_file.h>
+#include <seamless/base/files/output_files.h>
+#include <seamless/base/parallel/huge_pages.h>
+#include <seamless/base/parallel/workers_warm_up.h>
 #include <seamless/render/render.h>
 
 #include <nlohmann/json.hpp>

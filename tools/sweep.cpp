@@ -9,7 +9,7 @@
 #include "commands.h"
 #include "number_options.h"
 
-#include <seamless/base/atomic_file.h>
+#include <seamless/base/files/atomic_file.h>
 #include <seamless/mesh/sweep.h>
 #include <seamless/model/model.h>
 

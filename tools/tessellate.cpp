@@ -7,10 +7,10 @@
 #include "progress.h"
 #include <seamless/base/error.h>
 
-#include <seamless/base/atomic_file.h>
-#include <seamless/base/huge_pages.h>
-#include <seamless/base/output_files.h>
-#include <seamless/base/workers_warm_up.h>
+#include <seamless/base/files/atomic_file.h>
+#include <seamless/base/files/output_files.h>
+#include <seamless/base/parallel/huge_pages.h>
+#include <seamless/base/parallel/workers_warm_up.h>
 #include <seamless/mesh/mesh_io.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>

@@ -9,13 +9,13 @@
 //   bench_render_embree SCENE [--size WxH] [--levels L] [--threads N] [-o OUT.png]
 // prints one JSON line: seconds (precalculation included), precalc_seconds.
 #include <seamless/base/error.h>
-#include <seamless/base/huge_pages.h>
-#include <seamless/render/camera.h>
-#include <seamless/render/image.h>
-#include <seamless/render/parallel.h>
-#include <seamless/render/scene.h>
-#include <seamless/render/shading.h>
-#include <seamless/render/trace.h>
+#include <seamless/base/parallel/huge_pages.h>
+#include <seamless/render/scene/camera.h>
+#include <seamless/render/scene/image.h>
+#include <seamless/render/scene/render_loop.h>
+#include <seamless/render/scene/scene.h>
+#include <seamless/render/shading/shading.h>
+#include <seamless/render/tray/trace.h>
 
 #include <embree3/rtcore.h>
 

@@ -8,12 +8,12 @@
 // same code (lib/mesh/deviation.h) and checked by lib/mesh/check.h.
 // Writes docs/results/tessellation.md and tessellation.svg:
 //   seamless_bench_tessellation --docs docs/results
-#include <seamless/base/atomic_file.h>
+#include <seamless/base/files/atomic_file.h>
+#include <seamless/base/parallel/huge_pages.h>
 #include <seamless/mesh/check.h>
 #include <seamless/mesh/deviation.h>
 #include <seamless/mesh/sweep.h>
 #include <seamless/model/model.h>
-#include <seamless/base/huge_pages.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -430,7 +430,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<ModelSweep>
         }
     os << "## The certified bound against the measured deviation\n\n"
           "**bound**: `max_error_bound`, the certified two-way distance between surfaces and "
-          "mesh (lib/tessellate/error_bound.h); **surf->mesh**, **mesh->surf**: measured as "
+          "mesh (lib/tessellate/bounds/error_bound.h); **surf->mesh**, **mesh->surf**: measured as "
           "above; **same-param**: triangle samples to the surface at their interpolated (u,v) "
           "(the parametric distance, with the parametrisation's tangential drift: not bounded, "
           "shown for comparison); **measured / bound**: max(surf->mesh, mesh->surf) / bound, "

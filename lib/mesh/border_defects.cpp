@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/disjoint_sets.h>
+#include <seamless/base/segment_distance.h>
 #include <seamless/mesh/bits_hash.h>
 #include <seamless/mesh/border_defects.h>
-#include <seamless/tessellate/planarity.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/box_intersection_d.h>

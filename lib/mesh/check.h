@@ -8,10 +8,10 @@
 // (shell_measures.h). docs/check.md explains every item.
 #pragma once
 
+#include <seamless/base/triangle_mesh.h>
 #include <seamless/mesh/border_defects.h>
 #include <seamless/mesh/edge_topology.h>
 #include <seamless/mesh/self_intersections.h>
-#include <seamless/tessellate/triangle_mesh.h>
 
 #include <vector>
 

@@ -2,7 +2,7 @@
 // glTF 2.0 writer and reader on tinygltf (the Debian package ships it compiled,
 // so no TINYGLTF_IMPLEMENTATION here).
 #include <seamless/base/error.h>
-#include <seamless/base/input_file.h>
+#include <seamless/base/files/input_file.h>
 #include <seamless/mesh/gltf_io.h>
 #include <seamless/mesh/mesh_io.h>
 

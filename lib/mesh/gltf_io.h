@@ -3,7 +3,7 @@
 // mesh_io.cpp, which picks the format from the extension.
 #pragma once
 
-#include <seamless/tessellate/triangle_mesh.h>
+#include <seamless/base/triangle_mesh.h>
 
 #include <filesystem>
 #include <string>

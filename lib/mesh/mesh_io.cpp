@@ -11,9 +11,9 @@
 // (std::to_chars, at most 17 significant digits) and parses with std::from_chars
 // (correctly rounded), so text files round-trip bit-identically, and reads every
 // face exactly as the file indexes it.
-#include <seamless/base/atomic_file.h>
 #include <seamless/base/error.h>
-#include <seamless/base/input_file.h>
+#include <seamless/base/files/atomic_file.h>
+#include <seamless/base/files/input_file.h>
 #include <seamless/mesh/gltf_io.h>
 #include <seamless/mesh/mesh_io.h>
 #include <seamless/mesh/mesh_text.h>

@@ -6,7 +6,7 @@
 // failure leaves no partial file.
 #pragma once
 
-#include <seamless/tessellate/triangle_mesh.h>
+#include <seamless/base/triangle_mesh.h>
 
 #include <cstdint>
 #include <filesystem>

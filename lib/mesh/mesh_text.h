@@ -6,7 +6,7 @@
 #pragma once
 
 #include <seamless/base/error.h>
-#include <seamless/tessellate/triangle_mesh.h>
+#include <seamless/base/triangle_mesh.h>
 
 #include <cctype>
 #include <charconv>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Exact predicates (Epick) for degeneracy and triangle-triangle intersection,
 // box_self_intersection_d for the candidate pairs.
+#include <seamless/base/segment_distance.h>
 #include <seamless/mesh/self_intersections.h>
-#include <seamless/tessellate/planarity.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>

@@ -4,7 +4,7 @@
 // points is one edge. The other check steps work on the welded, indexed mesh.
 #pragma once
 
-#include <seamless/tessellate/triangle_mesh.h>
+#include <seamless/base/triangle_mesh.h>
 
 #include <array>
 #include <vector>

@@ -2,7 +2,7 @@
 #include <seamless/model/model.h>
 
 #include <seamless/base/error.h>
-#include <seamless/base/input_file.h>
+#include <seamless/base/files/input_file.h>
 #include <seamless/model/step_iges.h>
 #include <seamless/spline/knot_insertion.h>
 

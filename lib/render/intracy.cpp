@@ -28,20 +28,20 @@
 //  step 10: otherwise B is split into four (remark 3), or two, and pushed;
 //          children of a B whose step 9 failed by far skip steps 7-9.
 // Background is never painted where a patch is hit.
-#include <seamless/render/certified_pixels.h>
-#include <seamless/render/cluster_attempt.h>
-#include <seamless/render/mark.h>
-#include <seamless/render/parallel.h>
-#include <seamless/render/pixel_lights.h>
-#include <seamless/render/pixel_solve.h>
-#include <seamless/render/primary_cluster.h>
-#include <seamless/render/projection.h>
-#include <seamless/render/ray_cluster.h>
+#include <seamless/render/clusters/certified_pixels.h>
+#include <seamless/render/clusters/cluster_attempt.h>
+#include <seamless/render/pixels/pixel_lights.h>
+#include <seamless/render/pixels/pixel_solve.h>
 #include <seamless/render/render.h>
-#include <seamless/render/shading.h>
-#include <seamless/render/shared_marks.h>
-#include <seamless/render/step_clock.h>
-#include <seamless/render/trace.h>
+#include <seamless/render/scene/projection.h>
+#include <seamless/render/scene/render_loop.h>
+#include <seamless/render/scene/step_clock.h>
+#include <seamless/render/shading/shading.h>
+#include <seamless/render/subscreen/mark.h>
+#include <seamless/render/subscreen/primary_cluster.h>
+#include <seamless/render/subscreen/shared_marks.h>
+#include <seamless/render/tray/ray_cluster.h>
+#include <seamless/render/tray/trace.h>
 
 #include <seamless/interval/hansen_sengupta.h>
 #include <seamless/model/model.h>

@@ -7,12 +7,12 @@
 // triangles, with the same shade<double>() as INTRACY's at the hit point on the
 // triangle with the exact surface normals of its corners interpolated.
 // Everything is in world space.
-#include <seamless/render/parallel.h>
 #include <seamless/render/render.h>
+#include <seamless/render/scene/render_loop.h>
 
-#include <seamless/render/camera.h>
-#include <seamless/render/shading.h>
-#include <seamless/render/trace.h>
+#include <seamless/render/scene/camera.h>
+#include <seamless/render/shading/shading.h>
+#include <seamless/render/tray/trace.h>
 
 #include <atomic>
 #include <chrono>

@@ -4,12 +4,12 @@
 // verdicts, the final fans' bounds and the last pass's split of each patch.
 #pragma once
 
-#include <seamless/tessellate/cache_line.h>
-#include <seamless/tessellate/fan_certification.h>
-#include <seamless/tessellate/patch_tree.h>
-#include <seamless/tessellate/shared_edges.h>
-#include <seamless/tessellate/subdivision.h>
-#include <seamless/tessellate/subpatch_ring.h>
+#include <seamless/base/parallel/cache_line.h>
+#include <seamless/tessellate/bounds/fan_certification.h>
+#include <seamless/tessellate/fans/subpatch_ring.h>
+#include <seamless/tessellate/seams/shared_edges.h>
+#include <seamless/tessellate/subdivision/patch_tree.h>
+#include <seamless/tessellate/subdivision/subdivision.h>
 
 #include <vector>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/error.h>
-#include <seamless/base/parallel.h>
+#include <seamless/base/parallel/parallel.h>
+#include <seamless/base/phase_clock.h>
 #include <seamless/tessellate/pass_memo.h>
-#include <seamless/tessellate/phase_clock.h>
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/tessellation_pass.h>
 
@@ -13,34 +13,6 @@
 #include <unordered_set>
 
 namespace seamless {
-
-namespace {
-
-// The normal n = sp.normal() is used as it is (not approached from elsewhere).
-bool regular(const SurfacePoint& sp, Vec3 n) {
-    return is_finite(n) && norm(n) > 1e-12 * norm(sp.du) * norm(sp.dv) && norm(n) > 0;
-}
-
-} // namespace
-
-bool regular_unit_normal(const BezierPatch& b, double s, double t, Vec3& n) {
-    const SurfacePoint sp = evaluate(b, s, t);
-    const Vec3 m = sp.normal();
-    if (!regular(sp, m)) return false;
-    n = normalize(m);
-    return true;
-}
-
-Vec3 unit_normal(const BezierPatch& b, double s, double t, double toward_s, double toward_t) {
-    SurfacePoint sp = evaluate(b, s, t);
-    Vec3 n = sp.normal();
-    for (double d : {1e-7, 1e-5, 1e-3, 1e-1, 0.5}) {
-        if (regular(sp, n)) break;
-        sp = evaluate(b, s + d * (toward_s - s), t + d * (toward_t - t));
-        n = sp.normal();
-    }
-    return normalize(n);
-}
 
 Tessellation tessellate(const Model& model, const TessellationOptions& options) {
     return tessellate(model, bezier_patches(model), options);

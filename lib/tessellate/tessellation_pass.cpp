@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/error.h>
-#include <seamless/base/parallel.h>
-#include <seamless/tessellate/edge_graph.h>
-#include <seamless/tessellate/fan_certification.h>
-#include <seamless/tessellate/fan_triangles.h>
+#include <seamless/base/parallel/parallel.h>
+#include <seamless/base/phase_clock.h>
+#include <seamless/tessellate/bounds/fan_certification.h>
+#include <seamless/tessellate/fans/fan_triangles.h>
+#include <seamless/tessellate/fans/subpatch_ring.h>
+#include <seamless/tessellate/fans/vertex_numbering.h>
 #include <seamless/tessellate/pass_progress.h>
-#include <seamless/tessellate/patch_subdivision.h>
-#include <seamless/tessellate/phase_clock.h>
-#include <seamless/tessellate/shared_edges.h>
-#include <seamless/tessellate/subpatch_ring.h>
-#include <seamless/tessellate/surface_orientation.h>
+#include <seamless/tessellate/seams/edge_graph.h>
+#include <seamless/tessellate/seams/shared_edges.h>
+#include <seamless/tessellate/seams/surface_orientation.h>
+#include <seamless/tessellate/subdivision/patch_subdivision.h>
 #include <seamless/tessellate/tessellation_pass.h>
-#include <seamless/tessellate/vertex_numbering.h>
 
 #include <algorithm>
 #include <chrono>

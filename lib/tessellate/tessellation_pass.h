@@ -8,7 +8,8 @@
 
 #include <seamless/model/model.h>
 #include <seamless/tessellate/pass_memo.h>
-#include <seamless/tessellate/tessellation.h>
+#include <seamless/tessellate/tessellation_options.h>
+#include <seamless/tessellate/tessellation_result.h>
 
 #include <cstdint>
 #include <unordered_set>

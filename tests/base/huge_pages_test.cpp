@@ -4,7 +4,7 @@
 // huge_array's deleter releases it; reserve_huge changes only where an array
 // lives (its elements, their order and what a later resize writes stay the
 // same); keep_freed_memory lets freed pages serve later allocations.
-#include <seamless/base/huge_pages.h>
+#include <seamless/base/parallel/huge_pages.h>
 
 #include <catch2/catch.hpp>
 

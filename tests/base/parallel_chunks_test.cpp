@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// parallel_chunks (lib/base/parallel.h): every item once, for any thread
+// parallel_chunks (lib/base/parallel/parallel.h): every item once, for any thread
 // count, with the arenas kept between calls, nested calls and calls from
 // several threads at once.
-#include <seamless/base/parallel.h>
+#include <seamless/base/parallel/parallel.h>
 
 #include <catch2/catch.hpp>
 

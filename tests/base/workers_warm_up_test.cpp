@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// WorkersWarmUp (lib/base/workers_warm_up.h): parallel_chunks visits every
+// WorkersWarmUp (lib/base/parallel/workers_warm_up.h): parallel_chunks visits every
 // item once while the workers start in the background, after they started,
 // and for every thread count (one thread: nothing started).
-#include <seamless/base/parallel.h>
-#include <seamless/base/workers_warm_up.h>
+#include <seamless/base/parallel/parallel.h>
+#include <seamless/base/parallel/workers_warm_up.h>
 
 #include <catch2/catch.hpp>
 

@@ -3,7 +3,7 @@
 // folder holds two small ones (m.json, m.bpt) that the corpus refers to.
 #include "fuzz_common.h"
 
-#include <seamless/render/scene.h>
+#include <seamless/render/scene/scene.h>
 
 #include <filesystem>
 #include <fstream>

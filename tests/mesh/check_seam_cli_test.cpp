@@ -2,7 +2,7 @@
 // The CLI on the issue 9 example: two bicubic sheets sharing the curve x = 1,
 // the second with an extra knot at v = 0.3 along that edge (one Bezier span on
 // one side, two on the other). The tessellator stitches that seam geometrically
-// (lib/tessellate/edge_graph.h), so `seamless check` passes it. Moved 1e-4
+// (lib/tessellate/seams/edge_graph.h), so `seamless check` passes it. Moved 1e-4
 // apart, beyond the default seam tolerance, the sheets stay apart and `check`
 // must fail the seam and name it with its location, length and width; with
 // `--seam-tolerance 1e-3` they are stitched again and pass.

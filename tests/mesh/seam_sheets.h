@@ -4,7 +4,7 @@
 // along x = 0, each made of columns of triangles between vertical polylines.
 #pragma once
 
-#include <seamless/tessellate/triangle_mesh.h>
+#include <seamless/base/triangle_mesh.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include "test_util.h"
 
 #include <seamless/base/error.h>
-#include <seamless/base/input_file.h>
+#include <seamless/base/files/input_file.h>
 #include <seamless/model/model.h>
 
 #include <catch2/catch.hpp>

@@ -2,7 +2,7 @@
 // The certified Newton solve of a single primary ray never contradicts the
 // covering method: a box it declares missed holds no hit, a hit it certifies
 // is the only hit in the box and lies in its small box.
-#include <seamless/render/certified_newton.h>
+#include <seamless/render/pixels/certified_newton.h>
 #include <seamless/spline/ray_patch.h>
 
 #include <catch2/catch.hpp>

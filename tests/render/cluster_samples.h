@@ -3,10 +3,10 @@
 // check INTRACY's enclosures of intensities against sampled values.
 #pragma once
 
-#include <seamless/render/pixel_solve.h>
-#include <seamless/render/primary_cluster.h>
-#include <seamless/render/projection.h>
-#include <seamless/render/shading.h>
+#include <seamless/render/pixels/pixel_solve.h>
+#include <seamless/render/scene/projection.h>
+#include <seamless/render/shading/shading.h>
+#include <seamless/render/subscreen/primary_cluster.h>
 
 #include <array>
 

@@ -4,10 +4,10 @@
 // points over that box, in camera coordinates (subpatch_hull) and taken to
 // world coordinates (ClusterShader::world_hull, cluster_shade.h), and its
 // differences hold the patch's partial derivatives (subpatch_derivatives).
-#include <seamless/render/cluster_shade.h>
-#include <seamless/render/mark.h>
-#include <seamless/render/projection.h>
-#include <seamless/render/scene.h>
+#include <seamless/render/clusters/cluster_shade.h>
+#include <seamless/render/scene/projection.h>
+#include <seamless/render/scene/scene.h>
+#include <seamless/render/subscreen/mark.h>
 
 #include <catch2/catch.hpp>
 

@@ -6,8 +6,8 @@
 // visitor says so.
 #include "test_util.h"
 
-#include <seamless/render/flat_patch_trees.h>
-#include <seamless/render/trace.h>
+#include <seamless/render/tray/flat_patch_trees.h>
+#include <seamless/render/tray/trace.h>
 
 #include <catch2/catch.hpp>
 

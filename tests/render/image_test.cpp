@@ -6,7 +6,7 @@
 #include "test_util.h"
 
 #include <seamless/base/error.h>
-#include <seamless/render/image.h>
+#include <seamless/render/scene/image.h>
 
 #include <catch2/catch.hpp>
 #include <stb/stb_image.h> // implementation in Debian's libstb

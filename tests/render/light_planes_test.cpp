@@ -3,7 +3,7 @@
 // bit for bit, whichever thread formed it, in whatever order the planes were
 // formed (they are stored packed in that order), and whether it was kept or
 // not; a copy keeps the formed ones.
-#include <seamless/render/light_planes.h>
+#include <seamless/render/tray/light_planes.h>
 
 #include <catch2/catch.hpp>
 

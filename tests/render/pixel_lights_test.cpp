@@ -4,10 +4,10 @@
 // from a point of the box meets a triangle of another patch), on scene 3's
 // lamp, table and walls; and it is not vacuous (some boxes are certified, and
 // a box whose own shadow rays are blocked is not).
-#include <seamless/render/camera.h>
-#include <seamless/render/pixel_lights.h>
-#include <seamless/render/scene.h>
-#include <seamless/render/trace.h>
+#include <seamless/render/pixels/pixel_lights.h>
+#include <seamless/render/scene/camera.h>
+#include <seamless/render/scene/scene.h>
+#include <seamless/render/tray/trace.h>
 
 #include <catch2/catch.hpp>
 

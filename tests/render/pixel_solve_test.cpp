@@ -3,9 +3,9 @@
 // agree with each pixel solved alone, bit for bit; the marks' depth order and
 // diagonal bounds never drop a hit. (Certified Newton itself:
 // certified_newton_test.cpp.)
-#include <seamless/render/pixel_solve.h>
-#include <seamless/render/scene.h>
-#include <seamless/render/shared_marks.h>
+#include <seamless/render/pixels/pixel_solve.h>
+#include <seamless/render/scene/scene.h>
+#include <seamless/render/subscreen/shared_marks.h>
 #include <seamless/spline/ray_patch.h>
 
 #include <catch2/catch.hpp>

@@ -2,9 +2,9 @@
 // Theorem 10 narrowing and the cluster certificate never lose a hit: every ray
 // of a sampled cluster that meets the patch does so inside the narrowed box,
 // and a certified box holds exactly one hit of every ray.
-#include <seamless/render/mark.h>
-#include <seamless/render/primary_cluster.h>
-#include <seamless/render/projection.h>
+#include <seamless/render/scene/projection.h>
+#include <seamless/render/subscreen/mark.h>
+#include <seamless/render/subscreen/primary_cluster.h>
 #include <seamless/spline/ray_patch.h>
 
 #include <catch2/catch.hpp>

@@ -6,9 +6,9 @@
 // world-space ones.
 #include "test_util.h"
 
-#include <seamless/render/projection.h>
-#include <seamless/render/scene.h>
-#include <seamless/render/trace.h>
+#include <seamless/render/scene/projection.h>
+#include <seamless/render/scene/scene.h>
+#include <seamless/render/tray/trace.h>
 #include <seamless/spline/knot_insertion.h>
 
 #include <catch2/catch.hpp>

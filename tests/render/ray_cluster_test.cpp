@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Proposition 11: a cluster declared to miss a triangle never has a ray that hits it.
-#include <seamless/render/ray_cluster.h>
+#include <seamless/render/tray/ray_cluster.h>
 
 #include <catch2/catch.hpp>
 

@@ -2,8 +2,8 @@
 // Comparing two renders pixel by pixel.
 #pragma once
 
-#include <seamless/render/image.h>
 #include <seamless/render/render.h>
+#include <seamless/render/scene/image.h>
 
 #include <catch2/catch.hpp>
 

@@ -6,8 +6,8 @@
 // the same triangle as the plain loop over the roots.
 #include "test_util.h"
 
-#include <seamless/render/ray_triangle.h>
-#include <seamless/render/trace.h>
+#include <seamless/render/tray/ray_triangle.h>
+#include <seamless/render/tray/trace.h>
 
 #include <catch2/catch.hpp>
 

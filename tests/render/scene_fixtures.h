@@ -4,7 +4,7 @@
 
 #include "test_util.h"
 
-#include <seamless/render/scene.h>
+#include <seamless/render/scene/scene.h>
 
 #include <nlohmann/json.hpp>
 

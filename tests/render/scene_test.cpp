@@ -3,7 +3,7 @@
 #include "test_util.h"
 
 #include <seamless/base/error.h>
-#include <seamless/render/scene.h>
+#include <seamless/render/scene/scene.h>
 
 #include <catch2/catch.hpp>
 

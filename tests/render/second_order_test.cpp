@@ -9,12 +9,12 @@
 #include "render_compare.h"
 #include "test_util.h"
 
-#include <seamless/render/interval_jet.h>
-#include <seamless/render/pixel_solve.h>
-#include <seamless/render/primary_cluster.h>
-#include <seamless/render/projection.h>
+#include <seamless/render/clusters/second_order.h>
+#include <seamless/render/pixels/pixel_solve.h>
 #include <seamless/render/render.h>
-#include <seamless/render/second_order.h>
+#include <seamless/render/scene/projection.h>
+#include <seamless/render/shading/interval_jet.h>
+#include <seamless/render/subscreen/primary_cluster.h>
 
 #include <catch2/catch.hpp>
 

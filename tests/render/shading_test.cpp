@@ -2,7 +2,7 @@
 // quantise (shading.h) rounds as std::lround of the clamped, scaled
 // intensity: halves away from zero, the neighbours of every half level
 // included, at 2 to 65536 levels.
-#include <seamless/render/shading.h>
+#include <seamless/render/shading/shading.h>
 
 #include <catch2/catch.hpp>
 

@@ -6,9 +6,9 @@
 #include "render_compare.h"
 #include "test_util.h"
 
-#include <seamless/render/camera.h>
 #include <seamless/render/render.h>
-#include <seamless/render/trace.h>
+#include <seamless/render/scene/camera.h>
+#include <seamless/render/tray/trace.h>
 
 #include <catch2/catch.hpp>
 

@@ -9,8 +9,8 @@
 #include "test_util.h"
 
 #include <seamless/model/model.h>
-#include <seamless/render/ray_triangle.h>
 #include <seamless/render/render.h>
+#include <seamless/render/tray/ray_triangle.h>
 
 #include <catch2/catch.hpp>
 

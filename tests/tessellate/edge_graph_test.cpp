@@ -7,7 +7,7 @@
 #include "seam_cases.h"
 
 #include <seamless/model/model.h>
-#include <seamless/tessellate/edge_graph.h>
+#include <seamless/tessellate/seams/edge_graph.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>

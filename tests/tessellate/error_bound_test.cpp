@@ -6,7 +6,7 @@
 #include "test_util.h"
 
 #include <seamless/model/model.h>
-#include <seamless/tessellate/error_bound.h>
+#include <seamless/tessellate/bounds/error_bound.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>

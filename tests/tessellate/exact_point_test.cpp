@@ -3,7 +3,7 @@
 // polynomial and rational patches of degrees 3, 2, 1 and mixed, at the
 // corners, the centre, dyadic and random parameters.
 #include <seamless/model/model.h>
-#include <seamless/tessellate/exact_point.h>
+#include <seamless/spline/surface_point.h>
 
 #include <catch2/catch.hpp>
 

@@ -4,9 +4,9 @@
 // again to the same value.
 #include "tessellate/teapot_pass.h"
 
-#include <seamless/tessellate/fan_certification.h>
-#include <seamless/tessellate/subpatch_ring.h>
-#include <seamless/tessellate/vertex_numbering.h>
+#include <seamless/tessellate/bounds/fan_certification.h>
+#include <seamless/tessellate/fans/subpatch_ring.h>
+#include <seamless/tessellate/fans/vertex_numbering.h>
 
 #include <catch2/catch.hpp>
 

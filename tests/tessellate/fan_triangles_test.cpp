@@ -5,9 +5,10 @@
 // computed once per patch where it is regular.
 #include "tessellate/teapot_pass.h"
 
-#include <seamless/tessellate/fan_triangles.h>
-#include <seamless/tessellate/subpatch_ring.h>
-#include <seamless/tessellate/vertex_numbering.h>
+#include <seamless/spline/surface_point.h>
+#include <seamless/tessellate/fans/fan_triangles.h>
+#include <seamless/tessellate/fans/subpatch_ring.h>
+#include <seamless/tessellate/fans/vertex_numbering.h>
 
 #include <catch2/catch.hpp>
 

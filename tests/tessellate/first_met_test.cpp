@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Numbering as first met over flat arrays (first_met.h).
-#include <seamless/tessellate/first_met.h>
-#include <seamless/tessellate/shared_edges.h>
+#include <seamless/base/first_met.h>
+#include <seamless/tessellate/seams/shared_edges.h>
 
 #include <catch2/catch.hpp>
 

@@ -2,7 +2,7 @@
 // KeyTable (key_table.h) against std::unordered_map: the same values for the
 // same 64-bit keys (0 among them, and keys equal in their low bits) through
 // several doublings, and null for keys never stored.
-#include <seamless/tessellate/key_table.h>
+#include <seamless/base/key_table.h>
 
 #include <catch2/catch.hpp>
 

@@ -5,7 +5,7 @@
 // characteristic.
 #pragma once
 
-#include <seamless/tessellate/triangle_mesh.h>
+#include <seamless/base/triangle_mesh.h>
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 // bicubic net holds exactly the differences of its points, and split_bounds
 // does not depend on the order of the differences (what lets it take them
 // two or four at a time, SSE2 or AVX2, with the same result).
-#include <seamless/tessellate/net_bounds.h>
+#include <seamless/tessellate/bounds/net_bounds.h>
 
 #include <catch2/catch.hpp>
 

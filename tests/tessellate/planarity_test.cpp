@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Planarity test (paper section 6) on flat, curved and degenerate patches.
-#include <seamless/tessellate/planarity.h>
+#include <seamless/tessellate/subdivision/planarity.h>
 
 #include <catch2/catch.hpp>
 
@@ -91,10 +91,4 @@ TEST_CASE("coincident or collinear corners: the plane test needs all points near
     BezierPatch lifted = line;
     lifted.at(1, 0) = HPoint::from({1.0 / 3, 0.5, 0}, 1);
     CHECK_FALSE(is_planar(lifted, 0.1, 1));
-}
-
-TEST_CASE("point_segment_distance handles interior, end and degenerate segments", "[planarity]") {
-    CHECK(point_segment_distance({0.5, 1, 0}, {0, 0, 0}, {1, 0, 0}) == Approx(1));
-    CHECK(point_segment_distance({2, 0, 0}, {0, 0, 0}, {1, 0, 0}) == Approx(1));
-    CHECK(point_segment_distance({0, 3, 4}, {0, 0, 0}, {0, 0, 0}) == Approx(5));
 }

@@ -6,7 +6,7 @@
 #include "test_util.h"
 
 #include <seamless/model/model.h>
-#include <seamless/tessellate/power_basis.h>
+#include <seamless/tessellate/bounds/power_basis.h>
 
 #include <catch2/catch.hpp>
 

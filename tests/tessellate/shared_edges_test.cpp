@@ -4,7 +4,7 @@
 #include "test_util.h"
 
 #include <seamless/model/model.h>
-#include <seamless/tessellate/shared_edges.h>
+#include <seamless/tessellate/seams/shared_edges.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>

@@ -4,8 +4,8 @@
 #include "test_util.h"
 
 #include <seamless/model/model.h>
-#include <seamless/tessellate/planarity.h>
-#include <seamless/tessellate/subdivision.h>
+#include <seamless/tessellate/subdivision/planarity.h>
+#include <seamless/tessellate/subdivision/subdivision.h>
 
 #include <catch2/catch.hpp>
 

@@ -3,7 +3,7 @@
 // previous pass.
 #include "tessellate/teapot_pass.h"
 
-#include <seamless/tessellate/subpatch_ring.h>
+#include <seamless/tessellate/fans/subpatch_ring.h>
 
 #include <catch2/catch.hpp>
 

@@ -4,7 +4,7 @@
 #include "mesh_properties.h"
 #include "seam_cases.h"
 
-#include <seamless/tessellate/surface_orientation.h>
+#include <seamless/tessellate/seams/surface_orientation.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>

@@ -7,8 +7,8 @@
 #include "test_util.h"
 
 #include <seamless/model/model.h>
-#include <seamless/tessellate/edge_graph.h>
-#include <seamless/tessellate/shared_edges.h>
+#include <seamless/tessellate/seams/edge_graph.h>
+#include <seamless/tessellate/seams/shared_edges.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <vector>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Fresh storage backed by the workers before it is filled (touched_storage.h):
 // only the storage changes, never the contents.
-#include <seamless/tessellate/touched_storage.h>
+#include <seamless/base/parallel/touched_storage.h>
 
 #include <catch2/catch.hpp>
 

@@ -4,8 +4,8 @@
 // evaluated.
 #include "tessellate/teapot_pass.h"
 
-#include <seamless/tessellate/subpatch_ring.h>
-#include <seamless/tessellate/vertex_numbering.h>
+#include <seamless/tessellate/fans/subpatch_ring.h>
+#include <seamless/tessellate/fans/vertex_numbering.h>
 
 #include <catch2/catch.hpp>
 

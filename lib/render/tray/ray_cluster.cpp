@@ -1,0 +1,402 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/render/tray/ray_cluster.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+#include <seamless/interval/gauss_seidel.h>
+#include <seamless/interval/hansen_sengupta.h>
+
+namespace seamless {
+
+Box3 cluster_box(const RayCluster& c) {
+    Box3 b;
+    for (double q : {c.q.lo(), c.q.hi()}) {
+        Vec3 lo, hi;
+        for (int i = 0; i < 3; ++i) {
+            const Interval p = c.origin[i] + Interval(q) * c.direction[i];
+            lo[i] = p.lo();
+            hi[i] = p.hi();
+        }
+        b.extend(lo);
+        b.extend(hi);
+    }
+    return b;
+}
+
+namespace {
+// Projection of the cluster's points onto axis a (linear in q: extremes at its ends).
+Interval project_cluster(const RayCluster& c, Vec3 a) {
+    Interval r = Interval::empty();
+    for (double q : {c.q.lo(), c.q.hi()}) {
+        Interval d(0.0);
+        for (int i = 0; i < 3; ++i)
+            d += Interval(a[i]) * (c.origin[i] + Interval(q) * c.direction[i]);
+        r = hull(r, d);
+    }
+    return r;
+}
+// The interval system 0 = b + A w of Proposition 11 with w = (beta, delta,
+// q - q~), q~ the midpoint of the cluster's q, and its preconditioned form for
+// the Hansen-Sengupta operator on the linear F(w) = b + A w (Definition 5: A is
+// its own Lipschitz matrix, so C = mid(A)^-1 and C A are formed once).
+struct TriangleSystem {
+    IMat<3> A, CA;
+    RMat<3> C;
+    IVec<3> b;
+    double qt;
+    bool preconditioned;
+
+    TriangleSystem(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) : qt(c.q.mid()) {
+        for (int i = 0; i < 3; ++i) {
+            A(i, 0) = Interval(T2[i]) - Interval(T1[i]);
+            A(i, 1) = Interval(T3[i]) - Interval(T1[i]);
+            A(i, 2) = -c.direction[i];
+            b[i] = Interval(T1[i]) - (c.origin[i] + Interval(qt) * c.direction[i]);
+        }
+        // Any real C keeps Theorem 6, so a singular mid(A) falls back to C = I.
+        preconditioned = invert<3>(mid(A), C);
+        if (!preconditioned) C = identity_matrix<3>();
+        CA = C * A;
+    }
+    // H(x, mid x) before its intersection with x; empty if no zero in x.
+    IVec<3> step(const IVec<3>& x) const {
+        const IVec<3> xw = to_ivec<3>(mid(x));
+        const IVec<3> g = gauss_seidel(CA, -(C * (b + A * xw)), x - xw);
+        return g.is_empty() ? IVec<3>::empty() : xw + g;
+    }
+};
+
+} // namespace
+
+ClusterHull::ClusterHull(const RayCluster& c) : box_(cluster_box(c)) {
+    Vec3 d{c.direction[0].mid(), c.direction[1].mid(), c.direction[2].mid()};
+    if (norm(d) == 0) d = {0, 0, 1};
+    d = normalize(d);
+    const Vec3 seed = std::abs(d.x) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    axis_[0] = normalize(cross(d, seed));
+    axis_[1] = cross(d, axis_[0]);
+    for (int k = 0; k < 2; ++k) proj_[k] = project_cluster(c, axis_[k]);
+}
+
+bool ClusterHull::may_meet(const Box3& b) const {
+    if (!b.overlaps(box_)) return false;
+    for (int k = 0; k < 2; ++k) {
+        // Interval(0) + sum of Interval(a) * Interval(lo, hi) over the axes,
+        // with the product's sign case known from a (finite, as the box's
+        // bounds are): the same bounds as the interval operations.
+        double lo = 0, hi = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double a = axis_[k][i];
+            const bool up = a >= 0;
+            lo = next_down(lo + next_down(a * (up ? b.lo[i] : b.hi[i])));
+            hi = next_up(hi + next_up(a * (up ? b.hi[i] : b.lo[i])));
+        }
+        if (hi < proj_[k].lo() || lo > proj_[k].hi()) return false;
+    }
+    return true;
+}
+
+namespace {
+
+// may_hit_triangle's separating axis: the triangle's normal. false when the
+// hull of the rays' end boxes projects off the triangle's projection.
+bool normal_axis_may_meet(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
+    // The rays' points lie in the convex hull of their two end boxes, so if
+    // that hull's projection misses the triangle's, no ray meets it. Any axis
+    // is valid, so the rounded normal is as good as the exact one.
+    const Vec3 n = cross(T2 - T1, T3 - T1);
+    auto project = [&](Vec3 p) {
+        return Interval(n.x) * Interval(p.x) + Interval(n.y) * Interval(p.y) +
+               Interval(n.z) * Interval(p.z);
+    };
+    const Interval tri = hull(hull(project(T1), project(T2)), project(T3));
+    const Interval rays = project_cluster(c, n);
+    return !(rays.hi() < tri.lo() || rays.lo() > tri.hi());
+}
+
+// may_hit_triangle's contraction of the system (Theorem 6: empty, no zero).
+bool system_may_meet(const RayCluster& c, const TriangleSystem& sys) {
+    IVec<3> x;
+    x[0] = Interval(0.0, 1.0);
+    x[1] = Interval(0.0, 1.0);
+    x[2] = c.q - Interval(sys.qt);
+    for (int iter = 0; iter < 4; ++iter) {
+        const IVec<3> h = sys.step(x);
+        if (h.is_empty()) return false;
+        const IVec<3> y = intersect(h, x);
+        if (y.is_empty()) return false;
+        if (y[0].lo() + y[1].lo() > 1.0) return false; // beta + delta <= 1
+        const bool progress = y[0].width() < 0.9 * x[0].width() ||
+                              y[1].width() < 0.9 * x[1].width() ||
+                              y[2].width() < 0.9 * x[2].width();
+        x = y;
+        if (!progress) break;
+    }
+    return true;
+}
+
+// covers_triangle on a built system.
+bool system_covers(const RayCluster& c, const TriangleSystem& sys, Interval& q, Interval* beta,
+                   Interval* delta) {
+    if (!sys.preconditioned) return false;
+    // Start from the whole triangle's parameter box widened a little (epsilon
+    // inflation), so that H can land strictly inside it.
+    IVec<3> x;
+    x[0] = Interval(-0.1, 1.1);
+    x[1] = Interval(-0.1, 1.1);
+    x[2] = c.q - Interval(sys.qt);
+    for (int iter = 0; iter < 6; ++iter) {
+        const IVec<3> h = sys.step(x);
+        if (h.is_empty()) return false;
+        if (contains_in_interior(x, h)) {
+            // Theorem 6 iii for every ray: one meeting point, with parameters in h.
+            const bool inside = h[0].lo() > 0 && h[1].lo() > 0 && (h[0] + h[1]).hi() < 1;
+            q = h[2] + Interval(sys.qt);
+            if (beta) *beta = h[0];
+            if (delta) *delta = h[1];
+            return inside;
+        }
+        const IVec<3> y = intersect(h, x);
+        if (y.is_empty()) return false;
+        // The operator is a function of x: an x it leaves unchanged would give
+        // the same h, which failed, in every remaining step.
+        if (y[0] == x[0] && y[1] == x[1] && y[2] == x[2]) return false;
+        x = y;
+    }
+    return false;
+}
+
+} // namespace
+
+bool may_cover_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
+    // The ray O + q D meets T1 + beta E1 + delta E2 where (Moller-Trumbore)
+    // beta = S.P / det, delta = D.Q / det with P = D x E2, det = E1.P,
+    // S = O - T1, Q = S x E1; signs are compared instead of dividing.
+    Interval O[3], D[3], E1[3], E2[3], S[3];
+    for (int i = 0; i < 3; ++i) {
+        O[i] = Interval(c.origin[i].mid());
+        D[i] = Interval(c.direction[i].mid());
+        if (!O[i].is_finite() || !D[i].is_finite()) return true;
+        E1[i] = Interval(T2[i]) - Interval(T1[i]);
+        E2[i] = Interval(T3[i]) - Interval(T1[i]);
+        S[i] = O[i] - Interval(T1[i]);
+    }
+    const Interval P[3] = {D[1] * E2[2] - D[2] * E2[1], D[2] * E2[0] - D[0] * E2[2],
+                           D[0] * E2[1] - D[1] * E2[0]};
+    const Interval Q[3] = {S[1] * E1[2] - S[2] * E1[1], S[2] * E1[0] - S[0] * E1[2],
+                           S[0] * E1[1] - S[1] * E1[0]};
+    Interval det = E1[0] * P[0] + E1[1] * P[1] + E1[2] * P[2];
+    Interval a = S[0] * P[0] + S[1] * P[1] + S[2] * P[2];
+    Interval b = D[0] * Q[0] + D[1] * Q[1] + D[2] * Q[2];
+    if (det.hi() < 0) {
+        det = -det;
+        a = -a;
+        b = -b;
+    } else if (!(det.lo() > 0)) {
+        return true; // the ray may be parallel to the triangle's plane
+    }
+    // beta < 0, delta < 0 or beta + delta > 1: the ray misses.
+    return !(a.hi() < 0 || b.hi() < 0 || (a + b - det).lo() > 0);
+}
+
+bool may_hit_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3) {
+    return normal_axis_may_meet(c, T1, T2, T3) && system_may_meet(c, TriangleSystem(c, T1, T2, T3));
+}
+
+bool covers_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q, Interval* beta,
+                     Interval* delta) {
+    return system_covers(c, TriangleSystem(c, T1, T2, T3), q, beta, delta);
+}
+
+TriangleMeeting meet_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, Interval& q,
+                              Interval* beta, Interval* delta) {
+    if (!normal_axis_may_meet(c, T1, T2, T3)) return TriangleMeeting::miss;
+    const TriangleSystem sys(c, T1, T2, T3);
+    if (!system_may_meet(c, sys)) return TriangleMeeting::miss;
+    return may_cover_triangle(c, T1, T2, T3) && system_covers(c, sys, q, beta, delta)
+               ? TriangleMeeting::covers
+               : TriangleMeeting::may;
+}
+
+namespace {
+
+using IV3 = std::array<Interval, 3>;
+
+IV3 isub(const IV3& a, const IV3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+IV3 icross(const IV3& a, const IV3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Interval idot(const IV3& a, const IV3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+IV3 iv(Vec3 v) {
+    return {Interval(v.x), Interval(v.y), Interval(v.z)};
+}
+// x and y certainly of the same strict sign.
+bool same_side(Interval x, Interval y) {
+    return (x.lo() > 0 && y.lo() > 0) || (x.hi() < 0 && y.hi() < 0);
+}
+
+} // namespace
+
+ApexTriangle apex_triangle(Vec3 apex, Vec3 T1, Vec3 T2, Vec3 T3) {
+    ApexTriangle p;
+    p.apex = apex;
+    p.T1 = T1;
+    const IV3 L = iv(apex), A = iv(T1), B = iv(T2), C = iv(T3);
+    p.normal = icross(isub(B, A), isub(C, A));
+    p.apex_side = idot(p.normal, isub(L, A));
+    const IV3 V[3] = {A, B, C};
+    for (int e = 0; e < 3; ++e) {
+        const IV3 &P = V[e], &Q = V[(e + 1) % 3], &R = V[(e + 2) % 3];
+        p.side[e] = icross(isub(P, L), isub(Q, L));
+        p.inner[e] = idot(p.side[e], isub(R, L));
+    }
+    return p;
+}
+
+bool pyramid_may_meet_triangle(const ApexTriangle& p, const IVec<3>& ends) {
+    const IV3 E{ends[0], ends[1], ends[2]};
+    // The triangle's plane: apex and every end point strictly on one side.
+    if (same_side(p.apex_side, idot(p.normal, isub(E, iv(p.T1))))) return false;
+    // The apex itself lies on every side plane: only when it is certainly off
+    // the triangle's plane is it outside the triangle, and the box strictly
+    // beyond a side plane puts every other point of the hull outside too.
+    if (p.apex_side.contains(0.0)) return true;
+    // The side planes through the apex: the box strictly outside one of them
+    // (the linear form's range over the box is exact up to rounding: each
+    // coordinate of E enters once).
+    const IV3 EL = isub(E, iv(p.apex));
+    for (int e = 0; e < 3; ++e) {
+        const Interval inner = p.inner[e], box = idot(p.side[e], EL);
+        if ((inner.lo() > 0 && box.hi() < 0) || (inner.hi() < 0 && box.lo() > 0)) return false;
+    }
+    return true;
+}
+
+bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2, Vec3 T3) {
+    return pyramid_may_meet_triangle(apex_triangle(apex, T1, T2, T3), ends);
+}
+
+std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& triangles) {
+    // Directed edges bucketed by their first vertex (counting sort): per
+    // bucket entry k the edge's last vertex to[k] and its number 3 t + e (from
+    // corner e to corner e + 1 of triangle t), so a vertex's few edges are
+    // scanned for the same edge and its reverse in flat arrays. The teapot
+    // scene's 7k triangles: 0.2 MB of arrays where a hash table of every edge
+    // and its reverse touched 1.5 MB (about 380 fresh pages, each a page
+    // fault); bucket-ordered last vertices instead of recomputing them from
+    // the edge's number: 8.8 -> 2.6 M instructions (callgrind).
+    const size_t n = triangles.size() * 3;
+    int nv = 0;
+    for (const auto& t : triangles) nv = std::max({nv, t[0] + 1, t[1] + 1, t[2] + 1});
+    std::vector<int> start(static_cast<size_t>(nv) + 1, 0);
+    for (const auto& t : triangles)
+        for (int e = 0; e < 3; ++e) ++start[t[e] + 1];
+    for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<int> edge(n), to(n), cursor(start.begin(), start.end() - 1);
+    for (size_t t = 0, h = 0; t < triangles.size(); ++t)
+        for (int e = 0; e < 3; ++e, ++h) {
+            const int k = cursor[triangles[t][e]]++;
+            edge[k] = static_cast<int>(h);
+            to[k] = triangles[t][e == 2 ? 0 : e + 1];
+        }
+    std::vector<int> out(n, -1);
+    for (int u = 0; u < nv; ++u)
+        for (int k = start[u]; k < start[u + 1]; ++k) {
+            // The edge from u to v: traversed by this triangle alone, and the
+            // edge from v to u by exactly one triangle.
+            const int v = to[k];
+            int same = 0;
+            for (int j = start[u]; j < start[u + 1]; ++j) same += to[j] == v;
+            if (same != 1) continue; // several triangles traverse it: not a manifold edge
+            int other = -1, count = 0;
+            for (int j = start[v]; j < start[v + 1]; ++j)
+                if (to[j] == u) other = edge[j], ++count;
+            if (count == 1) out[edge[k]] = other / 3;
+        }
+    return out;
+}
+
+bool pyramid_blocked_by_surface(Vec3 apex, const IVec<3>& ends, double q_max, int seed,
+                                const std::vector<Vec3>& positions,
+                                const std::vector<std::array<int, 3>>& triangles,
+                                const std::vector<int>& neighbours, const std::vector<int>& group,
+                                int skip, int max_size, SurfaceScratch& scratch) {
+    if (group[seed] == skip) return false;
+    const IV3 L = iv(apex), E{ends[0], ends[1], ends[2]};
+    const Vec3 mid{ends[0].mid(), ends[1].mid(), ends[2].mid()};
+    // The plane across the pyramid: normal n towards the midpoint; a point X
+    // on the ray to P in the box lies at q = n.(X - L) / n.(P - L).
+    const IV3 n = isub(iv(mid), L);
+    const Interval reach = idot(n, isub(E, L));
+    if (!(reach.lo() > 0)) return false;
+    const double depth_max = (Interval(q_max) * Interval(reach.lo())).lo();
+    auto vertex = [&](int t, int k) { return positions[triangles[t][k]]; };
+    // c) first: the ray to the midpoint meets the seed.
+    RayCluster ray;
+    for (int i = 0; i < 3; ++i) {
+        ray.origin[i] = L[i];
+        ray.direction[i] = n[i];
+    }
+    Interval q;
+    if (!covers_triangle(ray, vertex(seed, 0), vertex(seed, 1), vertex(seed, 2), q)) return false;
+    // The seed's orientation seen from the apex.
+    auto facing = [&](int t) {
+        const IV3 A = iv(vertex(t, 0)), B = iv(vertex(t, 1)), C = iv(vertex(t, 2));
+        const Interval f = idot(icross(isub(B, A), isub(C, A)), isub(A, L));
+        return f.lo() > 0 ? 1 : f.hi() < 0 ? -1 : 0;
+    };
+    // a)'s depth: n.(X - L) over the triangle's bounding box (each coordinate
+    // enters once, so the range is exact up to rounding).
+    auto between = [&](int t) {
+        const Vec3 A = vertex(t, 0), B = vertex(t, 1), C = vertex(t, 2);
+        const IV3 X{Interval(std::min({A.x, B.x, C.x}), std::max({A.x, B.x, C.x})),
+                    Interval(std::min({A.y, B.y, C.y}), std::max({A.y, B.y, C.y})),
+                    Interval(std::min({A.z, B.z, C.z}), std::max({A.z, B.z, C.z}))};
+        const Interval d = idot(n, isub(X, L));
+        return d.lo() > 0 && d.hi() < depth_max;
+    };
+    const int sigma = facing(seed);
+    if (sigma == 0 || !between(seed)) return false;
+    // An edge U V misses the pyramid when the box lies strictly on one side of
+    // the plane through the apex, U and V: that plane meets the pyramid only at
+    // the apex, which is then not on the line U V.
+    auto edge_misses = [&](int t, int e) {
+        const IV3 U = iv(vertex(t, e)), V = iv(vertex(t, (e + 1) % 3));
+        const IV3 m = icross(isub(U, L), isub(V, L));
+        const Interval side = idot(m, isub(E, L));
+        return side.lo() > 0 || side.hi() < 0;
+    };
+    auto& stamp = scratch.stamp;
+    if (stamp.size() != triangles.size() || scratch.epoch == ~0u) {
+        stamp.assign(triangles.size(), 0);
+        scratch.epoch = 0;
+    }
+    const unsigned in_s = ++scratch.epoch;
+    auto& stack = scratch.stack;
+    stack.assign(1, seed);
+    stamp[seed] = in_s;
+    int size = 1;
+    while (!stack.empty()) {
+        const int t = stack.back();
+        stack.pop_back();
+        for (int e = 0; e < 3; ++e) {
+            if (edge_misses(t, e)) continue; // a border of S that the pyramid misses
+            const int nb = neighbours[3 * static_cast<size_t>(t) + e];
+            if (nb < 0) return false;
+            if (stamp[nb] == in_s) continue;
+            if (group[nb] == skip || ++size > max_size || facing(nb) != sigma || !between(nb))
+                return false;
+            stamp[nb] = in_s;
+            stack.push_back(nb);
+        }
+    }
+    return true;
+}
+
+} // namespace seamless

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// What a tessellation hands on: the crack-free mesh, its binary patch trees
+// (Proposition 11, remark 2), the planar subpatches with their certified
+// bounds, and what it counted and measured (--stats, docs/formats.md).
+#pragma once
+
+#include <seamless/base/error.h>
+#include <seamless/base/triangle_mesh.h>
+#include <seamless/tessellate/subdivision/patch_tree.h>
+#include <seamless/tessellate/subdivision/subdivision.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace seamless {
+
+// Wall-clock seconds of the phases of tessellate(), summed over the passes
+// (docs/formats.md, `phase_seconds`). In parallel: subdivision, rings,
+// bounds, normals, scaling (the power-of-two scale in and out), and but for
+// prefix sums fans (triangles, patch-tree leaves, hulls), orientation and,
+// without straight segments, numbering (vertices in subpatch order); on one
+// thread: boundaries (shared edges, edge registry and graph).
+struct PhaseSeconds {
+    double subdivision = 0, boundaries = 0, rings = 0, numbering = 0, bounds = 0, normals = 0,
+           fans = 0, orientation = 0, scaling = 0;
+};
+
+struct TessellationStats {
+    int surfaces = 0, patches = 0, subpatches = 0, triangles = 0, vertices = 0;
+    int shared_edges = 0, collapsed_edges = 0;
+    int seams = 0, seam_vertices = 0;     // boundaries matched geometrically (edge_graph.h)
+    int flipped_surfaces = 0;             // turned by orient_surfaces
+    int nonplanar_subpatches = 0;         // stopped by max_depth
+    int max_depth = 0;                    // deepest subpatch
+    double d_max = 0, eps1 = 0, eps2 = 0; // eps: 0 when the planarity test was off
+    double seam_tolerance = 0;
+    double tolerance = 0; // requested (0: none), model units
+    // Largest Subpatch::error_bound: the certified two-way distance between the
+    // surfaces and the mesh, model units (NaN when TessellationOptions::certify
+    // left it out).
+    double max_error_bound = 0;
+    // Subpatches whose final bound exceeds the tolerance (neighbours moved a
+    // corner onto their straight edge after the subpatch passed), or that
+    // max_depth stopped.
+    int above_tolerance = 0;
+    int passes = 1; // tessellation passes (a tolerance may need more than one)
+    double seconds = 0;
+    PhaseSeconds phases;
+};
+
+// What tessellate() throws past TessellationOptions::max_triangles: an
+// InputError naming the model and the tolerance that asked for it, with the
+// limit kept so a front end can name its own way to raise it.
+class TriangleBudgetError : public InputError {
+  public:
+    TriangleBudgetError(std::string file, std::string field, std::int64_t limit)
+        : InputError(std::move(file), std::move(field), message_for(limit, "max_triangles")),
+          limit_(limit) {}
+    std::int64_t limit() const { return limit_; }
+    // The message, with the limit called by `name` (a front end's own flag).
+    static std::string message_for(std::int64_t limit, const std::string& name) {
+        return "needs more than " + std::to_string(limit) + " triangles, the " + name +
+               " limit; a larger tolerance needs fewer";
+    }
+
+  private:
+    std::int64_t limit_;
+};
+
+struct Tessellation {
+    TriangleMesh mesh;
+    PatchTrees trees;
+    // Planar subpatches in tree order, with their triangle ranges and error bounds.
+    std::vector<Subpatch> subpatches;
+    TessellationStats stats;
+};
+
+} // namespace seamless

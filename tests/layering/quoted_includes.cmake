@@ -1,0 +1,20 @@
+# SPDX-License-Identifier: MIT
+# Fails when a file of lib/ includes with quotes ("..."), which would reach
+# another stage's header without its include tree (tests/layering).
+file(GLOB_RECURSE _files ${LIB_DIR}/*.h ${LIB_DIR}/*.cpp)
+set(_bad "")
+foreach(f IN LISTS _files)
+  file(STRINGS ${f} _lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+  if(_lines)
+    list(APPEND _bad "${f}: ${_lines}")
+  endif()
+endforeach()
+list(LENGTH _files _count)
+if(_count LESS 100)
+  message(FATAL_ERROR "only ${_count} files under ${LIB_DIR}: wrong folder?")
+endif()
+if(_bad)
+  string(REPLACE ";" "\n" _bad "${_bad}")
+  message(FATAL_ERROR "quoted includes in lib/:\n${_bad}")
+endif()
+message(STATUS "${_count} files of lib/ include by <seamless/...> only")
