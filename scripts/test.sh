@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: MIT
 # Installs what is missing, builds (Release) and runs every test through ctest;
 # then one clang build with ASan+UBSan and assertions on (build-san/) serves
-# (a) the fast tests and (b) every libFuzzer target but STEP/IGES, each 10 s on
-# its seed corpus. Any failure, sanitizer report or fuzzer crash fails the
+# (a) every stage's tests but the [heavy] ones and (b) every libFuzzer target
+# but STEP/IGES, each 10 s on its seed corpus. Any failure, sanitizer report or fuzzer crash fails the
 # script. The last line is "N passed, N failed" over all parts.
 #
 # Time: .ci/run must stay under 20 minutes on 2 cores. Each part prints
@@ -80,9 +80,12 @@ release_part() {
 # SEAMLESS_FUZZ_LINK_LIBRARY). No NDEBUG: every assert is live. Compile time
 # is most of this part: line tables only (stack traces keep file:line) and
 # the CLI and the tests at -O0 (SEAMLESS_CLI_TEST_COMPILE_OPTIONS) halve it.
-# (a) runs the fast tests: intervals, models (readers), meshes (IO and check)
-# and the CLI. The spline enclosure sweeps and the render and tessellation
-# tests stay in the Release run: under ASan they cost more than the budget.
+# (a) runs the tests of every stage (base, interval, spline, model,
+# tessellate, mesh, render) and the CLI, so that every SEAMLESS_DCHECK and
+# assert is live once, but for the test cases tagged [heavy] (fine
+# tessellations and sweeps: ASan makes them 50-100 times slower; they run in
+# the Release part) and [native-allocator] (they measure glibc's malloc,
+# which ASan replaces): SEAMLESS_TEST_SPEC, tests/CMakeLists.txt.
 sanitize_part() {
   start_part
   # clang-14 is what scripts/setup.sh installs; the clang++ link comes from another package.
@@ -91,14 +94,10 @@ sanitize_part() {
   cmake -S "$here" -B "$here/build-san" -DCMAKE_CXX_COMPILER="$clangxx" -DCMAKE_BUILD_TYPE=Sanitize \
     -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only $san -fsanitize=fuzzer-no-link" -DSEAMLESS_BUILD_BENCH=OFF \
     -DSEAMLESS_CLI_TEST_COMPILE_OPTIONS=-O0 -DSEAMLESS_FUZZ=ON -DSEAMLESS_FUZZ_LINK_LIBRARY=ON \
-    "${launcher[@]}" >/dev/null
-  san_targets=(seamless seamless_cli test_interval test_model test_mesh test_tools fuzz)
-  san_tests='^(interval|model|mesh|tools):'
-  # Tests of test_mesh that tessellate the bundled models finely before they
-  # check or measure (tolerance_test.cpp, deviation_test.cpp and the bundled
-  # models): 15 s to 10 minutes each under ASan. They stay in the Release run;
-  # the mesh readers and check keep the rest.
-  san_slow='^mesh:(bundled models tessellate|teapot and teacup pass|measured deviation|finer tolerances measure|check CLI: two sheets, one with an extra knot|a requested tolerance is certified|tolerances from 1e-1 to 1e-5|the tolerance is reached|the teapot.s lid and knob|the result does not depend on the thread count|a sweep scales)'
+    "-DSEAMLESS_TEST_SPEC=~[heavy]~[native-allocator]" "${launcher[@]}" >/dev/null
+  san_targets=(seamless seamless_cli test_base test_interval test_spline test_model test_tessellate
+               test_mesh test_render test_tools fuzz)
+  san_tests='^(base|interval|spline|model|tessellate|mesh|render|tools):'
   if cmake --build "$here/build-san" -j"$jobs" --target "${san_targets[@]}" >"$here/build-san/build.log" 2>&1; then
     report_time "sanitizer build"
     start_part
@@ -108,7 +107,7 @@ sanitize_part() {
     ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1 \
       LSAN_OPTIONS="suppressions=$here/tests/lsan.supp:print_suppressions=0" \
       UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-      ctest --output-on-failure -j"$jobs" --timeout 600 -R "$san_tests" -E "$san_slow" 2>&1 | tee ctest.log || true
+      ctest --output-on-failure -j"$jobs" --timeout 600 -R "$san_tests" 2>&1 | tee ctest.log || true
     count_ctest ctest.log
     report_time "sanitizer tests"
 
