@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // certified_fan_bound (error_bound.h): the bound of a subpatch's final fan
 // over its ring, phi shared with the neighbouring fans (PhiMemo).
+#include <seamless/base/check.h>
 #include <seamless/base/min_max3.h>
 #include <seamless/tessellate/bounds/error_bound.h>
 #include <seamless/tessellate/bounds/net_bounds.h>
 #include <seamless/tessellate/bounds/surface_feet.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -319,7 +319,7 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
                            std::span<const RingPoint> ring, double scale, double target) {
     const size_t n = ring.size();
-    assert(n >= 3);
+    SEAMLESS_CHECK(n >= 3, "a fan ring of fewer than three points");
     // On the heap (400 KB), one thread_local access (a call in a shared library).
     thread_local std::unique_ptr<PhiMemo> memo_store;
     if (!memo_store) memo_store = std::make_unique<PhiMemo>();

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/tessellate/bounds/error_bound.h>
 #include <seamless/tessellate/bounds/net_bounds.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -47,7 +47,7 @@ template <class Patch> Net make_net(const Patch& b, Vec3 c) {
             if (!one_weight) n.add(Net::kP0, h.point() - c);
             n.wlo = std::min(n.wlo, h.w);
         }
-    assert(n.wlo > 0);
+    SEAMLESS_CHECK(n.wlo > 0, "a weight of the net is not positive");
     auto X = [&](int i, int j) {
         const std::array<double, 3>& v = x[i * O + j];
         return Vec3{v[0], v[1], v[2]};
@@ -100,7 +100,7 @@ Net one_weight_bicubic_net(const BicubicNet& b, Vec3 c) {
         X[2][k] = h.z - h.w * c.z;
         n.wlo = std::min(n.wlo, h.w);
     }
-    assert(n.wlo > 0);
+    SEAMLESS_CHECK(n.wlo > 0, "a weight of the net is not positive");
     double* const out[3] = {n.dx.data(), n.dy.data(), n.dz.data()};
     for (int d = 0; d < 3; ++d) {
         const double* x = X[d];

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/tessellate/bounds/power_basis.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -34,7 +34,7 @@ bool has_power_basis(const BezierPatch& b) {
 }
 
 PowerBasisPatch power_basis(const BezierPatch& b, bool rounding_bound) {
-    assert(has_power_basis(b));
+    SEAMLESS_DCHECK(has_power_basis(b), "power basis of a patch that is not bicubic polynomial");
     PowerBasisPatch pb;
     const HPoint& o = b.at(0, 0);
     pb.origin = {o.x, o.y, o.z};

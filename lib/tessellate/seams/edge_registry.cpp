@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The edge registry (shared_edges.h): every subpatch side on its line, the
 // lines' segments sorted, built per patch in parallel.
+#include <seamless/base/check.h>
 #include <seamless/base/first_met.h>
 #include <seamless/base/parallel/block_schedule.h>
 #include <seamless/base/parallel/cache_line.h>
@@ -11,7 +12,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <numeric>
 #include <vector>
 
@@ -92,7 +92,7 @@ SideOnLine side_on_line(const EdgeRegistry& reg, const BoundaryMatch& m, int pat
     std::uint64_t key = kNoKey;
     SideOnLine side = locate_side(m, patch, r, k, key);
     if (key != kNoKey) side.line = find_interior_line(reg, key);
-    assert(key == kNoKey || side.line >= 0);
+    SEAMLESS_CHECK(key == kNoKey || side.line >= 0, "an interior line missing from the registry");
     return side;
 }
 

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/spline/surface_point.h>
 #include <seamless/tessellate/bounds/error_bound.h>
 #include <seamless/tessellate/bounds/power_basis.h>
@@ -6,7 +7,6 @@
 #include <seamless/tessellate/subdivision/subdivision.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <deque>
 
@@ -197,7 +197,7 @@ std::uint64_t subpatch_key(int patch, const ParamRect& r) {
 
 int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
               PatchTrees& trees, std::vector<Subpatch>& out) {
-    assert(options.max_depth >= 0);
+    SEAMLESS_CHECK(options.max_depth >= 0, "negative max_depth");
     // Per thread; emptied when the degrees change, so that every entry a
     // split does not write is as in a fresh BezierPatch.
     thread_local std::deque<std::array<BezierPatch, 2>> halves;
