@@ -2,7 +2,7 @@
 // The fans' certified bounds (fan_certification.h): a bound kept for the next
 // pass is found again by its ring, and one kept without its ring is computed
 // again to the same value.
-#include "tessellate/teapot_pass.h"
+#include <tessellate/teapot_pass.h>
 
 #include <seamless/tessellate/bounds/fan_certification.h>
 #include <seamless/tessellate/fans/subpatch_ring.h>
