@@ -303,8 +303,13 @@ void TessellationPass::build_mesh(const PatchRanges& ranges, const Rings& rings,
     const FanNormals normals =
         fan_normals(patches_, out_.subpatches, ranges.leaf_start, rings.rings, options_.threads);
     lap(phase.normals, PassProgress::kNormals);
-    write_fans(patches_, rings.rings, normals, options_.patch_trees ? &ranges.node_start : nullptr,
-               std::move(vertices.positions), hull_scale_, options_.threads, out_);
+    const FanSources fans{.patches = &patches_,
+                          .rings = &rings.rings,
+                          .normals = &normals,
+                          .node_start = options_.patch_trees ? &ranges.node_start : nullptr,
+                          .hull_scale = hull_scale_,
+                          .threads = options_.threads};
+    write_fans(fans, std::move(vertices.positions), out_);
     lap(phase.fans, PassProgress::kFans);
     if (options_.orient_surfaces)
         out_.stats.flipped_surfaces = orient_surfaces(out_.mesh, options_.threads).flipped_surfaces;
