@@ -131,40 +131,78 @@ Node vertex_phi(const Surface& b, const RingPoint& p, PhiMemo& memo) {
     return split_bounds(box_net(patch, s0, s1, t0, t1, centre), n);
 }
 
-// The bound of certified_fan_bound with every fan triangle refined m times
-// (m a multiple of kSideRefinement), without the rounding allowance. phi at
-// the refined vertices on the radial edges and inside the fan triangles (no
-// other fan's phi meets them) takes up to `steps` Gauss-Newton steps toward
-// the foot; 0: phi is the parameter map there, the parametric distance
-// (looser where the parametrisation drifts). The shared sides' points always
-// take the same steps, so the fans sharing them agree whatever `steps` each
-// one takes. A refined triangle's bound at or below `enough` (0: none) is
-// not tightened further (a tolerance needs no bound below itself).
-double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const ParamRect& r,
-                              Vec3 centre, std::span<const RingPoint> ring, int m, int steps,
-                              double enough, PhiMemo& memo) {
-    const size_t n = ring.size();
-    const int side_step = m / kSideRefinement;
-    const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
-    const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-    const Node centre_node{{sc, tc}, S.point(sc, tc) - centre};
-    const double inner_limit =
-        0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
+// A fan as its bound reads it: the subpatch `r` of `patch` (evaluated by
+// `S`), its centre vertex and its ring.
+struct Fan {
+    const BezierPatch& patch;
+    const Surface& S;
+    const ParamRect& r;
+    Vec3 centre;
+    std::span<const RingPoint> ring;
+};
 
-    // (1) phi at the refined vertices of every fan triangle: grid k, a, c is
-    // centre + a/m (P - centre) + c/m (Q - centre), P Q the ring's k-th side.
-    constexpr int K = kMaxCertifyRefinement + 1;
+constexpr int K = kMaxCertifyRefinement + 1;
+
+// The box of a subpatch's parameters and its feet's.
+struct ParamBox {
+    double s0, s1, t0, t1;
+};
+
+// phi at the refined vertices of every fan triangle, refined m times: grid k,
+// a, c is centre + a/m (P - centre) + c/m (Q - centre), P Q the ring's k-th
+// side. On the radial edges and inside the fan triangles (no other fan's phi
+// meets them) phi takes up to `steps` Gauss-Newton steps toward the foot.
+class RefinedPhi {
+  public:
+    RefinedPhi(const Fan& fan, int m, int steps, PhiMemo& memo);
+    Node& node(size_t k, int a, int c) const { return grids_[(k * K + a) * K + c]; }
+    // phi on every radial edge, from the centre to each ring vertex.
+    void radial_edges();
+    // phi on fan triangle k's edges and inside it.
+    void triangle(size_t k);
+    // Step (2): the box of all refined vertices' parameters.
+    ParamBox box() const;
+
+  private:
+    void shared_side(size_t k);
+    void inside(size_t k);
+
+    const Fan& fan_;
+    int m_, steps_;
+    PhiMemo& memo_;
+    double sc_, tc_, inner_limit_;
+    Node centre_node_;
+    // Plain pointers: each thread_local access in a shared library is a call.
+    std::array<Node, K>* radial_;
+    Node* grids_;
+};
+
+RefinedPhi::RefinedPhi(const Fan& fan, int m, int steps, PhiMemo& memo)
+    : fan_(fan), m_(m), steps_(steps), memo_(memo) {
+    const ParamRect& r = fan.r;
+    sc_ = 0.5 * (param_of(r.s0) + param_of(r.s1));
+    tc_ = 0.5 * (param_of(r.t0) + param_of(r.t1));
+    centre_node_ = {{sc_, tc_}, fan.S.point(sc_, tc_) - fan.centre};
+    inner_limit_ = 0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
+    const size_t n = fan.ring.size();
     thread_local std::vector<std::array<Node, K>> radial_store;
     thread_local std::vector<Node> grid_store;
     radial_store.resize(n);
     grid_store.resize(n * K * K);
-    // Plain pointers: each thread_local access in a shared library is a call.
-    std::array<Node, K>* const radial = radial_store.data();
-    Node* const grids = grid_store.data();
-    auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
-    for (size_t i = 0; i < n; ++i) {
-        radial[i][0] = centre_node;
-        radial[i][m] = vertex_phi(S, ring[i], memo);
+    radial_ = radial_store.data();
+    grids_ = grid_store.data();
+}
+
+void RefinedPhi::radial_edges() {
+    const Surface& S = fan_.S;
+    const std::span<const RingPoint> ring = fan_.ring;
+    const Vec3 centre = fan_.centre;
+    const double sc = sc_, tc = tc_, inner_limit = inner_limit_;
+    const int m = m_, steps = steps_;
+    std::array<Node, K>* const radial = radial_;
+    for (size_t i = 0; i < ring.size(); ++i) {
+        radial[i][0] = centre_node_;
+        radial[i][m] = vertex_phi(S, ring[i], memo_);
         const Param p = param(ring[i]);
         for (int a = 1; a < m; ++a) {
             const double f = static_cast<double>(a) / m;
@@ -175,89 +213,118 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
             radial[i][a] = {u, g};
         }
     }
-    for (size_t k = 0; k < n; ++k) {
-        const size_t k1 = (k + 1) % n;
-        const RingPoint &P = ring[k], &Q = ring[k1];
-        for (int a = 0; a <= m; ++a) node(k, a, 0) = radial[k][a];
-        for (int c = 0; c <= m; ++c) node(k, 0, c) = radial[k1][c];
-        // The side P Q: points in a canonical order (from the endpoint with the
-        // smaller grid point), the same for the fan on its other side.
-        const bool forward = std::pair(param(P).s, param(P).t) < std::pair(param(Q).s, param(Q).t);
-        const RingPoint& lo = forward ? P : Q;
-        const RingPoint& hi = forward ? Q : P;
-        const Node& nlo = forward ? node(k, m, 0) : node(k, 0, m);
-        const Node& nhi = forward ? node(k, 0, m) : node(k, m, 0);
-        const Param plo = param(lo), phi_ = param(hi);
-        const bool side = on_patch_side(lo, hi);
-        const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
-        PhiMemo::Side& memo_side =
-            memo.sides[PhiMemo::slot(PhiMemo::hash(hi, PhiMemo::hash(lo, 2)))];
-        Node* const canon = memo_side.canon;
-        const bool known = memo_side.generation == memo.generation &&
-                           PhiMemo::same(memo_side.lo, lo) && PhiMemo::same(memo_side.hi, hi);
-        if (!known) {
-            memo_side.generation = memo.generation;
-            memo_side.lo = lo;
-            memo_side.hi = hi;
-            canon[0] = nlo;
-            canon[kSideRefinement] = nhi;
-        }
-        for (int j = 1; j < kSideRefinement && !known; ++j) {
-            const double f = static_cast<double>(j) / kSideRefinement;
-            const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
-            const Vec3 x = lo.position + f * (hi.position - lo.position);
-            Node& cn = canon[j];
-            if (side) {
-                // Along the patch's side, between phi(lo) and phi(hi).
-                const double z =
-                    foot_on_line(S, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
-                cn.u = {nlo.u.s + z * (nhi.u.s - nlo.u.s), nlo.u.t + z * (nhi.u.t - nlo.u.t)};
-            } else {
-                cn.u = foot_iterated(S, x, w, seg_limit, kFootSteps, cn.g);
-            }
-        }
-        // The refined points between: phi linear between the shared points.
-        for (int j = 1; j < m; ++j) {
-            const int c = forward ? j : m - j;
-            if (j % side_step == 0) {
-                node(k, m - c, c) = canon[j / side_step];
-                continue;
-            }
-            const Node& a0 = canon[j / side_step];
-            const Node& a1 = canon[j / side_step + 1];
-            const double f = static_cast<double>(j % side_step) / side_step;
-            const double fx = static_cast<double>(j) / m;
-            Node& x = node(k, m - c, c);
-            x.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
-            x.g = S.point(x.u.s, x.u.t) - (lo.position + fx * (hi.position - lo.position));
-        }
-        // Inside the fan triangle.
-        const Param pp = param(P), pq = param(Q);
-        for (int a = 1; a < m; ++a)
-            for (int c = 1; a + c < m; ++c) {
-                const double fa = static_cast<double>(a) / m, fc = static_cast<double>(c) / m;
-                const Param w{sc + fa * (pp.s - sc) + fc * (pq.s - sc),
-                              tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
-                const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
-                Node& y = node(k, a, c);
-                y.u = foot_iterated(S, x, w, inner_limit, steps, y.g);
-            }
-    }
+}
 
-    // (2) Derivative bounds over the box of all those parameters: phi is
-    // linear on each refined triangle, so phi(sigma) lies in the box of its
-    // three vertices, inside this one (the subpatch plus the feet's moves).
+void RefinedPhi::triangle(size_t k) {
+    const size_t k1 = (k + 1) % fan_.ring.size();
+    for (int a = 0; a <= m_; ++a) node(k, a, 0) = radial_[k][a];
+    for (int c = 0; c <= m_; ++c) node(k, 0, c) = radial_[k1][c];
+    shared_side(k);
+    inside(k);
+}
+
+// The side P Q: points in a canonical order (from the endpoint with the
+// smaller grid point), the same for the fan on its other side, which meets
+// the same kSideRefinement + 1 points in PhiMemo.
+void RefinedPhi::shared_side(size_t k) {
+    const Surface& S = fan_.S;
+    const int m = m_, side_step = m / kSideRefinement;
+    const RingPoint &P = fan_.ring[k], &Q = fan_.ring[(k + 1) % fan_.ring.size()];
+    const bool forward = std::pair(param(P).s, param(P).t) < std::pair(param(Q).s, param(Q).t);
+    const RingPoint& lo = forward ? P : Q;
+    const RingPoint& hi = forward ? Q : P;
+    const Node& nlo = forward ? node(k, m, 0) : node(k, 0, m);
+    const Node& nhi = forward ? node(k, 0, m) : node(k, m, 0);
+    const Param plo = param(lo), phi_ = param(hi);
+    const bool side = on_patch_side(lo, hi);
+    const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
+    PhiMemo::Side& memo_side = memo_.sides[PhiMemo::slot(PhiMemo::hash(hi, PhiMemo::hash(lo, 2)))];
+    Node* const canon = memo_side.canon;
+    const bool known = memo_side.generation == memo_.generation &&
+                       PhiMemo::same(memo_side.lo, lo) && PhiMemo::same(memo_side.hi, hi);
+    if (!known) {
+        memo_side.generation = memo_.generation;
+        memo_side.lo = lo;
+        memo_side.hi = hi;
+        canon[0] = nlo;
+        canon[kSideRefinement] = nhi;
+    }
+    for (int j = 1; j < kSideRefinement && !known; ++j) {
+        const double f = static_cast<double>(j) / kSideRefinement;
+        const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
+        const Vec3 x = lo.position + f * (hi.position - lo.position);
+        Node& cn = canon[j];
+        if (side) {
+            // Along the patch's side, between phi(lo) and phi(hi).
+            const double z =
+                foot_on_line(S, x, {nlo.u, nhi.u, 0.0, 1.0}, f, 0.5 / kSideRefinement, cn.g);
+            cn.u = {nlo.u.s + z * (nhi.u.s - nlo.u.s), nlo.u.t + z * (nhi.u.t - nlo.u.t)};
+        } else {
+            cn.u = foot_iterated(S, x, w, seg_limit, kFootSteps, cn.g);
+        }
+    }
+    // The refined points between: phi linear between the shared points.
+    for (int j = 1; j < m; ++j) {
+        const int c = forward ? j : m - j;
+        if (j % side_step == 0) {
+            node(k, m - c, c) = canon[j / side_step];
+            continue;
+        }
+        const Node& a0 = canon[j / side_step];
+        const Node& a1 = canon[j / side_step + 1];
+        const double f = static_cast<double>(j % side_step) / side_step;
+        const double fx = static_cast<double>(j) / m;
+        Node& x = node(k, m - c, c);
+        x.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
+        x.g = S.point(x.u.s, x.u.t) - (lo.position + fx * (hi.position - lo.position));
+    }
+}
+
+// Inside fan triangle k.
+void RefinedPhi::inside(size_t k) {
+    const Surface& S = fan_.S;
+    const Vec3 centre = fan_.centre;
+    const double sc = sc_, tc = tc_, inner_limit = inner_limit_;
+    const int m = m_, steps = steps_;
+    const RingPoint &P = fan_.ring[k], &Q = fan_.ring[(k + 1) % fan_.ring.size()];
+    const Param pp = param(P), pq = param(Q);
+    for (int a = 1; a < m; ++a)
+        for (int c = 1; a + c < m; ++c) {
+            const double fa = static_cast<double>(a) / m, fc = static_cast<double>(c) / m;
+            const Param w{sc + fa * (pp.s - sc) + fc * (pq.s - sc),
+                          tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
+            const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
+            Node& y = node(k, a, c);
+            y.u = foot_iterated(S, x, w, inner_limit, steps, y.g);
+        }
+}
+
+// phi is linear on each refined triangle, so phi(sigma) lies in the box of
+// its three vertices, inside this one (the subpatch plus the feet's moves).
+ParamBox RefinedPhi::box() const {
+    const ParamRect& r = fan_.r;
     double bs0 = param_of(r.s0), bs1 = param_of(r.s1), bt0 = param_of(r.t0), bt1 = param_of(r.t1);
-    for (size_t k = 0; k < n; ++k)
+    const int m = m_;
+    for (size_t k = 0; k < fan_.ring.size(); ++k)
         for (int a = 0; a <= m; ++a)
             for (int c = 0; a + c <= m; ++c) {
                 const Param& u = node(k, a, c).u;
                 bs0 = std::min(bs0, u.s), bs1 = std::max(bs1, u.s);
                 bt0 = std::min(bt0, u.t), bt1 = std::max(bt1, u.t);
             }
-    const Net net = box_net(patch, bs0, bs1, bt0, bt1, centre);
+    return {bs0, bs1, bt0, bt1};
+}
 
-    // (3) The bound on every refined triangle.
+// Step (3): the bound on every refined triangle, from the derivative bounds
+// of `net` over `box`, without the rounding allowance.
+double refined_bound(const Fan& fan, const RefinedPhi& phi, int m, const Net& net,
+                     const ParamBox& box, double enough) {
+    const BezierPatch& patch = fan.patch;
+    const std::span<const RingPoint> ring = fan.ring;
+    const Vec3 centre = fan.centre;
+    const size_t n = ring.size();
+    const double bs0 = box.s0, bs1 = box.s1, bt0 = box.t0, bt1 = box.t1;
+    auto node = [&phi](size_t k, int a, int c) -> const Node& { return phi.node(k, a, c); };
     const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
     // The largest square: the root is monotone and correctly rounded, so the
     // root of the largest square is the largest root, bit for bit, and no root
@@ -314,6 +381,27 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
     return std::sqrt(bound2) * (1 + 64 * kEps);
 }
 
+// The bound of certified_fan_bound with every fan triangle refined m times
+// (m a multiple of kSideRefinement), without the rounding allowance. phi at
+// the refined vertices on the radial edges and inside the fan triangles takes
+// up to `steps` Gauss-Newton steps toward the foot; 0: phi is the parameter
+// map there, the parametric distance (looser where the parametrisation
+// drifts). The shared sides' points always take the same steps, so the fans
+// sharing them agree whatever `steps` each one takes. A refined triangle's
+// bound at or below `enough` (0: none) is not tightened further (a tolerance
+// needs no bound below itself).
+double certified_fan_bound_at(const Fan& fan, int m, int steps, double enough, PhiMemo& memo) {
+    // (1) phi at the refined vertices of every fan triangle.
+    RefinedPhi phi(fan, m, steps, memo);
+    phi.radial_edges();
+    for (size_t k = 0; k < fan.ring.size(); ++k) phi.triangle(k);
+    // (2) Derivative bounds over the box of all those parameters.
+    const ParamBox box = phi.box();
+    const Net net = box_net(fan.patch, box.s0, box.s1, box.t0, box.t1, fan.centre);
+    // (3) The bound on every refined triangle.
+    return refined_bound(fan, phi, m, net, box, enough);
+}
+
 } // namespace
 
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
@@ -326,6 +414,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     PhiMemo& memo = *memo_store;
     memo.use(patch);
     const Surface S(patch, memo.power ? &memo.pb : nullptr);
+    const Fan fan{patch, S, r, centre, ring};
     // The evaluator's own rounding (power basis) on top of the usual allowance.
     const double allowance =
         rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale) + S.error();
@@ -340,9 +429,9 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         // Without feet inside the fan first: on the teapot at D = 0.001 about
         // 93 % of the fans certify so, with one evaluation per refined vertex.
         for (int steps : {0, kFootSteps}) {
-            coarse = std::min(coarse, certified_fan_bound_at(patch, S, r, centre, ring,
-                                                             kSideRefinement, steps, enough, memo) +
-                                          allowance);
+            coarse =
+                std::min(coarse, certified_fan_bound_at(fan, kSideRefinement, steps, enough, memo) +
+                                     allowance);
             if (coarse <= target) return coarse;
         }
     }
@@ -359,9 +448,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     if (m == kSideRefinement && target > 0) return coarse;
-    return std::min(coarse,
-                    certified_fan_bound_at(patch, S, r, centre, ring, m, kFootSteps, enough, memo) +
-                        allowance);
+    return std::min(coarse, certified_fan_bound_at(fan, m, kFootSteps, enough, memo) + allowance);
 }
 
 } // namespace seamless

@@ -141,7 +141,7 @@ FanResult fan_bound_at(const Surface& b, Vec3 centre, const std::array<Vec3, 4>&
             const double tau = static_cast<double>(c) / m;
             const Vec3 x = V[k] + tau * (V[k1] - V[k]);
             Vec3 g;
-            lo = foot_on_line(b, x, kCorner[k], kCorner[k1], tau, lo, 1.0, 0.5 / m, g);
+            lo = foot_on_line(b, x, {kCorner[k], kCorner[k1], lo, 1.0}, tau, 0.5 / m, g);
             const Param u{kCorner[k].s + lo * (kCorner[k1].s - kCorner[k].s),
                           kCorner[k].t + lo * (kCorner[k1].t - kCorner[k].t)};
             grid[a][c] = {u, g};
