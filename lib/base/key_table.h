@@ -3,8 +3,8 @@
 // subdivision's verdicts, the certified bounds; tessellation_pass.h), by subpatch_key:
 // open addressing over one flat array, linear probing, at most half full and
 // doubled when it would be more. One allocation per doubling instead of a heap
-// node per key (some 60,000 keys at teapot D = 0.001, allocated in the passes
-// and freed one by one at the end).
+// node per key (tens of thousands of keys, allocated in the passes and freed
+// one by one at the end).
 #pragma once
 
 #include <seamless/base/first_met.h>

@@ -426,8 +426,8 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     // What each refined triangle's bound may reach with the result <= target.
     const double enough = target > 0 ? std::max(target - allowance, 0.0) * (1 - 128 * kEps) : 0;
     if (target > 0) {
-        // Without feet inside the fan first: on the teapot at D = 0.001 about
-        // 93 % of the fans certify so, with one evaluation per refined vertex.
+        // Without feet inside the fan first: most fans certify so, with one
+        // evaluation per refined vertex.
         for (int steps : {0, kFootSteps}) {
             coarse =
                 std::min(coarse, certified_fan_bound_at(fan, kSideRefinement, steps, enough, memo) +

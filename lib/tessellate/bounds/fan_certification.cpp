@@ -46,7 +46,7 @@ std::vector<char> FanCertification::certify(const SubpatchRings& rings,
             const KnownBounds& k = known_[sp.patch];
             const KnownBound* b = k.bounds.find(subpatch_key(sp.patch, sp.rect));
             // A patch left as it was: its rings are not built and compared
-            // again (teapot D = 0.001, second pass: 30 of 32 patches).
+            // again (most patches in a later pass).
             if (same && (*same)[sp.patch] && b && b->rect == sp.rect) {
                 sp.error_bound = b->bound;
                 continue;
