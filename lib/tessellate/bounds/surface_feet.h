@@ -2,7 +2,7 @@
 // The surface the fan bounds evaluate and the Gauss-Newton feet of their
 // map phi (error_bound.h: the construction; fan_bound.cpp: the four-triangle
 // bound of the subdivision; certified_fan_bound.cpp: the bound of the final
-// fans). Internal to those two files.
+// fans, with fan_phi.h). Internal to those files.
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
