@@ -14,12 +14,28 @@
 
 using namespace seamless;
 
+namespace {
+
+// The teapot's patches, tessellated on two threads.
+struct Teapot {
+    Model model = load_model(test::model_path("teapot.json"));
+    std::vector<BezierPatch> patches = bezier_patches(model);
+    TessellationOptions options = two_threads();
+    static TessellationOptions two_threads() {
+        TessellationOptions o;
+        o.threads = 2;
+        return o;
+    }
+};
+
+} // namespace
+
 TEST_CASE("TessellationPass: one pass without a tolerance, the triangles of tessellate()",
           "[tessellation_pass]") {
-    const Model model = load_model(test::model_path("teapot.json"));
-    const std::vector<BezierPatch> patches = bezier_patches(model);
-    TessellationOptions o;
-    o.threads = 2;
+    const Teapot in;
+    const Model& model = in.model;
+    const std::vector<BezierPatch>& patches = in.patches;
+    const TessellationOptions& o = in.options;
     TessellationPass pass(model, patches, o);
     const Tessellation t = pass.run(0, true);
     const Tessellation ref = tessellate(model, patches, o);
@@ -31,11 +47,11 @@ TEST_CASE("TessellationPass: one pass without a tolerance, the triangles of tess
 
 TEST_CASE("TessellationPass: split_again splits every subpatch left above the tolerance",
           "[tessellation_pass]") {
-    const Model model = load_model(test::model_path("teapot.json"));
-    const std::vector<BezierPatch> patches = bezier_patches(model);
-    TessellationOptions o;
-    o.threads = 2;
-    o.tolerance = 0.001; // two passes (docs/results/tessellation.md)
+    Teapot in;
+    in.options.tolerance = 0.001; // two passes (docs/results/tessellation.md)
+    const TessellationOptions& o = in.options;
+    const Model& model = in.model;
+    const std::vector<BezierPatch>& patches = in.patches;
     TessellationPass pass(model, patches, o);
     Tessellation first = pass.run(0, false);
     REQUIRE(first.stats.above_tolerance > 0);
