@@ -4,7 +4,8 @@
 // (at most half full), linear probing. The storage is kept across reset().
 #pragma once
 
-#include <cassert>
+#include <seamless/base/check.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -29,7 +30,7 @@ template <class Key, class Hash> class FirstMet {
         if (values_[h] < 0) {
             // More keys than reset() made room for would fill the table and
             // the probe above would never end: the caller's count is wrong.
-            assert(used_ < mask_ / 2 + 1);
+            SEAMLESS_CHECK(used_ < mask_ / 2 + 1, "more keys than reset() made room for");
             keys_[h] = key, values_[h] = value;
             ++used_;
         }

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // What a pass of a tolerance keeps per subpatch for the next (the
-// subdivision's verdicts, the certified bounds; pass_memo.h), by subpatch_key:
+// subdivision's verdicts, the certified bounds; tessellation_pass.h), by subpatch_key:
 // open addressing over one flat array, linear probing, at most half full and
 // doubled when it would be more. One allocation per doubling instead of a heap
-// node per key (some 60,000 keys at teapot D = 0.001, allocated in the passes
-// and freed one by one at the end).
+// node per key (tens of thousands of keys, allocated in the passes and freed
+// one by one at the end).
 #pragma once
 
 #include <seamless/base/first_met.h>

@@ -3,8 +3,7 @@
 // of std::max({a, b, c}) and std::min({a, b, c}) (the first of equal ones,
 // NaN kept out alike: each step is `x < y`), without the initializer list,
 // which the compiler walked as a loop in the bounds' refined-triangle loops
-// (fan_bound.cpp, certified_fan_bound.cpp; teapot D = 0.001, 1 thread: 6 M
-// instructions spared).
+// (fan_bound.cpp, certified_fan_bound.cpp).
 #pragma once
 
 #include <algorithm>

@@ -20,7 +20,7 @@ class PassProgress {
     // `report` may be empty (nothing is reported). The first pass reports 0
     // to 0.9 of the whole; each later one, which redoes only what changed,
     // half of what the one before left.
-    PassProgress(const std::function<void(double)>& report, int pass) : report_(report) {
+    PassProgress(const std::function<void(double)>& report, int pass) : report_(&report) {
         double left = 0.1;
         for (int k = 1; k < pass; ++k) left /= 2;
         start_ = pass == 0 ? 0 : 1 - left;
@@ -29,16 +29,16 @@ class PassProgress {
 
     // The pass is `fraction` done. From any thread.
     void at(double fraction) const {
-        if (report_) report_(start_ + span_ * fraction);
+        if (*report_) (*report_)(start_ + span_ * fraction);
     }
     // `done` of `total` of the phase that runs from `from` to `to` of the pass.
     void within(double from, double to, double done, double total) const {
-        if (report_ && total > 0) at(from + (to - from) * (done < total ? done / total : 1.0));
+        if (*report_ && total > 0) at(from + (to - from) * (done < total ? done / total : 1.0));
     }
-    explicit operator bool() const { return static_cast<bool>(report_); }
+    explicit operator bool() const { return static_cast<bool>(*report_); }
 
   private:
-    const std::function<void(double)>& report_;
+    const std::function<void(double)>* report_; // not owned
     double start_ = 0, span_ = 0;
 };
 

@@ -2,15 +2,12 @@
 #include <seamless/base/error.h>
 #include <seamless/base/parallel/parallel.h>
 #include <seamless/base/phase_clock.h>
-#include <seamless/tessellate/pass_memo.h>
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/tessellation_pass.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
-#include <unordered_set>
 
 namespace seamless {
 
@@ -35,29 +32,21 @@ void add(PhaseSeconds& sum, const PhaseSeconds& p) {
 // above the tolerance once neighbours add vertices to its sides (its final
 // fan and phi differ from the four triangles'); such subpatches are split in
 // another pass (rarely more than one).
-// The trees' hulls come out multiplied by `hull_scale` (tessellate_pass).
+// The trees' hulls come out multiplied by `hull_scale` (TessellationPass).
 Tessellation tessellate_at_unit_scale(const Model& model, const std::vector<BezierPatch>& patches,
                                       const TessellationOptions& options, double hull_scale) {
     const auto start = std::chrono::steady_clock::now();
-    std::unordered_set<std::uint64_t> split;
-    PassMemo memo(patches.size(), options.tolerance > 0);
+    TessellationPass passes(model, patches, options, hull_scale);
     Tessellation t;
     PhaseSeconds phases;
     constexpr int kPasses = 5;
     int pass = 0;
     for (;; ++pass) {
         const bool last = options.tolerance <= 0 || pass == kPasses - 1;
-        t = tessellate_pass(model, patches, options, split, memo, last, hull_scale, pass);
+        t = passes.run(pass, last);
         add(phases, t.stats.phases);
         if (last || t.stats.above_tolerance == 0) break;
-        std::fill(memo.changed.begin(), memo.changed.end(), 0);
-        for (const Subpatch& sp : t.subpatches)
-            if (splits_again(sp, t.stats.tolerance, options.max_depth)) {
-                split.insert(subpatch_key(sp.patch, sp.rect));
-                memo.changed[sp.patch] = 1;
-            }
-        memo.spare_nodes = std::move(t.trees.nodes);
-        memo.spare_subpatches = std::move(t.subpatches);
+        passes.split_again(t);
     }
     // More than four triangles to a fan can pass the subdivision's count.
     if (t.stats.triangles > options.max_triangles) refuse_triangle_budget(model, options);

@@ -68,9 +68,9 @@ struct TessellationOptions {
     bool certify = true;
     // false: no patch trees (Tessellation::trees stays empty, Subpatch::node
     // unused); the mesh, subpatches and stats are the same. The trees are the
-    // renderer's (TRAY); a caller that only writes the mesh skips about 150,000
-    // nodes of 120 bytes (teapot at D = 0.001: 18 MB of fresh memory, about
-    // 4,500 page faults at ~11 us each on the AMD EPYC VM, i11o).
+    // renderer's (TRAY); a caller that only writes the mesh skips their fresh
+    // memory (about 120 bytes per node, more nodes than triangles) and its
+    // page faults.
     bool patch_trees = true;
 };
 

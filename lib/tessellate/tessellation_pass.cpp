@@ -1,20 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/error.h>
 #include <seamless/base/parallel/parallel.h>
-#include <seamless/base/phase_clock.h>
-#include <seamless/tessellate/bounds/fan_certification.h>
 #include <seamless/tessellate/fans/fan_triangles.h>
-#include <seamless/tessellate/fans/subpatch_ring.h>
 #include <seamless/tessellate/fans/vertex_numbering.h>
-#include <seamless/tessellate/pass_progress.h>
-#include <seamless/tessellate/seams/edge_graph.h>
-#include <seamless/tessellate/seams/shared_edges.h>
 #include <seamless/tessellate/seams/surface_orientation.h>
-#include <seamless/tessellate/subdivision/patch_subdivision.h>
 #include <seamless/tessellate/tessellation_pass.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -41,28 +33,46 @@ std::vector<char> unchanged_rings(const BoundaryMatch& match, const std::vector<
     return same;
 }
 
-// What only the numbering and another pass need: the previous pass's
-// registry, rings and positions (copied from by now), this pass's registry and
-// the rings' keys, and the memo's per-patch tables and trees (freed patch by
-// patch in parallel rather than on the calling thread). Freed before the mesh
-// is built, whose normals, fans and orientation refill their pages. Teapot
-// 1e-4 d_max, 2 passes, 1 thread: those phases' page faults 3,173 -> 131
-// (getrusage per phase), i11r.
-void release_before_mesh(PassMemo& memo, EdgeRegistry& reg, SubpatchRings& rings, int threads) {
-    memo.registry = EdgeRegistry();
-    memo.rings = SubpatchRings();
-    std::vector<Vec3>().swap(memo.positions);
-    memo.rings_kept = false;
-    reg = EdgeRegistry();
-    std::vector<VertexKey>().swap(rings.keys);
-    const int np = static_cast<int>(memo.parts.size());
-    parallel_chunks(np, threads, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p) {
-            memo.verdicts[p] = FanMemo();
-            memo.bounds[p] = KnownBounds();
-            memo.parts[p] = Part();
-        }
-    });
+// The largest magnitude of the box's coordinates (0 when it is empty).
+double magnitude(const Box3& box) {
+    return box.empty() ? 0.0
+                       : std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z),
+                                   std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)});
+}
+
+// What every pass reports alike: d_max, the planarity tolerances (the paper's
+// without a tolerance), the tolerance and the counts of the input.
+TessellationStats pass_stats(const Model& model, const std::vector<BezierPatch>& patches,
+                             const TessellationOptions& options) {
+    TessellationStats st;
+    st.d_max = control_box(model).max_extent();
+    const PlanarityTolerances paper =
+        options.tolerance > 0 ? PlanarityTolerances{} : paper_tolerances(st.d_max);
+    st.eps1 = options.eps1 >= 0 ? options.eps1 : paper.eps1;
+    st.eps2 = options.eps2 >= 0 ? options.eps2 : paper.eps2;
+    st.tolerance = std::max(options.tolerance, 0.0);
+    st.surfaces = static_cast<int>(model.surfaces.size());
+    st.patches = static_cast<int>(patches.size());
+    return st;
+}
+
+// Step (a)'s criteria: the planarity tolerances (off when 0 and not asked
+// for), the tolerance, the angle and max_depth.
+SubdivisionOptions subdivision_options(const TessellationStats& st,
+                                       const TessellationOptions& options) {
+    constexpr double kOff = std::numeric_limits<double>::infinity();
+    SubdivisionOptions sub;
+    sub.eps1 = st.eps1 > 0 || options.eps1 >= 0 ? st.eps1 : kOff;
+    sub.eps2 = st.eps2 > 0 || options.eps2 >= 0 ? st.eps2 : kOff;
+    sub.tolerance = st.tolerance;
+    sub.angle = options.angle;
+    sub.max_depth = options.max_depth;
+    return sub;
+}
+
+// The deviation the patches' costs are ordered by (patch_cost).
+double cost_deviation(const TessellationStats& st) {
+    return st.tolerance > 0 ? st.tolerance : st.eps1 > 0 ? st.eps1 : 1e-3 * st.d_max;
 }
 
 } // namespace
@@ -72,192 +82,248 @@ void refuse_triangle_budget(const Model& model, const TessellationOptions& optio
                               options.max_triangles);
 }
 
-Tessellation tessellate_pass(const Model& model, const std::vector<BezierPatch>& patches,
-                             const TessellationOptions& options,
-                             const std::unordered_set<std::uint64_t>& split, PassMemo& memo,
-                             bool last, double hull_scale, int pass) {
-    const PassProgress progress(options.progress, pass);
-    const auto start = std::chrono::steady_clock::now();
-    Lap lap;
-    Tessellation out;
-    TessellationStats& st = out.stats;
-    PhaseSeconds& phase = st.phases;
-    const Box3 box = control_box(model);
-    st.d_max = box.max_extent();
-    const PlanarityTolerances paper =
-        options.tolerance > 0 ? PlanarityTolerances{} : paper_tolerances(st.d_max);
-    st.eps1 = options.eps1 >= 0 ? options.eps1 : paper.eps1;
-    st.eps2 = options.eps2 >= 0 ? options.eps2 : paper.eps2;
-    st.tolerance = std::max(options.tolerance, 0.0);
-    st.surfaces = static_cast<int>(model.surfaces.size());
-    st.patches = static_cast<int>(patches.size());
-    const double scale =
-        box.empty() ? 0.0
-                    : std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z),
-                                std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)});
-
-    // (a) Split trees by the planarity test alone (section 6).
-    constexpr double kOff = std::numeric_limits<double>::infinity();
-    SubdivisionOptions sub;
-    sub.eps1 = st.eps1 > 0 || options.eps1 >= 0 ? st.eps1 : kOff;
-    sub.eps2 = st.eps2 > 0 || options.eps2 >= 0 ? st.eps2 : kOff;
-    sub.tolerance = st.tolerance;
-    sub.angle = options.angle;
-    sub.max_depth = options.max_depth;
-    sub.split = &split;
-    const double D = st.tolerance > 0 ? st.tolerance : st.eps1 > 0 ? st.eps1 : 1e-3 * st.d_max;
-    const PatchRanges ranges = subdivide_patches(
-        patches, sub, D, options.threads, memo, options.patch_trees ? &out.trees : nullptr,
-        out.subpatches, std::max<std::int64_t>(options.max_triangles, 0) / 4, &progress);
-    if (ranges.over_budget) refuse_triangle_budget(model, options);
-    phase.subdivision += lap();
-    progress.at(PassProgress::kSubdivided);
-
-    // (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on every line.
+TessellationPass::TessellationPass(const Model& model, const std::vector<BezierPatch>& patches,
+                                   const TessellationOptions& options, double hull_scale)
+    : model_(model), patches_(patches), options_(options), hull_scale_(hull_scale),
+      stats_(pass_stats(model, patches, options)), scale_(magnitude(control_box(model))),
+      keep_(options.tolerance > 0),
+      subdivision_(patches, subdivision_options(stats_, options), cost_deviation(stats_),
+                   options.threads, std::max<std::int64_t>(options.max_triangles, 0) / 4, keep_),
+      fans_(patches, scale_, stats_.tolerance, options.threads), changed_(patches.size(), 1),
+      progress_(options.progress, 0) {
     // Shared boundaries agree to the seam tolerance, and at least to the
     // rounding of knot insertion, which scales with the coordinates'
     // magnitude, not with d_max: a model far from the origin needs the larger.
-    st.seam_tolerance =
-        std::max(options.seam_tolerance >= 0 ? options.seam_tolerance : 1e-9 * st.d_max,
-                 64 * std::numeric_limits<double>::epsilon() * scale);
-    if (memo.match_tolerance != st.seam_tolerance) {
-        memo.match = match_boundaries(patches, st.seam_tolerance);
-        memo.match_tolerance = st.seam_tolerance;
+    seam_tolerance_ =
+        std::max(options.seam_tolerance >= 0 ? options.seam_tolerance : 1e-9 * stats_.d_max,
+                 64 * std::numeric_limits<double>::epsilon() * scale_);
+}
+
+Tessellation TessellationPass::run(int pass, bool last) {
+    progress_ = PassProgress(options_.progress, pass);
+    start_ = std::chrono::steady_clock::now();
+    clock_ = Lap();
+    out_ = Tessellation();
+    out_.stats = stats_;
+    const PatchRanges ranges = subdivide();
+    Boundaries boundaries = find_boundaries();
+    Rings rings = collect_rings(ranges, boundaries);
+    VertexRegistry vertices = number_vertices(ranges, boundaries, rings);
+    certify(ranges, boundaries, rings, vertices, last);
+    // Another pass will follow: the mesh of this one is not needed.
+    if (!last && out_.stats.above_tolerance > 0) {
+        keep_for_next_pass(ranges, boundaries, rings, vertices);
+        return std::move(out_);
     }
-    const BoundaryMatch& match = memo.match;
-    st.shared_edges = match.shared_edges;
-    st.collapsed_edges = match.collapsed_edges;
+    release_before_mesh(boundaries, rings);
+    build_mesh(ranges, rings, vertices);
+    TessellationStats& st = out_.stats;
+    st.subpatches = static_cast<int>(out_.subpatches.size());
+    st.triangles = out_.mesh.triangle_count();
+    st.vertices = out_.mesh.vertex_count();
+    st.seconds = seconds_since(start_);
+    return std::move(out_);
+}
+
+void TessellationPass::lap(double& seconds, double fraction) {
+    seconds += clock_();
+    progress_.at(fraction);
+}
+
+// (a) Split trees by the planarity test alone (section 6).
+PatchRanges TessellationPass::subdivide() {
+    PatchRanges ranges =
+        subdivision_.subdivide(changed_, split_, options_.patch_trees ? &out_.trees : nullptr,
+                               out_.subpatches, &progress_);
+    if (ranges.over_budget) refuse_triangle_budget(model_, options_);
+    lap(out_.stats.phases.subdivision, PassProgress::kSubdivided);
+    return ranges;
+}
+
+// (b) Shared boundaries, poles and welded corners; (c) the subpatch sides on
+// every line; (c') the rest of the boundaries by geometry: one edge graph of
+// the model.
+Boundaries TessellationPass::find_boundaries() {
+    TessellationStats& st = out_.stats;
+    st.seam_tolerance = seam_tolerance_;
+    if (!matched_) {
+        match_ = match_boundaries(patches_, seam_tolerance_);
+        matched_ = true;
+    }
+    st.shared_edges = match_.shared_edges;
+    st.collapsed_edges = match_.collapsed_edges;
     // A patch not split again keeps its sides and interior lines (the
-    // previous pass's registry, PassMemo).
-    const int np = static_cast<int>(patches.size());
+    // previous pass's registry).
+    const int np = static_cast<int>(patches_.size());
     std::vector<char> kept(np, 0);
     PreviousRegistry previous_registry;
-    if (!memo.leaf_start.empty()) {
-        for (int p = 0; p < np; ++p) kept[p] = !memo.changed[p];
-        previous_registry = {&memo.registry, &memo.leaf_start, &kept};
+    if (!previous_.leaf_start.empty()) {
+        for (int p = 0; p < np; ++p) kept[p] = !changed_[p];
+        previous_registry = {&previous_.registry, &previous_.leaf_start, &kept};
     }
-    EdgeRegistry reg =
-        build_edge_registry(match, out.subpatches, options.threads, previous_registry);
+    Boundaries b;
+    b.registry = build_edge_registry(match_, out_.subpatches, options_.threads, previous_registry);
     // The previous pass's registry is copied from by now: freed, so that the
     // rings and the numbering refill its pages.
-    memo.registry = EdgeRegistry();
-    // (c') The rest of the boundaries by geometry: one edge graph of the model.
-    const EdgeGraph graph =
-        options.crack_free ? build_edge_graph(patches, match, reg, st.seam_tolerance) : EdgeGraph{};
-    st.seams = graph.seams;
-    st.seam_vertices = graph.seam_vertices;
+    previous_.registry = EdgeRegistry();
+    if (options_.crack_free)
+        b.graph = build_edge_graph(patches_, match_, b.registry, seam_tolerance_);
+    st.seams = b.graph.seams;
+    st.seam_vertices = b.graph.seam_vertices;
+    lap(st.phases.boundaries, PassProgress::kBoundaries);
+    return b;
+}
+
+PreviousRings TessellationPass::previous_rings(const PatchRanges& ranges,
+                                               const Rings& rings) const {
+    if (!rings.previous) return {};
+    return {&previous_.rings, &previous_.leaf_start, &ranges.leaf_start, &rings.same,
+            &previous_.positions};
+}
+
+// (d) Fans: each planar subpatch from its centre over its ring. (d0) Each
+// subpatch's ring and centre point on its own, in parallel. A patch's rings
+// are the previous pass's when neither it nor a patch across its edges was
+// split again (its sides' lines hold the same segments), and no seam vertices
+// or aliases are involved; so are their vertices' positions (each the exact
+// point of its key).
+Rings TessellationPass::collect_rings(const PatchRanges& ranges, const Boundaries& boundaries) {
+    const EdgeGraph& graph = boundaries.graph;
+    Rings r;
+    if (previous_.rings_kept && graph.points.empty() && graph.alias.empty()) {
+        r.same = unchanged_rings(match_, changed_);
+        r.previous = true;
+    }
+    r.rings =
+        seamless::collect_rings(patches_, out_.subpatches, boundaries.registry, graph,
+                                options_.crack_free, options_.threads, previous_rings(ranges, r));
+    lap(out_.stats.phases.rings, PassProgress::kRings);
+    return r;
+}
+
+// (d1) The rings' vertices, numbered as first met in subpatch order (each
+// ring, then its centre).
+VertexRegistry TessellationPass::number_vertices(const PatchRanges& ranges,
+                                                 const Boundaries& boundaries, Rings& rings) {
     VertexRegistry vr;
-    vr.patches = &patches;
-    vr.match = &match;
-    vr.edges = &reg;
-    vr.alias = &graph.alias;
-    vr.crack_free = options.crack_free;
+    vr.patches = &patches_;
+    vr.match = &match_;
+    vr.edges = &boundaries.registry;
+    vr.alias = &boundaries.graph.alias;
+    vr.crack_free = options_.crack_free;
     // With a tolerance every vertex is its exact surface point: a corner a
     // coarser neighbour's straight segment held off the surface by its sagitta
     // lifted the finer side's bound above the tolerance across patch edges,
     // where phi may not move it, and halving either side did not end it (the
     // sides stayed a level apart pass after pass). The fans on both sides run
     // over every vertex on their sides, by index, so no crack opens.
-    vr.straight_segments = st.tolerance <= 0;
-    phase.boundaries += lap();
-    progress.at(PassProgress::kBoundaries);
+    vr.straight_segments = out_.stats.tolerance <= 0;
+    seamless::number_vertices(out_.subpatches, ranges.leaf_start, boundaries.graph,
+                              options_.threads, vr, rings.rings, previous_rings(ranges, rings));
+    lap(out_.stats.phases.numbering, PassProgress::kNumbered);
+    return vr;
+}
 
-    // (d) Fans: each planar subpatch from its centre over its ring.
-    TriangleMesh& mesh = out.mesh;
-    for (const BSplineSurface& s : model.surfaces) mesh.surface_names.push_back(s.name);
-    // (d0) Each subpatch's ring and centre point on its own, in parallel.
-    // A patch's rings are the previous pass's when neither it nor a patch
-    // across its edges was split again (its sides' lines hold the same
-    // segments), and no seam vertices or aliases are involved; so are their
-    // vertices' positions (each the exact point of its key).
-    std::vector<char> same(np, 0);
-    PreviousRings previous;
-    if (memo.rings_kept && graph.points.empty() && graph.alias.empty()) {
-        same = unchanged_rings(match, memo.changed);
-        previous = {&memo.rings, &memo.leaf_start, &ranges.leaf_start, &same, &memo.positions};
-    }
-    SubpatchRings rings = collect_rings(patches, out.subpatches, reg, graph, options.crack_free,
-                                        options.threads, previous);
-    phase.rings += lap();
-    progress.at(PassProgress::kRings);
-    // (d1) Their vertices, numbered as first met in subpatch order (each ring,
-    // then its centre).
-    number_vertices(out.subpatches, ranges.leaf_start, graph, options.threads, vr, rings, previous);
-    phase.numbering += lap();
-    progress.at(PassProgress::kNumbered);
-
-    // (d2) Each subpatch's certified bound on its own, in parallel.
-    const bool certify = options.certify || st.tolerance > 0;
-    if (certify) {
-        const std::vector<char> fresh =
-            certify_fans(patches, rings, vr.positions, scale, st.tolerance, options.threads,
-                         previous.same, memo.bounds, out.subpatches, &progress);
-        std::vector<char> next_changed(np, 0);
-        for (const Subpatch& sp : out.subpatches) {
-            if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
-            st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
-            next_changed[sp.patch] |= splits_again(sp, st.tolerance, options.max_depth);
-        }
-        // For the next pass, if one follows: the rings of patches it may
-        // compare rings of (all where this pass's rings are not kept).
-        if (memo.keep && !last && st.above_tolerance > 0) {
-            const bool kept = graph.points.empty() && graph.alias.empty();
-            std::vector<char> compared;
-            if (kept) {
-                compared = unchanged_rings(match, next_changed);
-                for (char& c : compared) c = !c;
-            }
-            keep_fan_bounds(rings, vr.positions, ranges.leaf_start, options.threads, fresh,
-                            kept ? &compared : nullptr, out.subpatches, memo.bounds);
-        }
-    } else {
-        for (Subpatch& sp : out.subpatches)
+// (d2) Each subpatch's certified bound on its own, in parallel.
+void TessellationPass::certify(const PatchRanges& ranges, const Boundaries& boundaries,
+                               const Rings& rings, const VertexRegistry& vertices, bool last) {
+    TessellationStats& st = out_.stats;
+    if (!options_.certify && st.tolerance <= 0) {
+        for (Subpatch& sp : out_.subpatches)
             sp.error_bound = std::numeric_limits<double>::quiet_NaN();
         st.max_error_bound = std::numeric_limits<double>::quiet_NaN();
+        lap(st.phases.bounds, PassProgress::kBounded);
+        return;
     }
-    phase.bounds += lap();
-    progress.at(PassProgress::kBounded);
-    // Another pass will follow: the mesh of this one is not needed.
-    if (!last && st.above_tolerance > 0) {
-        if (memo.keep) {
-            memo.leaf_start = ranges.leaf_start;
-            memo.registry = std::move(reg);
-            memo.rings_kept = graph.points.empty() && graph.alias.empty();
-            if (memo.rings_kept) {
-                memo.rings = std::move(rings);
-                memo.positions = std::move(vr.positions);
-            }
+    const std::vector<char> fresh =
+        fans_.certify(rings.rings, vertices.positions, previous_rings(ranges, rings).same,
+                      out_.subpatches, &progress_);
+    std::vector<char> next_changed(patches_.size(), 0);
+    for (const Subpatch& sp : out_.subpatches) {
+        if (st.tolerance > 0 && sp.error_bound > st.tolerance) ++st.above_tolerance;
+        st.max_error_bound = std::max(st.max_error_bound, sp.error_bound);
+        next_changed[sp.patch] |= splits_again(sp, st.tolerance, options_.max_depth);
+    }
+    // For the next pass, if one follows: the rings of patches it may compare
+    // rings of (all where this pass's rings are not kept).
+    if (keep_ && !last && st.above_tolerance > 0) {
+        const bool kept = boundaries.graph.points.empty() && boundaries.graph.alias.empty();
+        std::vector<char> compared;
+        if (kept) {
+            compared = unchanged_rings(match_, next_changed);
+            for (char& c : compared) c = !c;
         }
-        return out;
+        fans_.keep(rings.rings, vertices.positions, ranges.leaf_start, fresh,
+                   kept ? &compared : nullptr, out_.subpatches);
     }
-    // The mesh follows: what only the numbering and another pass needed goes
-    // first, so that the normals, fans and orientation refill its pages
-    // instead of faulting in fresh ones.
-    release_before_mesh(memo, reg, rings, options.threads);
+    lap(st.phases.bounds, PassProgress::kBounded);
+}
 
-    // (d3) Normals at the fans' vertices, in parallel.
+void TessellationPass::keep_for_next_pass(const PatchRanges& ranges, Boundaries& boundaries,
+                                          Rings& rings, VertexRegistry& vertices) {
+    if (!keep_) return;
+    previous_.leaf_start = ranges.leaf_start;
+    previous_.registry = std::move(boundaries.registry);
+    previous_.rings_kept = boundaries.graph.points.empty() && boundaries.graph.alias.empty();
+    if (previous_.rings_kept) {
+        previous_.rings = std::move(rings.rings);
+        previous_.positions = std::move(vertices.positions);
+    }
+}
+
+// What only the numbering and another pass need: the previous pass's
+// registry, rings and positions (copied from by now), this pass's registry and
+// the rings' keys, and the shared per-patch tables and trees (freed patch by
+// patch in parallel rather than on the calling thread). Freed before the mesh
+// is built, so that its normals, fans and orientation refill these pages
+// instead of faulting in fresh ones.
+void TessellationPass::release_before_mesh(Boundaries& boundaries, Rings& rings) {
+    previous_.registry = EdgeRegistry();
+    previous_.rings = SubpatchRings();
+    std::vector<Vec3>().swap(previous_.positions);
+    previous_.rings_kept = false;
+    boundaries.registry = EdgeRegistry();
+    std::vector<VertexKey>().swap(rings.rings.keys);
+    parallel_chunks(subdivision_.kept_patches(), options_.threads, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p) {
+            subdivision_.release(p);
+            fans_.release(p);
+        }
+    });
+}
+
+// (d3) Normals at the fans' vertices, in parallel; (d4) fan triangles in
+// subpatch order, their patch-tree leaves and hulls; then each surface turned
+// to face outward, at unit scale (the signed volume of a closed component
+// stays finite).
+void TessellationPass::build_mesh(const PatchRanges& ranges, const Rings& rings,
+                                  VertexRegistry& vertices) {
+    PhaseSeconds& phase = out_.stats.phases;
+    for (const BSplineSurface& s : model_.surfaces) out_.mesh.surface_names.push_back(s.name);
     const FanNormals normals =
-        fan_normals(patches, out.subpatches, ranges.leaf_start, rings, options.threads);
-    phase.normals += lap();
-    progress.at(PassProgress::kNormals);
+        fan_normals(patches_, out_.subpatches, ranges.leaf_start, rings.rings, options_.threads);
+    lap(phase.normals, PassProgress::kNormals);
+    const FanSources fans{.patches = &patches_,
+                          .rings = &rings.rings,
+                          .normals = &normals,
+                          .node_start = options_.patch_trees ? &ranges.node_start : nullptr,
+                          .hull_scale = hull_scale_,
+                          .threads = options_.threads};
+    write_fans(fans, std::move(vertices.positions), out_);
+    lap(phase.fans, PassProgress::kFans);
+    if (options_.orient_surfaces)
+        out_.stats.flipped_surfaces = orient_surfaces(out_.mesh, options_.threads).flipped_surfaces;
+    lap(phase.orientation, 1.0);
+}
 
-    // (d4) Fan triangles in subpatch order, their patch-tree leaves and hulls.
-    write_fans(patches, rings, normals, options.patch_trees ? &ranges.node_start : nullptr,
-               std::move(vr.positions), hull_scale, options.threads, out);
-    phase.fans += lap();
-    progress.at(PassProgress::kFans);
-
-    // At unit scale: the signed volume of a closed component stays finite.
-    if (options.orient_surfaces)
-        st.flipped_surfaces = orient_surfaces(mesh, options.threads).flipped_surfaces;
-    phase.orientation += lap();
-    progress.at(1.0);
-
-    st.subpatches = static_cast<int>(out.subpatches.size());
-    st.triangles = mesh.triangle_count();
-    st.vertices = mesh.vertex_count();
-    st.seconds = seconds_since(start);
-    return out;
+void TessellationPass::split_again(Tessellation& t) {
+    std::fill(changed_.begin(), changed_.end(), 0);
+    for (const Subpatch& sp : t.subpatches)
+        if (splits_again(sp, t.stats.tolerance, options_.max_depth)) {
+            split_.insert(subpatch_key(sp.patch, sp.rect));
+            changed_[sp.patch] = 1;
+        }
+    subdivision_.take_spare(std::move(t.trees.nodes), std::move(t.subpatches));
 }
 
 } // namespace seamless

@@ -3,11 +3,9 @@
 // pull_blocks, block_schedule.h), each on a cache line of its own. A vector's
 // header is written as it grows (its end), so two such vectors side by side
 // in an array have each worker's writes evict the line the other worker is
-// using (false sharing). Teapot --tolerance 0.0006525 --threads 2, CLI,
-// medians of 9 alternating runs: subdivision 67-68 -> 58-59 ms (the
-// verdict tables and parts of neighbouring patches, which the largest-first
-// order hands the two workers at once), rings 26-28 -> 23.5-25 ms
-// (docs/results/tessellation.md, i11s).
+// using (false sharing): the verdict tables and parts of neighbouring
+// patches, which the largest-first order hands the two workers at once
+// (docs/results/tessellation.md).
 // Only the storage's layout changes: the values and the output are the same.
 #pragma once
 

@@ -2,10 +2,8 @@
 // Fresh storage for an array the calling thread sizes and workers fill: its
 // pages backed by `threads` workers before anything is written. A resize of
 // fresh storage takes its page faults on the calling thread alone, while the
-// other worker waits: with two threads the numbering and the edge registry
-// took ~1,600 serial faults (~11 us each on the AMD EPYC VM) a tessellation
-// of the teapot at 1e-4 d_max, where one thread reused storage it had freed
-// itself (a worker's freed memory stays in that worker's malloc arena), i11r.
+// other worker waits (a worker's freed memory stays in that worker's malloc
+// arena, so the calling thread seldom reuses it).
 // Only the storage changes: the arrays and the output are the same.
 #pragma once
 

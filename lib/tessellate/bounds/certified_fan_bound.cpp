@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // certified_fan_bound (error_bound.h): the bound of a subpatch's final fan
 // over its ring, phi shared with the neighbouring fans (PhiMemo).
+#include <seamless/base/check.h>
 #include <seamless/base/min_max3.h>
 #include <seamless/tessellate/bounds/error_bound.h>
+#include <seamless/tessellate/bounds/fan_phi.h>
 #include <seamless/tessellate/bounds/net_bounds.h>
 #include <seamless/tessellate/bounds/surface_feet.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -21,109 +22,6 @@ namespace seamless {
 using namespace feet;
 namespace {
 
-// Sides shared by two fans are split into kSideRefinement pieces, the same
-// for both; phi is linear between those points. Inside, a fan triangle is
-// refined m = kSideRefinement * 2^k times (k chosen from its derivative bounds).
-// Between the shared points phi is linear in the parameters, not a foot, so
-// the tangential drift there counts in full: with 2 pieces a fan whose four
-// triangles passed at 0.9 of a tolerance could certify at 1.25 of it (teapot,
-// lid seams) and the passes never ended; with 4 they agree within a few percent.
-constexpr int kSideRefinement = 4;
-constexpr int kMaxCertifyRefinement = 16;
-// Gauss-Newton steps of phi toward the foot at the refined vertices.
-constexpr int kFootSteps = 2;
-
-// phi at a mesh vertex, a function of its grid point and position alone, so
-// every fan sharing the vertex agrees and phi is continuous over the patch.
-// Vertices on the patch's sides stay; inner vertices move toward their foot,
-// at most the spacing of the coarsest dyadic grid line through them.
-Param param(const RingPoint& p) {
-    return {p.fs >= 0 ? p.fs : param_of(p.s), p.ft >= 0 ? p.ft : param_of(p.t)};
-}
-
-Node vertex_phi(const Surface& b, const RingPoint& p) {
-    const int gs = p.s, gt = p.t;
-    const Vec3 x = p.position;
-    const Param w = param(p);
-    // A seam vertex of another patch lies on this patch's side: phi keeps it,
-    // as it keeps the vertices on the patch's sides.
-    const bool s_side = gs == 0 || gs == kParamOne, t_side = gt == 0 || gt == kParamOne;
-    if (gs < 0 || gt < 0 || s_side || t_side) return {w, b.point(w.s, w.t) - x};
-    auto spacing = [](int i) { return param_of(i & -i); }; // lowest set bit
-    const double limit = std::max(spacing(gs), spacing(gt));
-    Vec3 g;
-    const Param u = foot_iterated(b, x, w, limit, 3, g);
-    return {u, g};
-}
-
-bool on_patch_side(const RingPoint& a, const RingPoint& b) {
-    return (a.s == b.s && (a.s == 0 || a.s == kParamOne)) ||
-           (a.t == b.t && (a.t == 0 || a.t == kParamOne));
-}
-
-// phi at a ring vertex and at a shared side's points is a function of the
-// patch and those ring points alone (that is what keeps phi continuous), and
-// each is met by every fan sharing it (a side by two, a vertex by up to four)
-// and by every refinement tried. PhiMemo keeps them per thread for the patch
-// asked about last: a hit is a value computed from the bitwise same inputs,
-// so the results do not depend on the order of the fans or the thread count.
-// Direct-mapped; a hit compares the whole key bit for bit.
-struct PhiMemo {
-    static constexpr int kSlots = 1024;
-    struct Vertex {
-        std::uint64_t generation = 0;
-        RingPoint p;
-        Node phi;
-    };
-    struct Side {
-        std::uint64_t generation = 0;
-        RingPoint lo, hi;
-        Node canon[kSideRefinement + 1];
-    };
-    std::uint64_t generation = 0; // 0: nothing kept
-    BezierPatch patch;
-    // power_basis(patch) when it has one (the bounds run over a patch's
-    // subpatches in order, so it is made once per patch and thread).
-    bool power = false;
-    PowerBasisPatch pb;
-    std::array<Vertex, kSlots> vertices;
-    std::array<Side, kSlots> sides;
-
-    // Starts a new generation when `b` is not the patch of the last call:
-    // its control points compared (only those within its degrees are read).
-    void use(const BezierPatch& b) {
-        bool same =
-            generation != 0 && b.p == patch.p && b.q == patch.q && b.rational == patch.rational;
-        for (int i = 0; i <= b.p && same; ++i)
-            same = std::memcmp(&b.at(i, 0), &patch.at(i, 0), (b.q + 1) * sizeof(HPoint)) == 0;
-        if (same) return;
-        patch = b;
-        ++generation;
-        power = has_power_basis(b);
-        if (power) pb = power_basis(b);
-    }
-    static bool same(const RingPoint& a, const RingPoint& b) {
-        return std::memcmp(&a, &b, sizeof(RingPoint)) == 0;
-    }
-    static std::uint64_t hash(const RingPoint& a, std::uint64_t h) {
-        std::uint64_t w[sizeof(RingPoint) / 8];
-        std::memcpy(w, &a, sizeof w);
-        for (std::uint64_t x : w) h = (h ^ x) * 0x9E3779B97F4A7C15ull;
-        return h;
-    }
-    static int slot(std::uint64_t h) { return static_cast<int>((h ^ (h >> 29)) >> 54); }
-};
-// Keys compared and hashed bit for bit: no padding in a RingPoint.
-static_assert(sizeof(RingPoint) == 2 * sizeof(int) + sizeof(Vec3) + 2 * sizeof(double) &&
-              sizeof(RingPoint) % 8 == 0);
-
-Node vertex_phi(const Surface& b, const RingPoint& p, PhiMemo& memo) {
-    PhiMemo::Vertex& e = memo.vertices[PhiMemo::slot(PhiMemo::hash(p, 1))];
-    if (e.generation == memo.generation && PhiMemo::same(e.p, p)) return e.phi;
-    e = {memo.generation, p, vertex_phi(b, p)};
-    return e.phi;
-}
-
 // split_bounds over the net of a box; out of line, so that its 14 KB net is
 // not in the frame of the refined triangles' loop, which rarely needs it.
 [[gnu::noinline]] SplitBounds box_split_bounds(const BezierPatch& patch, double s0, double s1,
@@ -131,133 +29,17 @@ Node vertex_phi(const Surface& b, const RingPoint& p, PhiMemo& memo) {
     return split_bounds(box_net(patch, s0, s1, t0, t1, centre), n);
 }
 
-// The bound of certified_fan_bound with every fan triangle refined m times
-// (m a multiple of kSideRefinement), without the rounding allowance. phi at
-// the refined vertices on the radial edges and inside the fan triangles (no
-// other fan's phi meets them) takes up to `steps` Gauss-Newton steps toward
-// the foot; 0: phi is the parameter map there, the parametric distance
-// (looser where the parametrisation drifts). The shared sides' points always
-// take the same steps, so the fans sharing them agree whatever `steps` each
-// one takes. A refined triangle's bound at or below `enough` (0: none) is
-// not tightened further (a tolerance needs no bound below itself).
-double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const ParamRect& r,
-                              Vec3 centre, std::span<const RingPoint> ring, int m, int steps,
-                              double enough, PhiMemo& memo) {
+// Step (3): the bound on every refined triangle, from the derivative bounds
+// of `net` over `box`, without the rounding allowance.
+double refined_bound(const Fan& fan, const RefinedPhi& phi, int m, const Net& net,
+                     const ParamBox& box, double enough) {
+    const BezierPatch& patch = fan.patch;
+    const std::span<const RingPoint> ring = fan.ring;
+    const Vec3 centre = fan.centre;
     const size_t n = ring.size();
-    const int side_step = m / kSideRefinement;
-    const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
-    const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-    const Node centre_node{{sc, tc}, S.point(sc, tc) - centre};
-    const double inner_limit =
-        0.5 * std::max(param_of(r.s1) - param_of(r.s0), param_of(r.t1) - param_of(r.t0));
-
-    // (1) phi at the refined vertices of every fan triangle: grid k, a, c is
-    // centre + a/m (P - centre) + c/m (Q - centre), P Q the ring's k-th side.
-    constexpr int K = kMaxCertifyRefinement + 1;
-    thread_local std::vector<std::array<Node, K>> radial_store;
-    thread_local std::vector<Node> grid_store;
-    radial_store.resize(n);
-    grid_store.resize(n * K * K);
-    // Plain pointers: each thread_local access in a shared library is a call.
-    std::array<Node, K>* const radial = radial_store.data();
-    Node* const grids = grid_store.data();
-    auto node = [&](size_t k, int a, int c) -> Node& { return grids[(k * K + a) * K + c]; };
-    for (size_t i = 0; i < n; ++i) {
-        radial[i][0] = centre_node;
-        radial[i][m] = vertex_phi(S, ring[i], memo);
-        const Param p = param(ring[i]);
-        for (int a = 1; a < m; ++a) {
-            const double f = static_cast<double>(a) / m;
-            const Param w{sc + f * (p.s - sc), tc + f * (p.t - tc)};
-            const Vec3 x = centre + f * (ring[i].position - centre);
-            Vec3 g;
-            const Param u = foot_iterated(S, x, w, inner_limit, steps, g);
-            radial[i][a] = {u, g};
-        }
-    }
-    for (size_t k = 0; k < n; ++k) {
-        const size_t k1 = (k + 1) % n;
-        const RingPoint &P = ring[k], &Q = ring[k1];
-        for (int a = 0; a <= m; ++a) node(k, a, 0) = radial[k][a];
-        for (int c = 0; c <= m; ++c) node(k, 0, c) = radial[k1][c];
-        // The side P Q: points in a canonical order (from the endpoint with the
-        // smaller grid point), the same for the fan on its other side.
-        const bool forward = std::pair(param(P).s, param(P).t) < std::pair(param(Q).s, param(Q).t);
-        const RingPoint& lo = forward ? P : Q;
-        const RingPoint& hi = forward ? Q : P;
-        const Node& nlo = forward ? node(k, m, 0) : node(k, 0, m);
-        const Node& nhi = forward ? node(k, 0, m) : node(k, m, 0);
-        const Param plo = param(lo), phi_ = param(hi);
-        const bool side = on_patch_side(lo, hi);
-        const double seg_limit = std::max(std::abs(phi_.s - plo.s), std::abs(phi_.t - plo.t));
-        PhiMemo::Side& memo_side =
-            memo.sides[PhiMemo::slot(PhiMemo::hash(hi, PhiMemo::hash(lo, 2)))];
-        Node* const canon = memo_side.canon;
-        const bool known = memo_side.generation == memo.generation &&
-                           PhiMemo::same(memo_side.lo, lo) && PhiMemo::same(memo_side.hi, hi);
-        if (!known) {
-            memo_side.generation = memo.generation;
-            memo_side.lo = lo;
-            memo_side.hi = hi;
-            canon[0] = nlo;
-            canon[kSideRefinement] = nhi;
-        }
-        for (int j = 1; j < kSideRefinement && !known; ++j) {
-            const double f = static_cast<double>(j) / kSideRefinement;
-            const Param w{plo.s + f * (phi_.s - plo.s), plo.t + f * (phi_.t - plo.t)};
-            const Vec3 x = lo.position + f * (hi.position - lo.position);
-            Node& cn = canon[j];
-            if (side) {
-                // Along the patch's side, between phi(lo) and phi(hi).
-                const double z =
-                    foot_on_line(S, x, nlo.u, nhi.u, f, 0.0, 1.0, 0.5 / kSideRefinement, cn.g);
-                cn.u = {nlo.u.s + z * (nhi.u.s - nlo.u.s), nlo.u.t + z * (nhi.u.t - nlo.u.t)};
-            } else {
-                cn.u = foot_iterated(S, x, w, seg_limit, kFootSteps, cn.g);
-            }
-        }
-        // The refined points between: phi linear between the shared points.
-        for (int j = 1; j < m; ++j) {
-            const int c = forward ? j : m - j;
-            if (j % side_step == 0) {
-                node(k, m - c, c) = canon[j / side_step];
-                continue;
-            }
-            const Node& a0 = canon[j / side_step];
-            const Node& a1 = canon[j / side_step + 1];
-            const double f = static_cast<double>(j % side_step) / side_step;
-            const double fx = static_cast<double>(j) / m;
-            Node& x = node(k, m - c, c);
-            x.u = {a0.u.s + f * (a1.u.s - a0.u.s), a0.u.t + f * (a1.u.t - a0.u.t)};
-            x.g = S.point(x.u.s, x.u.t) - (lo.position + fx * (hi.position - lo.position));
-        }
-        // Inside the fan triangle.
-        const Param pp = param(P), pq = param(Q);
-        for (int a = 1; a < m; ++a)
-            for (int c = 1; a + c < m; ++c) {
-                const double fa = static_cast<double>(a) / m, fc = static_cast<double>(c) / m;
-                const Param w{sc + fa * (pp.s - sc) + fc * (pq.s - sc),
-                              tc + fa * (pp.t - tc) + fc * (pq.t - tc)};
-                const Vec3 x = centre + fa * (P.position - centre) + fc * (Q.position - centre);
-                Node& y = node(k, a, c);
-                y.u = foot_iterated(S, x, w, inner_limit, steps, y.g);
-            }
-    }
-
-    // (2) Derivative bounds over the box of all those parameters: phi is
-    // linear on each refined triangle, so phi(sigma) lies in the box of its
-    // three vertices, inside this one (the subpatch plus the feet's moves).
-    double bs0 = param_of(r.s0), bs1 = param_of(r.s1), bt0 = param_of(r.t0), bt1 = param_of(r.t1);
-    for (size_t k = 0; k < n; ++k)
-        for (int a = 0; a <= m; ++a)
-            for (int c = 0; a + c <= m; ++c) {
-                const Param& u = node(k, a, c).u;
-                bs0 = std::min(bs0, u.s), bs1 = std::max(bs1, u.s);
-                bt0 = std::min(bt0, u.t), bt1 = std::max(bt1, u.t);
-            }
-    const Net net = box_net(patch, bs0, bs1, bt0, bt1, centre);
-
-    // (3) The bound on every refined triangle.
+    const double bs0 = box.s0, bs1 = box.s1, bt0 = box.t0, bt1 = box.t1;
+    constexpr int K = RefinedPhi::K;
+    auto node = [&phi](size_t k, int a, int c) -> const Node& { return phi.node(k, a, c); };
     const Vec3 diag = cross(ring[0].position - centre, ring[n / 2].position - centre);
     // The largest square: the root is monotone and correctly rounded, so the
     // root of the largest square is the largest root, bit for bit, and no root
@@ -314,18 +96,40 @@ double certified_fan_bound_at(const BezierPatch& patch, const Surface& S, const 
     return std::sqrt(bound2) * (1 + 64 * kEps);
 }
 
+// The bound of certified_fan_bound with every fan triangle refined m times
+// (m a multiple of kSideRefinement), without the rounding allowance. phi at
+// the refined vertices on the radial edges and inside the fan triangles takes
+// up to `steps` Gauss-Newton steps toward the foot; 0: phi is the parameter
+// map there, the parametric distance (looser where the parametrisation
+// drifts). The shared sides' points always take the same steps, so the fans
+// sharing them agree whatever `steps` each one takes. A refined triangle's
+// bound at or below `enough` (0: none) is not tightened further (a tolerance
+// needs no bound below itself).
+double certified_fan_bound_at(const Fan& fan, int m, int steps, double enough, PhiMemo& memo) {
+    // (1) phi at the refined vertices of every fan triangle.
+    RefinedPhi phi(fan, m, steps, memo);
+    phi.radial_edges();
+    for (size_t k = 0; k < fan.ring.size(); ++k) phi.triangle(k);
+    // (2) Derivative bounds over the box of all those parameters.
+    const ParamBox box = phi.box();
+    const Net net = box_net(fan.patch, box.s0, box.s1, box.t0, box.t1, fan.centre);
+    // (3) The bound on every refined triangle.
+    return refined_bound(fan, phi, m, net, box, enough);
+}
+
 } // namespace
 
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
                            std::span<const RingPoint> ring, double scale, double target) {
     const size_t n = ring.size();
-    assert(n >= 3);
+    SEAMLESS_CHECK(n >= 3, "a fan ring of fewer than three points");
     // On the heap (400 KB), one thread_local access (a call in a shared library).
     thread_local std::unique_ptr<PhiMemo> memo_store;
     if (!memo_store) memo_store = std::make_unique<PhiMemo>();
     PhiMemo& memo = *memo_store;
     memo.use(patch);
     const Surface S(patch, memo.power ? &memo.pb : nullptr);
+    const Fan fan{patch, S, r, centre, ring};
     // The evaluator's own rounding (power basis) on top of the usual allowance.
     const double allowance =
         rounding_allowance(depth + 4 * BezierPatch::kMaxOrder, scale) + S.error();
@@ -337,12 +141,12 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
     // What each refined triangle's bound may reach with the result <= target.
     const double enough = target > 0 ? std::max(target - allowance, 0.0) * (1 - 128 * kEps) : 0;
     if (target > 0) {
-        // Without feet inside the fan first: on the teapot at D = 0.001 about
-        // 93 % of the fans certify so, with one evaluation per refined vertex.
+        // Without feet inside the fan first: most fans certify so, with one
+        // evaluation per refined vertex.
         for (int steps : {0, kFootSteps}) {
-            coarse = std::min(coarse, certified_fan_bound_at(patch, S, r, centre, ring,
-                                                             kSideRefinement, steps, enough, memo) +
-                                          allowance);
+            coarse =
+                std::min(coarse, certified_fan_bound_at(fan, kSideRefinement, steps, enough, memo) +
+                                     allowance);
             if (coarse <= target) return coarse;
         }
     }
@@ -359,9 +163,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
         while (m < kMaxCertifyRefinement && R1 > 0.3 * m * m * Rn1) m *= 2;
     }
     if (m == kSideRefinement && target > 0) return coarse;
-    return std::min(coarse,
-                    certified_fan_bound_at(patch, S, r, centre, ring, m, kFootSteps, enough, memo) +
-                        allowance);
+    return std::min(coarse, certified_fan_bound_at(fan, m, kFootSteps, enough, memo) + allowance);
 }
 
 } // namespace seamless

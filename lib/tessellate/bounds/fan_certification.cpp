@@ -31,22 +31,22 @@ void fan_ring(const SubpatchRings& rings, const std::vector<Vec3>& positions, in
 
 } // namespace
 
-std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
-                               const std::vector<Vec3>& positions, double scale, double tolerance,
-                               int threads, const std::vector<char>* same,
-                               const std::vector<KnownBounds>& known,
-                               std::vector<Subpatch>& subpatches, const PassProgress* progress) {
+std::vector<char> FanCertification::certify(const SubpatchRings& rings,
+                                            const std::vector<Vec3>& positions,
+                                            const std::vector<char>* same,
+                                            std::vector<Subpatch>& subpatches,
+                                            const PassProgress* progress) const {
     const int count = static_cast<int>(subpatches.size());
     std::vector<char> fresh(count, 0);
     std::atomic<int> done{0};
-    pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
+    pull_blocks(count, kSubpatchBlock, threads_, nullptr, [&](int begin, int end) {
         std::vector<RingPoint> fan;
         for (int i = begin; i < end; ++i) {
             Subpatch& sp = subpatches[i];
-            const KnownBounds& k = known[sp.patch];
+            const KnownBounds& k = known_[sp.patch];
             const KnownBound* b = k.bounds.find(subpatch_key(sp.patch, sp.rect));
             // A patch left as it was: its rings are not built and compared
-            // again (teapot D = 0.001, second pass: 30 of 32 patches).
+            // again (most patches in a later pass).
             if (same && (*same)[sp.patch] && b && b->rect == sp.rect) {
                 sp.error_bound = b->bound;
                 continue;
@@ -59,8 +59,8 @@ std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const Su
                 same_ring(std::span(k.rings).subspan(b->ring_first, b->ring_size), fan)) {
                 sp.error_bound = b->bound;
             } else {
-                sp.error_bound = certified_fan_bound(patches[sp.patch], sp.rect, sp.depth, centre,
-                                                     fan, scale, tolerance);
+                sp.error_bound = certified_fan_bound(patches_[sp.patch], sp.rect, sp.depth, centre,
+                                                     fan, scale_, tolerance_);
                 fresh[i] = 1;
             }
         }
@@ -71,10 +71,10 @@ std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const Su
     return fresh;
 }
 
-void keep_fan_bounds(const SubpatchRings& rings, const std::vector<Vec3>& positions,
-                     const std::vector<int>& leaf_start, int threads,
-                     const std::vector<char>& fresh, const std::vector<char>* compared,
-                     const std::vector<Subpatch>& subpatches, std::vector<KnownBounds>& known) {
+void FanCertification::keep(const SubpatchRings& rings, const std::vector<Vec3>& positions,
+                            const std::vector<int>& leaf_start, const std::vector<char>& fresh,
+                            const std::vector<char>* compared,
+                            const std::vector<Subpatch>& subpatches) {
     const int np = static_cast<int>(leaf_start.size()) - 1;
     // Patches differ in subpatches by ten times and more (teapot): largest
     // first. Each patch's table and rings sized once for what it adds.
@@ -82,18 +82,18 @@ void keep_fan_bounds(const SubpatchRings& rings, const std::vector<Vec3>& positi
     std::iota(order.begin(), order.end(), 0);
     const auto size = [&](int p) { return leaf_start[p + 1] - leaf_start[p]; };
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size(a) > size(b); });
-    pull_blocks(np, 1, threads, &order, [&](int p, int) {
+    pull_blocks(np, 1, threads_, &order, [&](int p, int) {
         const bool with_rings = !compared || (*compared)[p];
         std::size_t added = 0, slots = 0;
         for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i)
             if (fresh[i]) ++added, slots += rings.start[i + 1] - rings.start[i];
-        std::vector<RingPoint>& kept = known[p].rings;
-        known[p].bounds.reserve(known[p].bounds.size() + added);
+        std::vector<RingPoint>& kept = known_[p].rings;
+        known_[p].bounds.reserve(known_[p].bounds.size() + added);
         if (with_rings) kept.reserve(kept.size() + slots);
         for (int i = leaf_start[p]; i < leaf_start[p + 1]; ++i) {
             if (!fresh[i]) continue;
             const Subpatch& sp = subpatches[i];
-            KnownBound& k = known[p].bounds[subpatch_key(sp.patch, sp.rect)];
+            KnownBound& k = known_[p].bounds[subpatch_key(sp.patch, sp.rect)];
             k.ring_first = static_cast<int>(kept.size());
             if (with_rings) fan_ring(rings, positions, i, kept);
             k.ring_size = static_cast<int>(kept.size()) - k.ring_first;

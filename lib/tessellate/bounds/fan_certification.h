@@ -32,32 +32,48 @@ struct KnownBounds {
     std::vector<RingPoint> rings;
 };
 
-// Subpatch::error_bound of every subpatch, from its ring and centre vertex
-// (rings.vertices[].vertex, rings.centre into `positions`); per subpatch,
-// whether its bound was computed (not found in `known`, per patch). `scale`
-// and `tolerance` as certified_fan_bound's. `same` (may be null): per patch,
-// whether its subpatches, rings and vertex positions are the previous pass's
-// (subpatch_ring.h, PreviousRings), so that each subpatch's known bound is its
-// own, found by key alone (every pass that another follows leaves each
-// subpatch's bound under its key, keep_fan_bounds).
-std::vector<char> certify_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
-                               const std::vector<Vec3>& positions, double scale, double tolerance,
-                               int threads, const std::vector<char>* same,
-                               const std::vector<KnownBounds>& known,
-                               std::vector<Subpatch>& subpatches,
-                               const PassProgress* progress = nullptr);
+// The fans' certified bounds over the passes of a tolerance, with each
+// patch's known bounds (the earlier passes').
+class FanCertification {
+  public:
+    // `scale` and `tolerance` as certified_fan_bound's.
+    FanCertification(const std::vector<BezierPatch>& patches, double scale, double tolerance,
+                     int threads)
+        : patches_(patches), scale_(scale), tolerance_(tolerance), threads_(threads),
+          known_(patches.size()) {}
 
-// The `fresh` bounds added to `known` for the next pass, each patch's map on
-// its own, in parallel (`leaf_start`: where each patch's subpatches start, one
-// more entry: the end). With their rings only where `compared` (null: every
-// patch) says the next pass may compare rings: a patch whose subpatches the
-// next pass takes as they are finds its bounds by key alone; a bound kept
-// without its ring is computed again if it is needed after all (the same
-// value: a bound is a function of the subpatch and its ring). Teapot 1e-4
-// d_max, first pass, 1 thread: the bounds' page faults 2,700 -> 1,520, i11r.
-void keep_fan_bounds(const SubpatchRings& rings, const std::vector<Vec3>& positions,
-                     const std::vector<int>& leaf_start, int threads,
-                     const std::vector<char>& fresh, const std::vector<char>* compared,
-                     const std::vector<Subpatch>& subpatches, std::vector<KnownBounds>& known);
+    // Subpatch::error_bound of every subpatch, from its ring and centre vertex
+    // (rings.vertices[].vertex, rings.centre into `positions`); per subpatch,
+    // whether its bound was computed (not known from an earlier pass).
+    // `same` (may be null): per patch, whether its subpatches, rings and
+    // vertex positions are the previous pass's (subpatch_ring.h,
+    // PreviousRings), so that each subpatch's known bound is its own, found by
+    // key alone (every pass that another follows leaves each subpatch's bound
+    // under its key, keep).
+    std::vector<char> certify(const SubpatchRings& rings, const std::vector<Vec3>& positions,
+                              const std::vector<char>* same, std::vector<Subpatch>& subpatches,
+                              const PassProgress* progress = nullptr) const;
+
+    // The `fresh` bounds kept for the next pass, each patch's map on its own,
+    // in parallel (`leaf_start`: where each patch's subpatches start, one more
+    // entry: the end). With their rings only where `compared` (null: every
+    // patch) says the next pass may compare rings: a patch whose subpatches
+    // the next pass takes as they are finds its bounds by key alone; a bound
+    // kept without its ring is computed again if it is needed after all (the
+    // same value: a bound is a function of the subpatch and its ring), and
+    // the rings not kept are pages not touched.
+    void keep(const SubpatchRings& rings, const std::vector<Vec3>& positions,
+              const std::vector<int>& leaf_start, const std::vector<char>& fresh,
+              const std::vector<char>* compared, const std::vector<Subpatch>& subpatches);
+
+    // Frees patch p's known bounds (no pass follows).
+    void release(int p) { known_[p] = KnownBounds(); }
+
+  private:
+    const std::vector<BezierPatch>& patches_;
+    double scale_, tolerance_;
+    int threads_;
+    std::vector<KnownBounds> known_;
+};
 
 } // namespace seamless

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/tessellate/bounds/error_bound.h>
 #include <seamless/tessellate/bounds/net_bounds.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -47,7 +47,7 @@ template <class Patch> Net make_net(const Patch& b, Vec3 c) {
             if (!one_weight) n.add(Net::kP0, h.point() - c);
             n.wlo = std::min(n.wlo, h.w);
         }
-    assert(n.wlo > 0);
+    SEAMLESS_CHECK(n.wlo > 0, "a weight of the net is not positive");
     auto X = [&](int i, int j) {
         const std::array<double, 3>& v = x[i * O + j];
         return Vec3{v[0], v[1], v[2]};
@@ -87,7 +87,7 @@ template <class Patch> Net make_net(const Patch& b, Vec3 c) {
 // make_net of a bicubic net with one weight throughout (polynomial, or all
 // weights equal): the same values in the same order, each coordinate apart
 // in flat arrays, so the differences run two at a time and are stored in
-// place. teapot D = 0.001, 1 thread: make_net 88 M instructions -> 35 M.
+// place (the general make_net's loops cost more than twice as much).
 Net one_weight_bicubic_net(const BicubicNet& b, Vec3 c) {
     Net n;
     n.p = n.q = 3;
@@ -100,7 +100,7 @@ Net one_weight_bicubic_net(const BicubicNet& b, Vec3 c) {
         X[2][k] = h.z - h.w * c.z;
         n.wlo = std::min(n.wlo, h.w);
     }
-    assert(n.wlo > 0);
+    SEAMLESS_CHECK(n.wlo > 0, "a weight of the net is not positive");
     double* const out[3] = {n.dx.data(), n.dy.data(), n.dz.data()};
     for (int d = 0; d < 3; ++d) {
         const double* x = X[d];
@@ -205,8 +205,7 @@ Net box_net(const BezierPatch& patch, double s0, double s1, double t0, double t1
 DerivativeBounds derivative_bounds(const Net& n) {
     // Each group's largest norm as the root of its largest square (the root
     // is monotone and correctly rounded: the same value), one root per group
-    // rather than one per difference (a bicubic net: 6 roots, not 25; teapot
-    // D = 0.001: 19 M instructions -> 17 M).
+    // rather than one per difference (a bicubic net: 6 roots, not 25).
     Tops<1> top{};
     for (int g = 0; g < Net::kGroups; ++g) {
         double largest = 0;
@@ -264,9 +263,8 @@ template <int L> [[gnu::always_inline]] inline Tops<2> split_tops(const Net& net
     return top;
 }
 
-// Four lanes in one AVX2 instruction where the processor has it (teapot
-// D = 0.001, 1 thread: split_bounds 150 M instructions -> 110 M here); two
-// SSE2 lanes elsewhere (four would take 214 M there).
+// Four lanes in one AVX2 instruction where the processor has it; two SSE2
+// lanes elsewhere (four would cost more there than two).
 [[gnu::target("avx2")]] Tops<2> split_tops_avx2(const Net& net, Vec3 n) {
     return split_tops<4>(net, n);
 }

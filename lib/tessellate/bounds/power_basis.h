@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 // A bicubic polynomial Bezier patch in the power basis: the surface the error
 // bounds (error_bound.h) evaluate millions of times, at about a third of the
-// instructions of the Bernstein form (docs/results/tessellation.md, fifth
-// pass). S(s, t) = o + sum_ij a_ij s^i t^j, i, j = 0..3, with o the control
-// point (0, 0) (so the coefficients scale with the patch's extent, not with
-// its coordinates' magnitude); each row sum_j a_ij t^j and then the sum over
-// i by Horner's rule.
+// instructions of the Bernstein form (docs/results/tessellation.md). S(s, t) = o + sum_ij a_ij s^i
+// t^j, i, j = 0..3, with o the control point (0, 0) (so the coefficients scale with the patch's
+// extent, not with its coordinates' magnitude); each row sum_j a_ij t^j and then the sum over i by
+// Horner's rule.
 //
 // Rounding. The point differs from the exact surface point by at most
 // `error` (model units), a bound proven once per patch from the computed
@@ -27,7 +26,7 @@ struct PowerBasisPatch {
     // a[c][j][i]: coordinate c's coefficient of s^i t^j (rows contiguous in i).
     // a and at are written in full by power_basis and not zeroed before (a
     // default-constructed one is a placeholder: the subdivision makes one per
-    // subpatch, teapot D = 0.001: 7 M instructions of zeroing and copying).
+    // subpatch, and zeroing it would cost as much as filling it).
     alignas(16) double a[3][4][4];
     // The t-derivative's coefficients of s^i t^j, j = 0..2: a[c][j + 1][i] (j + 1).
     alignas(16) double at[3][3][4];
@@ -62,7 +61,7 @@ inline void rows(const PowerBasisPatch& pb, int c, Lanes T, Lanes row[2]) {
 } // namespace power_lanes
 
 // Point and derivatives with respect to the local (s, t), s, t in [0, 1].
-// Inline: the bounds' hot loops call them millions of times (i11o).
+// Inline: the bounds' hot loops call them millions of times.
 inline SurfacePoint evaluate(const PowerBasisPatch& pb, double s, double t) {
     using namespace power_lanes;
     const Lanes T = {t, t}, S = {s, s};

@@ -2,7 +2,7 @@
 // The surface the fan bounds evaluate and the Gauss-Newton feet of their
 // map phi (error_bound.h: the construction; fan_bound.cpp: the four-triangle
 // bound of the subdivision; certified_fan_bound.cpp: the bound of the final
-// fans). Internal to those two files.
+// fans, with fan_phi.h). Internal to those files.
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
@@ -101,9 +101,17 @@ inline Param foot(const Surface& b, Vec3 x, Param u, double limit, Vec3& g) {
     return u;
 }
 
-// Same along the line u(tau) = c0 + tau (c1 - c0), tau in [lo, hi].
-inline double foot_on_line(const Surface& b, Vec3 x, Param c0, Param c1, double tau, double lo,
-                           double hi, double limit, Vec3& g) {
+// A line in the parameters, u(tau) = c0 + tau (c1 - c0) for tau in [lo, hi].
+struct ParamLine {
+    Param c0, c1;
+    double lo = 0, hi = 1;
+};
+
+// Same as foot along `line`, from u(tau).
+inline double foot_on_line(const Surface& b, Vec3 x, const ParamLine& line, double tau,
+                           double limit, Vec3& g) {
+    const Param c0 = line.c0, c1 = line.c1;
+    const double lo = line.lo, hi = line.hi;
     auto at = [&](double z) { return Param{c0.s + z * (c1.s - c0.s), c0.t + z * (c1.t - c0.t)}; };
     tau = std::clamp(tau, lo, hi);
     const Param u = at(tau);

@@ -67,115 +67,170 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
     return normals;
 }
 
-void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
-                const FanNormals& normals, const std::vector<int>* node_start,
-                std::vector<Vec3>&& positions, double hull_scale, int threads, Tessellation& out) {
-    const size_t count = out.subpatches.size();
-    const std::vector<int>& ring_start = rings.start;
-    const std::vector<RingVertex>& ring = rings.vertices;
-    TriangleMesh& mesh = out.mesh;
-    TessellationStats& st = out.stats;
-    pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
-        for (int i = begin; i < end; ++i) {
-            const int first = ring_start[i], n = ring_start[i + 1] - first;
-            int c = 0;
-            for (int k = 0; k < n; ++k)
-                c += ring[first + k].vertex != ring[first + (k + 1) % n].vertex;
-            out.subpatches[i].triangle_count = c;
-        }
-    });
-    std::vector<int> fan_node(count + 1);
-    int triangles = 0;
-    fan_node[0] = static_cast<int>(out.trees.nodes.size());
-    for (size_t i = 0; i < count; ++i) {
-        Subpatch& sp = out.subpatches[i];
-        sp.first_triangle = triangles;
-        triangles += sp.triangle_count;
+namespace {
+
+// write_fans' steps over one pass's Tessellation.
+class FanWriter {
+  public:
+    FanWriter(const FanSources& in, const std::vector<Vec3>& positions, Tessellation& out)
+        : in_(in), rings_(*in.rings), positions_(positions), out_(out), mesh_(out.mesh),
+          count_(out.subpatches.size()) {}
+
+    // Each subpatch's triangle count (none where two ring vertices are one)
+    // and first triangle; where each fan's nodes start (one more entry: the
+    // end); stats max_depth and nonplanar_subpatches.
+    std::vector<int> count_triangles();
+    // The mesh arrays and tree nodes at their sizes.
+    void grow(const std::vector<int>& fan_node);
+    // The triangles, in parallel; with trees, each fan's leaves below its
+    // subpatch and their hulls. Per subpatch: how many levels its leaves add.
+    std::vector<int> write_triangles(const std::vector<int>& fan_node);
+    // Each patch's nodes above the fans: control hulls scaled, triangle hulls.
+    void patch_hulls(const std::vector<int>& added);
+
+  private:
+    void scaled(Box3& b) const {
+        if (in_.hull_scale != 1 && !b.empty()) b = {in_.hull_scale * b.lo, in_.hull_scale * b.hi};
+    }
+    Box3 triangle_box(int f) const {
+        Box3 bb;
+        for (int v : mesh_.triangles[f]) bb.extend(positions_[v]);
+        scaled(bb);
+        return bb;
+    }
+
+    const FanSources& in_;
+    const SubpatchRings& rings_;
+    const std::vector<Vec3>& positions_;
+    Tessellation& out_;
+    TriangleMesh& mesh_;
+    size_t count_;
+    int triangles_ = 0;
+};
+
+std::vector<int> FanWriter::count_triangles() {
+    const std::vector<int>& ring_start = rings_.start;
+    const std::vector<RingVertex>& ring = rings_.vertices;
+    pull_blocks(static_cast<int>(count_), kSubpatchBlock, in_.threads, nullptr,
+                [&](int begin, int end) {
+                    for (int i = begin; i < end; ++i) {
+                        const int first = ring_start[i], n = ring_start[i + 1] - first;
+                        int c = 0;
+                        for (int k = 0; k < n; ++k)
+                            c += ring[first + k].vertex != ring[first + (k + 1) % n].vertex;
+                        out_.subpatches[i].triangle_count = c;
+                    }
+                });
+    TessellationStats& st = out_.stats;
+    std::vector<int> fan_node(count_ + 1);
+    fan_node[0] = static_cast<int>(out_.trees.nodes.size());
+    for (size_t i = 0; i < count_; ++i) {
+        Subpatch& sp = out_.subpatches[i];
+        sp.first_triangle = triangles_;
+        triangles_ += sp.triangle_count;
         fan_node[i + 1] = fan_node[i] + attached_nodes(sp.triangle_count);
         st.max_depth = std::max(st.max_depth, sp.depth);
         if (!sp.planar) ++st.nonplanar_subpatches;
     }
+    return fan_node;
+}
+
+void FanWriter::grow(const std::vector<int>& fan_node) {
     // The five arrays grow side by side: each resize writes its new elements
     // on one thread. The tree nodes (with the subdivision's copied over) are
     // the largest: second, so that another worker takes them at once; the
-    // mesh arrays in their former order (the triangles first: with the nodes
-    // first the orientation's reads of them were about 1 ms slower).
+    // mesh arrays in their former order (the orientation reads the triangles
+    // sooner when they come first).
+    const int threads = in_.threads;
     const auto grow = [threads](auto& v, size_t n) {
         reserve_huge(v, n, threads);
         v.resize(n);
     };
+    const int triangles = triangles_;
     pull_blocks(5, 1, threads, nullptr, [&](int k, int) {
         switch (k) {
         case 0:
-            grow(mesh.triangles, triangles);
+            grow(mesh_.triangles, triangles);
             break;
         case 1:
-            if (node_start) grow(out.trees.nodes, fan_node[count]);
+            if (in_.node_start) grow(out_.trees.nodes, fan_node[count_]);
             break;
         case 2:
-            grow(mesh.triangle_surface, triangles);
+            grow(mesh_.triangle_surface, triangles);
             break;
         case 3:
-            grow(mesh.corner_normals, triangles);
+            grow(mesh_.corner_normals, triangles);
             break;
         default:
-            grow(mesh.corner_uvs, triangles);
+            grow(mesh_.corner_uvs, triangles);
             break;
         }
     });
-    // Hulls bottom-up: each fan's subtree as it is written, then each patch's
-    // nodes above them.
-    const auto scaled = [hull_scale](Box3& b) {
-        if (hull_scale != 1 && !b.empty()) b = {hull_scale * b.lo, hull_scale * b.hi};
-    };
-    const auto triangle_box = [&mesh, &positions, &scaled](int f) {
-        Box3 bb;
-        for (int v : mesh.triangles[f]) bb.extend(positions[v]);
-        scaled(bb);
-        return bb;
-    };
-    std::vector<int> added(count);
-    pull_blocks(static_cast<int>(count), kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
-        for (int i = begin; i < end; ++i) {
-            const Subpatch& sp = out.subpatches[i];
-            const BezierPatch& b = patches[sp.patch];
-            const ParamRect& r = sp.rect;
-            const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
-            const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
-            const int first = ring_start[i], n = ring_start[i + 1] - first;
-            int f = sp.first_triangle;
-            for (int k = 0; k < n; ++k) {
-                const RingVertex &a = ring[first + k], &c = ring[first + (k + 1) % n];
-                if (a.vertex == c.vertex) continue;
-                mesh.triangles[f] = {rings.centre[i], a.vertex, c.vertex};
-                mesh.triangle_surface[f] = b.surface;
-                mesh.corner_normals[f] = {normals.centre[i], normals.ring[first + k],
-                                          normals.ring[first + (k + 1) % n]};
-                mesh.corner_uvs[f] = {std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
-                                      std::array<double, 2>{b.u_at(a.fs), b.v_at(a.ft)},
-                                      std::array<double, 2>{b.u_at(c.fs), b.v_at(c.ft)}};
-                ++f;
-            }
-            // Proposition 11, remark 2: the triangles become the leaves below the subpatch.
-            if (!node_start) continue;
-            added[i] = attach_triangles_at(out.trees, sp.node, sp.first_triangle, sp.triangle_count,
-                                           fan_node[i]);
-            update_triangle_hulls(out.trees, fan_node[i], fan_node[i + 1], triangle_box);
-        }
-    });
-    if (node_start) {
-        for (size_t i = 0; i < count; ++i)
-            out.trees.depth = std::max(out.trees.depth, out.subpatches[i].depth + added[i]);
-        const std::vector<int>& at = *node_start;
-        const int np = static_cast<int>(at.size()) - 1;
-        parallel_chunks(np, threads, [&](int begin, int end) {
-            for (int p = begin; p < end; ++p) {
-                for (int i = at[p]; i < at[p + 1]; ++i) scaled(out.trees.nodes[i].control_hull);
-                update_triangle_hulls(out.trees, at[p], at[p + 1], triangle_box);
+}
+
+std::vector<int> FanWriter::write_triangles(const std::vector<int>& fan_node) {
+    const std::vector<int>& ring_start = rings_.start;
+    const std::vector<RingVertex>& ring = rings_.vertices;
+    const FanNormals& normals = *in_.normals;
+    const auto triangle_box = [this](int f) { return this->triangle_box(f); };
+    std::vector<int> added(count_);
+    pull_blocks(
+        static_cast<int>(count_), kSubpatchBlock, in_.threads, nullptr, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i) {
+                const Subpatch& sp = out_.subpatches[i];
+                const BezierPatch& b = (*in_.patches)[sp.patch];
+                const ParamRect& r = sp.rect;
+                const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));
+                const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
+                const int first = ring_start[i], n = ring_start[i + 1] - first;
+                int f = sp.first_triangle;
+                for (int k = 0; k < n; ++k) {
+                    const RingVertex &a = ring[first + k], &c = ring[first + (k + 1) % n];
+                    if (a.vertex == c.vertex) continue;
+                    mesh_.triangles[f] = {rings_.centre[i], a.vertex, c.vertex};
+                    mesh_.triangle_surface[f] = b.surface;
+                    mesh_.corner_normals[f] = {normals.centre[i], normals.ring[first + k],
+                                               normals.ring[first + (k + 1) % n]};
+                    mesh_.corner_uvs[f] = {std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
+                                           std::array<double, 2>{b.u_at(a.fs), b.v_at(a.ft)},
+                                           std::array<double, 2>{b.u_at(c.fs), b.v_at(c.ft)}};
+                    ++f;
+                }
+                // Proposition 11, remark 2: the triangles become the leaves below the subpatch.
+                if (!in_.node_start) continue;
+                added[i] = attach_triangles_at(out_.trees, sp.node, sp.first_triangle,
+                                               sp.triangle_count, fan_node[i]);
+                update_triangle_hulls(out_.trees, fan_node[i], fan_node[i + 1], triangle_box);
             }
         });
-    }
-    mesh.positions = std::move(positions);
+    return added;
+}
+
+void FanWriter::patch_hulls(const std::vector<int>& added) {
+    for (size_t i = 0; i < count_; ++i)
+        out_.trees.depth = std::max(out_.trees.depth, out_.subpatches[i].depth + added[i]);
+    const std::vector<int>& at = *in_.node_start;
+    const int np = static_cast<int>(at.size()) - 1;
+    const auto triangle_box = [this](int f) { return this->triangle_box(f); };
+    parallel_chunks(np, in_.threads, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p) {
+            for (int i = at[p]; i < at[p + 1]; ++i) scaled(out_.trees.nodes[i].control_hull);
+            update_triangle_hulls(out_.trees, at[p], at[p + 1], triangle_box);
+        }
+    });
+}
+
+} // namespace
+
+void write_fans(const FanSources& in, std::vector<Vec3>&& positions, Tessellation& out) {
+    FanWriter writer(in, positions, out);
+    const std::vector<int> fan_node = writer.count_triangles();
+    writer.grow(fan_node);
+    // Hulls bottom-up: each fan's subtree as it is written, then each patch's
+    // nodes above them.
+    const std::vector<int> added = writer.write_triangles(fan_node);
+    if (in.node_start) writer.patch_hulls(added);
+    out.mesh.positions = std::move(positions);
 }
 
 } // namespace seamless

@@ -23,18 +23,27 @@ FanNormals fan_normals(const std::vector<BezierPatch>& patches,
                        const std::vector<Subpatch>& subpatches, const std::vector<int>& leaf_start,
                        const SubpatchRings& rings, int threads);
 
+// What write_fans makes the fans of: the patches, every subpatch's ring
+// (numbered, vertex_numbering.h) and the normals at its vertices;
+// `node_start`: where each patch's nodes start, one more entry: the end (null:
+// no trees, TessellationOptions::patch_trees). The hulls come out multiplied
+// by `hull_scale` (a power of two: a pass at unit scale gives them in the
+// model's units, exactly, tessellation.cpp).
+struct FanSources {
+    const std::vector<BezierPatch>* patches = nullptr;
+    const SubpatchRings* rings = nullptr;
+    const FanNormals* normals = nullptr;
+    const std::vector<int>* node_start = nullptr;
+    double hull_scale = 1;
+    int threads = 1;
+};
+
 // The fan triangles in subpatch order into out.mesh, none where two ring
 // vertices are one (a pole); Subpatch::first_triangle and triangle_count; the
-// triangles as leaves of out.trees and every node's triangle_hull
-// (`node_start`: where each patch's nodes start, one more entry: the end;
-// null: no trees, TessellationOptions::patch_trees);
+// triangles as leaves of out.trees and every node's triangle_hull;
 // out.mesh.positions = `positions`; stats max_depth and nonplanar_subpatches.
-// The hulls come out multiplied by `hull_scale` (a power of two: a pass at
-// unit scale gives them in the model's units, exactly, tessellation.cpp).
 // Counted per subpatch, placed by prefix sums, written in parallel: the same
 // arrays for any thread count.
-void write_fans(const std::vector<BezierPatch>& patches, const SubpatchRings& rings,
-                const FanNormals& normals, const std::vector<int>* node_start,
-                std::vector<Vec3>&& positions, double hull_scale, int threads, Tessellation& out);
+void write_fans(const FanSources& in, std::vector<Vec3>&& positions, Tessellation& out);
 
 } // namespace seamless

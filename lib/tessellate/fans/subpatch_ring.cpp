@@ -11,14 +11,16 @@
 
 namespace seamless {
 
-void collect_ring(const EdgeRegistry& reg, const EdgeGraph& graph, int i, const ParamRect& r,
-                  bool crack_free, std::vector<int>& scratch, std::vector<SideVertex>& inside,
-                  std::vector<RingVertex>& ring) {
+void RingCollector::collect(int i, const ParamRect& r, std::vector<RingVertex>& ring) {
+    const EdgeRegistry& reg = reg_;
+    const EdgeGraph& graph = graph_;
+    std::vector<int>& scratch = scratch_;
+    std::vector<SideVertex>& inside = inside_;
     ring.clear();
     const int cs[4] = {r.s0, r.s1, r.s1, r.s0}, ct[4] = {r.t0, r.t0, r.t1, r.t1};
     for (int k = 0; k < 4; ++k) {
         ring.push_back({cs[k], ct[k], param_of(cs[k]), param_of(ct[k]), -1, -1});
-        if (!crack_free) continue;
+        if (!crack_free_) continue;
         const SideOnLine& side = reg.sides[4 * static_cast<size_t>(i) + k];
         scratch.clear();
         points_inside(reg, side, scratch);
@@ -71,8 +73,7 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
     reserve_touched(out.centre, count, threads);
     out.centre.resize(count);
     pull_blocks(count, kSubpatchBlock, threads, nullptr, [&](int begin, int end) {
-        std::vector<int> scratch;
-        std::vector<SideVertex> inside;
+        RingCollector collector(reg, graph, crack_free);
         std::vector<RingVertex> ring;
         std::vector<RingVertex>& block = block_rings[begin / kSubpatchBlock].value;
         for (int i = begin; i < end; ++i) {
@@ -90,7 +91,7 @@ SubpatchRings collect_rings(const std::vector<BezierPatch>& patches,
                 continue;
             }
             const ParamRect& r = sp.rect;
-            collect_ring(reg, graph, i, r, crack_free, scratch, inside, ring);
+            collector.collect(i, r, ring);
             block.insert(block.end(), ring.begin(), ring.end());
             out.start[i + 1] = static_cast<int>(ring.size());
             const double sc = 0.5 * (param_of(r.s0) + param_of(r.s1));

@@ -32,11 +32,23 @@ struct SideVertex {
     int grid = 0, foreign = -1;
 };
 
-// The ring of subpatch `i` (rect `r`; its sides reg.sides[4 i + k]) into
-// `ring`; `scratch` and `inside` are the caller's scratch storage.
-void collect_ring(const EdgeRegistry& reg, const EdgeGraph& graph, int i, const ParamRect& r,
-                  bool crack_free, std::vector<int>& scratch, std::vector<SideVertex>& inside,
-                  std::vector<RingVertex>& ring);
+// Subpatches' rings over one edge registry and edge graph, with scratch
+// storage reused from ring to ring (one collector per worker).
+class RingCollector {
+  public:
+    // crack_free false: the four corners alone.
+    RingCollector(const EdgeRegistry& reg, const EdgeGraph& graph, bool crack_free)
+        : reg_(reg), graph_(graph), crack_free_(crack_free) {}
+    // The ring of subpatch `i` (rect `r`; its sides reg.sides[4 i + k]) into `ring`.
+    void collect(int i, const ParamRect& r, std::vector<RingVertex>& ring);
+
+  private:
+    const EdgeRegistry& reg_;
+    const EdgeGraph& graph_;
+    bool crack_free_;
+    std::vector<int> scratch_;
+    std::vector<SideVertex> inside_;
+};
 
 // Every subpatch's ring, laid end to end in subpatch order, and its centre.
 struct SubpatchRings {

@@ -5,6 +5,7 @@
 #include <seamless/tessellate/seams/surface_orientation.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <map>
 #include <mutex>
@@ -138,21 +139,20 @@ EdgeUses edge_uses(const TriangleMesh& mesh, int threads, std::vector<double>& v
     return e;
 }
 
-} // namespace
-
-OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
-    OrientationResult out;
-    const int ns = static_cast<int>(mesh.surface_names.size());
-    if (ns < 1 || mesh.triangle_surface.size() != mesh.triangles.size()) return out;
-
-    // Votes per surface pair: an edge used twice, by two surfaces, votes for
-    // keeping both (opposite directions) or flipping one (equal directions).
-    // Surfaces with an edge used once or more than twice are open. The
-    // buckets are independent: counted in parallel, summed (order-free).
-    std::vector<double> volume6;
-    const EdgeUses e = edge_uses(mesh, threads, volume6);
+// Votes per surface pair (a << 32 | b, a < b): [0] opposite directions
+// (keep both), [1] equal directions (flip one); and the open surfaces.
+struct SurfaceVotes {
     std::map<std::uint64_t, std::array<int, 2>> votes;
-    std::vector<char> open_surface(ns, 0);
+    std::vector<char> open_surface;
+};
+
+// An edge used twice, by two surfaces, votes for keeping both (opposite
+// directions) or flipping one (equal directions). Surfaces with an edge used
+// once or more than twice are open. The buckets are independent: counted in
+// parallel, summed (order-free).
+SurfaceVotes count_votes(const EdgeUses& e, int ns, int threads) {
+    SurfaceVotes out;
+    out.open_surface.assign(ns, 0);
     std::mutex merge;
     parallel_chunks(static_cast<int>(e.start.size()) - 1, threads, [&](int begin, int end) {
         std::map<std::uint64_t, std::array<int, 2>> my_votes;
@@ -182,23 +182,22 @@ OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
         }
         const std::lock_guard<std::mutex> lock(merge);
         for (const auto& [pair, v] : my_votes) {
-            votes[pair][0] += v[0];
-            votes[pair][1] += v[1];
+            out.votes[pair][0] += v[0];
+            out.votes[pair][1] += v[1];
         }
-        for (int s : my_open) open_surface[s] = 1;
+        for (int s : my_open) out.open_surface[s] = 1;
     });
-    // Majority decides, pairs in ascending order; a pair with votes both ways
-    // is a conflict.
-    ParitySets sets(ns);
-    for (const auto& [pair, v] : votes) {
-        if (v[0] != 0 && v[1] != 0) ++out.conflicts;
-        const char rel = v[1] > v[0] ? 1 : 0;
-        if (!sets.unite(static_cast<int>(pair >> 32), static_cast<int>(pair & 0xffffffffu), rel))
-            ++out.conflicts;
-    }
+    return out;
+}
 
-    // Per component: keep the orientation of most triangles; a closed component
-    // (every edge used twice) then faces outward.
+// Per surface: whether it is flipped. Per component of `sets`: the
+// orientation of most triangles kept; a closed component (every edge used
+// twice) then faces outward. `volume6`: each triangle's term of six times the
+// signed volume.
+std::vector<char> surface_flips(const TriangleMesh& mesh, ParitySets& sets,
+                                const std::vector<char>& open_surface,
+                                const std::vector<double>& volume6) {
+    const int ns = static_cast<int>(mesh.surface_names.size());
     std::vector<int> triangles_of(ns, 0);
     for (int s : mesh.triangle_surface) ++triangles_of[s];
     std::vector<long long> keep(ns, 0); // per root: triangles keeping minus flipping
@@ -217,9 +216,7 @@ OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
     for (int s = 0; s < ns; ++s)
         if (open_surface[s]) open[root[s]] = 1;
     // The terms were computed in parallel with the edge uses; summed here in
-    // triangle order, the same sums bit for bit as one loop (teapot D = 0.001:
-    // this function's instructions on the calling thread 4.3 M -> 2.0 M,
-    // callgrind, i11p).
+    // triangle order, the same sums bit for bit as one loop.
     std::vector<double> volume(ns, 0);
     for (size_t f = 0; f < volume6.size(); ++f) {
         const int s = mesh.triangle_surface[f];
@@ -227,12 +224,31 @@ OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
     }
     for (int s = 0; s < ns; ++s)
         if (root[s] == s && !open[s] && volume[s] < 0) flip_root[s] ^= 1;
-
     std::vector<char> flip(ns);
-    for (int s = 0; s < ns; ++s) {
-        flip[s] = parity[s] ^ flip_root[root[s]];
-        out.flipped_surfaces += flip[s];
+    for (int s = 0; s < ns; ++s) flip[s] = parity[s] ^ flip_root[root[s]];
+    return flip;
+}
+
+} // namespace
+
+OrientationResult orient_surfaces(TriangleMesh& mesh, int threads) {
+    OrientationResult out;
+    const int ns = static_cast<int>(mesh.surface_names.size());
+    if (ns < 1 || mesh.triangle_surface.size() != mesh.triangles.size()) return out;
+    std::vector<double> volume6;
+    const EdgeUses e = edge_uses(mesh, threads, volume6);
+    const SurfaceVotes votes = count_votes(e, ns, threads);
+    // Majority decides, pairs in ascending order; a pair with votes both ways
+    // is a conflict.
+    ParitySets sets(ns);
+    for (const auto& [pair, v] : votes.votes) {
+        if (v[0] != 0 && v[1] != 0) ++out.conflicts;
+        const char rel = v[1] > v[0] ? 1 : 0;
+        if (!sets.unite(static_cast<int>(pair >> 32), static_cast<int>(pair & 0xffffffffu), rel))
+            ++out.conflicts;
     }
+    const std::vector<char> flip = surface_flips(mesh, sets, votes.open_surface, volume6);
+    for (int s = 0; s < ns; ++s) out.flipped_surfaces += flip[s];
     parallel_chunks(mesh.triangle_count(), threads, [&](int begin, int end) {
         for (int f = begin; f < end; ++f)
             if (flip[mesh.triangle_surface[f]]) flip_triangle(mesh, f);

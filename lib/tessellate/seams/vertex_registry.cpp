@@ -2,10 +2,9 @@
 // The vertex registry (shared_edges.h): one vertex per key, placed at its
 // exact surface point or, crack-free with straight segments, on the straight
 // segment of the subpatch side holding it (Fig. 3).
+#include <seamless/base/check.h>
 #include <seamless/spline/surface_point.h>
 #include <seamless/tessellate/seams/edge_lines.h>
-
-#include <cassert>
 
 namespace seamless {
 namespace {
@@ -116,7 +115,7 @@ int vertex_of(VertexRegistry& vr, VertexKey key) {
     auto [it, fresh] = vr.index.try_emplace(key, static_cast<int>(vr.positions.size()));
     const int id = it->second;
     if (!fresh) {
-        assert(vr.placed[id] && "crack-free placement must not be cyclic");
+        SEAMLESS_CHECK(vr.placed[id], "crack-free placement must not be cyclic");
         return id;
     }
     vr.positions.emplace_back();

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/tessellate/subdivision/patch_tree.h>
 
 #include <algorithm>
-#include <cassert>
 
 namespace seamless {
 namespace {
@@ -45,7 +45,8 @@ int attach_triangles_at(PatchTrees& trees, int at, int first, int count, int nod
     int d0 = 0, d1 = 0, next = node0;
     const int a = build(trees, first, half, next, d0);
     const int b = build(trees, first + half, count - half, next, d1);
-    assert(next == node0 + attached_nodes(count));
+    SEAMLESS_DCHECK(next == node0 + attached_nodes(count),
+                    "the tree's node count is not attached_nodes");
     trees.nodes[at].child[0] = a;
     trees.nodes[at].child[1] = b;
     return 1 + std::max(d0, d1);

@@ -9,9 +9,9 @@
 // than their father.
 #pragma once
 
+#include <seamless/base/check.h>
 #include <seamless/base/vec.h>
 
-#include <cassert>
 #include <vector>
 
 namespace seamless {
@@ -42,7 +42,7 @@ struct PatchTrees {
 template <class BoxPred, class Visit>
 void visit_candidate_triangles(const PatchTrees& trees, BoxPred&& box_pred, Visit&& visit) {
     constexpr int kStack = 256;
-    assert(trees.depth < kStack - 2);
+    SEAMLESS_CHECK(trees.depth < kStack - 2, "patch trees deeper than the visit's stack");
     int stack[kStack];
     for (int root : trees.roots) {
         int top = 0;
@@ -69,7 +69,7 @@ void update_triangle_hulls(PatchTrees& trees, int begin, int end, TriangleBox&& 
         if (n.triangle >= 0) n.triangle_hull.extend(triangle_box(n.triangle));
         for (int c : n.child) {
             if (c < 0) continue;
-            assert(c > i);
+            SEAMLESS_DCHECK(c > i, "a child node stored before its parent");
             n.triangle_hull.extend(trees.nodes[c].triangle_hull);
         }
     }

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/spline/surface_point.h>
 #include <seamless/tessellate/bounds/error_bound.h>
 #include <seamless/tessellate/bounds/power_basis.h>
@@ -6,7 +7,6 @@
 #include <seamless/tessellate/subdivision/subdivision.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <deque>
 
@@ -25,8 +25,8 @@ struct Context {
     PatchTrees& trees;
     std::vector<Subpatch>& out;
     // The two halves split at each depth, reused from split to split (two
-    // fresh BezierPatch per split zeroed 6.4 KB: teapot D = 0.001, 20 M
-    // instructions). Entries beyond the degrees stay as constructed.
+    // fresh BezierPatch per split would zero 6.4 KB). Entries beyond the
+    // degrees stay as constructed.
     std::deque<std::array<BezierPatch, 2>>& halves;
     int next = 0; // the next node id without nodes (options.nodes false)
     // Leaves not yet taken from options.leaves_left: one atomic subtraction
@@ -95,20 +95,11 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
     return true;
 }
 
-int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
-    const bool nodes = cx.options.nodes;
-    const int id = nodes ? static_cast<int>(cx.trees.nodes.size()) : cx.next++;
-    if (nodes) {
-        cx.trees.nodes.emplace_back();
-        cx.trees.nodes[id].control_hull = control_box(b);
-    }
-    cx.trees.depth = std::max(cx.trees.depth, depth);
-
-    const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
-    const Vec3 centre = exact_point(b, 0.5, 0.5);
-    double fan_error = -1;
-    const bool forced =
-        cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
+// Whether subpatch `r` (net `b`, corners V) passes the criteria: planarity
+// (unless `forced`), then the tolerance's and angle's verdict on its fan,
+// from the memo when an earlier pass met it. fan_error as fan_accepted's.
+bool criteria_accept(Context& cx, const BezierPatch& b, const ParamRect& r, Vec3 centre,
+                     const std::array<Vec3, 4>& V, bool forced, double& fan_error) {
     // With a tolerance alone the planarity test is off (both eps infinite).
     const bool test_planarity = std::isfinite(cx.options.eps1) || std::isfinite(cx.options.eps2);
     bool planar =
@@ -125,33 +116,27 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
             if (memo) (*memo)[key] = FanVerdict{planar, fan_error};
         }
     }
-    // A side can only be halved while it spans more than one grid step.
-    const bool can_u = r.s1 - r.s0 > 1, can_v = r.t1 - r.t0 > 1;
-    // Past the budget (SubdivisionOptions::leaves_left) the pass is refused:
-    // stop splitting so that it ends at once.
+    return planar;
+}
+
+// Appends `leaf`, counted against the budget (SubdivisionOptions::leaves_left).
+void add_leaf(Context& cx, const Subpatch& leaf) {
     std::atomic<std::int64_t>* const left = cx.options.leaves_left;
-    const bool spent = left && left->load(std::memory_order_relaxed) < 0;
-    if (planar || spent || depth >= cx.options.max_depth || (!can_u && !can_v)) {
-        if (left && ++cx.unflushed == kLeafBatch) {
-            left->fetch_sub(kLeafBatch, std::memory_order_relaxed);
-            cx.unflushed = 0;
-        }
-        Subpatch leaf;
-        leaf.patch = cx.patch_index;
-        leaf.node = id;
-        leaf.rect = r;
-        leaf.depth = depth;
-        leaf.planar = planar;
-        leaf.corners = V;
-        leaf.centre = centre;
-        leaf.fan_error = std::max(fan_error, 0.0);
-        if (nodes) cx.trees.nodes[id].subpatch = static_cast<int>(cx.out.size());
-        cx.out.push_back(leaf);
-        return id;
+    if (left && ++cx.unflushed == kLeafBatch) {
+        left->fetch_sub(kLeafBatch, std::memory_order_relaxed);
+        cx.unflushed = 0;
     }
-    // A subpatch the tolerance rejected: halve where the remainder is larger.
-    // Flatness only where the second derivatives do not decide (teapot
-    // D = 0.001: flatness_u/v 36 M instructions -> 21 M).
+    if (cx.options.nodes) cx.trees.nodes[leaf.node].subpatch = static_cast<int>(cx.out.size());
+    cx.out.push_back(leaf);
+}
+
+// The direction subpatch `r` is halved in, true for u (s). A subpatch the
+// tolerance rejected: where the remainder is larger; flatness only where the
+// second derivatives do not decide (flatness costs more). A side can only be
+// halved while it spans more than one grid step.
+bool halve_in_u(const Context& cx, const BezierPatch& b, const ParamRect& r, double fan_error,
+                bool forced) {
+    const bool can_u = r.s1 - r.s0 > 1, can_v = r.t1 - r.t0 > 1;
     bool in_u;
     if (cx.options.tolerance > 0 && (fan_error >= 0 || forced)) {
         const std::array<double, 2> d = second_derivative_bounds(b);
@@ -161,6 +146,43 @@ int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
     }
     if (in_u && !can_u) in_u = false;
     if (!in_u && !can_v) in_u = true;
+    return in_u;
+}
+
+int recurse(Context& cx, const BezierPatch& b, ParamRect r, int depth) {
+    const bool nodes = cx.options.nodes;
+    const int id = nodes ? static_cast<int>(cx.trees.nodes.size()) : cx.next++;
+    if (nodes) {
+        cx.trees.nodes.emplace_back();
+        cx.trees.nodes[id].control_hull = control_box(b);
+    }
+    cx.trees.depth = std::max(cx.trees.depth, depth);
+
+    const std::array<Vec3, 4> V{b.corner(0), b.corner(1), b.corner(2), b.corner(3)};
+    const Vec3 centre = exact_point(b, 0.5, 0.5);
+    double fan_error = -1;
+    const bool forced =
+        cx.options.split && cx.options.split->count(subpatch_key(cx.patch_index, r));
+    const bool planar = criteria_accept(cx, b, r, centre, V, forced, fan_error);
+    const bool can_u = r.s1 - r.s0 > 1, can_v = r.t1 - r.t0 > 1;
+    // Past the budget (SubdivisionOptions::leaves_left) the pass is refused:
+    // stop splitting so that it ends at once.
+    std::atomic<std::int64_t>* const left = cx.options.leaves_left;
+    const bool spent = left && left->load(std::memory_order_relaxed) < 0;
+    if (planar || spent || depth >= cx.options.max_depth || (!can_u && !can_v)) {
+        Subpatch leaf;
+        leaf.patch = cx.patch_index;
+        leaf.node = id;
+        leaf.rect = r;
+        leaf.depth = depth;
+        leaf.planar = planar;
+        leaf.corners = V;
+        leaf.centre = centre;
+        leaf.fan_error = std::max(fan_error, 0.0);
+        add_leaf(cx, leaf);
+        return id;
+    }
+    const bool in_u = halve_in_u(cx, b, r, fan_error, forced);
     std::array<BezierPatch, 2>& half = cx.half(depth);
     BezierPatch &lo = half[0], &hi = half[1];
     ParamRect rlo = r, rhi = r;
@@ -197,7 +219,7 @@ std::uint64_t subpatch_key(int patch, const ParamRect& r) {
 
 int subdivide(const BezierPatch& patch, int patch_index, const SubdivisionOptions& options,
               PatchTrees& trees, std::vector<Subpatch>& out) {
-    assert(options.max_depth >= 0);
+    SEAMLESS_CHECK(options.max_depth >= 0, "negative max_depth");
     // Per thread; emptied when the degrees change, so that every entry a
     // split does not write is as in a fresh BezierPatch.
     thread_local std::deque<std::array<BezierPatch, 2>> halves;

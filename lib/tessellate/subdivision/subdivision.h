@@ -33,7 +33,7 @@ struct ParamRect {
 };
 
 // The tolerance and angle criteria's verdict on one subpatch (subpatch_key ->
-// verdict), kept between the passes of a tolerance (pass_memo.h): the
+// verdict), kept between the passes of a tolerance (tessellation_pass.h): the
 // criteria depend on the subpatch alone, so a later pass asks only about
 // subpatches it has not met. A key collision can only change where the
 // subdivision splits; the final certified bound is computed afresh.

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Surfaces whose normals disagree (as IGES files' surfaces do) come out of the
 // tessellation consistently oriented, and closed models face outward.
-#include "mesh_properties.h"
-#include "seam_cases.h"
+#include <tessellate/mesh_properties.h>
+#include <tessellate/seam_cases.h>
 
 #include <seamless/tessellate/seams/surface_orientation.h>
 #include <seamless/tessellate/tessellation.h>

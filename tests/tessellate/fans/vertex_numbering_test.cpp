@@ -2,7 +2,7 @@
 // The vertex numbering (vertex_numbering.h): the same numbers and positions
 // whether a previous pass's positions (and keys) are taken or every point is
 // evaluated.
-#include "tessellate/teapot_pass.h"
+#include <tessellate/teapot_pass.h>
 
 #include <seamless/tessellate/fans/subpatch_ring.h>
 #include <seamless/tessellate/fans/vertex_numbering.h>

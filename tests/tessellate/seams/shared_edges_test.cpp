@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Shared boundaries and the crack-free vertex rule (paper section 6, Fig. 3).
-#include "tessellate/teapot_pass.h"
 #include "test_util.h"
+#include <tessellate/teapot_pass.h>
 
 #include <seamless/model/model.h>
 #include <seamless/tessellate/seams/shared_edges.h>

@@ -3,8 +3,8 @@
 // by control polygon, tessellate crack-free: closed models stay closed, one
 // shell, with the right Euler characteristic and no T-junction, at the
 // section 8 tolerances and 100x finer.
-#include "mesh_properties.h"
-#include "seam_cases.h"
+#include <tessellate/mesh_properties.h>
+#include <tessellate/seam_cases.h>
 
 #include <seamless/model/model.h>
 #include <seamless/tessellate/seams/edge_graph.h>

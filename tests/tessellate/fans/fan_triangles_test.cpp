@@ -3,7 +3,7 @@
 // slot's parameters approached from its subpatch's centre, and each centre's
 // its own, bit for bit, on 1 and 2 threads, although a vertex's normal is
 // computed once per patch where it is regular.
-#include "tessellate/teapot_pass.h"
+#include <tessellate/teapot_pass.h>
 
 #include <seamless/spline/surface_point.h>
 #include <seamless/tessellate/fans/fan_triangles.h>

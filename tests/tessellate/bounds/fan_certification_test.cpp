@@ -2,7 +2,7 @@
 // The fans' certified bounds (fan_certification.h): a bound kept for the next
 // pass is found again by its ring, and one kept without its ring is computed
 // again to the same value.
-#include "tessellate/teapot_pass.h"
+#include <tessellate/teapot_pass.h>
 
 #include <seamless/tessellate/bounds/fan_certification.h>
 #include <seamless/tessellate/fans/subpatch_ring.h>
@@ -33,19 +33,16 @@ TEST_CASE("bounds kept with their rings are found again, kept without computed a
         vr.alias = &in.graph.alias;
         vr.straight_segments = false;
         number_vertices(in.t.subpatches, in.leaf_start, in.graph, threads, vr, numbered);
-        std::vector<KnownBounds> known(np);
+        FanCertification fans(patches, 1.0, tolerance, threads);
         std::vector<Subpatch> first = in.t.subpatches;
-        const std::vector<char> fresh = certify_fans(patches, numbered, vr.positions, 1.0,
-                                                     tolerance, threads, nullptr, known, first);
+        const std::vector<char> fresh = fans.certify(numbered, vr.positions, nullptr, first);
         CHECK(std::count(fresh.begin(), fresh.end(), 1) == static_cast<long>(first.size()));
         // Rings kept for the even patches only.
         std::vector<char> compared(np, 0);
         for (int p = 0; p < np; p += 2) compared[p] = 1;
-        keep_fan_bounds(numbered, vr.positions, in.leaf_start, threads, fresh, &compared, first,
-                        known);
+        fans.keep(numbered, vr.positions, in.leaf_start, fresh, &compared, first);
         std::vector<Subpatch> second = in.t.subpatches;
-        const std::vector<char> again = certify_fans(patches, numbered, vr.positions, 1.0,
-                                                     tolerance, threads, nullptr, known, second);
+        const std::vector<char> again = fans.certify(numbered, vr.positions, nullptr, second);
         for (size_t i = 0; i < second.size(); ++i) {
             REQUIRE(std::isfinite(first[i].error_bound));
             CHECK(second[i].error_bound == first[i].error_bound);

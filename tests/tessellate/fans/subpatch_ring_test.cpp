@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The subpatches' rings (subpatch_ring.h), collected afresh and copied from a
 // previous pass.
-#include "tessellate/teapot_pass.h"
+#include <tessellate/teapot_pass.h>
 
 #include <seamless/tessellate/fans/subpatch_ring.h>
 
