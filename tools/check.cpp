@@ -4,8 +4,8 @@
 #include "commands.h"
 #include "number_options.h"
 
-#include <seamless/mesh/check.h>
-#include <seamless/mesh/mesh_io.h>
+#include <seamless/mesh/check/check.h>
+#include <seamless/mesh/io/mesh_io.h>
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 // The check command's output: a CheckReport as text or as JSON (docs/check.md).
 #pragma once
 
-#include <seamless/mesh/check.h>
+#include <seamless/mesh/check/check.h>
 
 #include <ostream>
 #include <string>

@@ -11,7 +11,7 @@
 #include <seamless/base/files/output_files.h>
 #include <seamless/base/parallel/huge_pages.h>
 #include <seamless/base/parallel/workers_warm_up.h>
-#include <seamless/mesh/mesh_io.h>
+#include <seamless/mesh/io/mesh_io.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
 
