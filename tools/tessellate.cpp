@@ -11,13 +11,13 @@
 #include <seamless/base/files/output_files.h>
 #include <seamless/base/parallel/huge_pages.h>
 #include <seamless/base/parallel/workers_warm_up.h>
+#include <seamless/mesh/io/mesh_formats.h>
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <nlohmann/json.hpp>
 
-#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -42,7 +42,7 @@ void add_tessellate(CLI::App& app, Action& action) {
                     "model file (.json version 1, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
         ->required();
     cmd->add_option("-o,--output", args->out,
-                    "mesh file; format by extension (.off .obj .ply .stl .gltf .glb)")
+                    "mesh file; format by extension (" + mesh_extensions() + ")")
         ->required();
     cmd->add_option("--eps1", args->eps1,
                     "planarity tolerance in model units (default 0.001 * d_max)")
@@ -77,12 +77,7 @@ void add_tessellate(CLI::App& app, Action& action) {
     cmd->callback([&action, args] {
         action = [args] {
             // Refuse an unknown output format before doing the work.
-            std::string ext = std::filesystem::path(args->out).extension().string();
-            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-            if (!is_mesh_extension(ext))
-                throw InputError(args->out, "",
-                                 "unknown mesh extension '" + ext +
-                                     "' (expected .off .obj .ply .stl .gltf .glb)");
+            (void)mesh_format(std::filesystem::path(args->out));
             // Every output checked (writable, not an input) before the work.
             std::vector<std::filesystem::path> outs{args->out};
             if (!args->stats.empty()) outs.push_back(args->stats);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// glTF 2.0 (.gltf with an embedded base64 buffer, .glb) through tinygltf; used by
-// mesh_io.cpp, which picks the format from the extension.
+// glTF 2.0 (.gltf with an embedded base64 buffer, .glb) through tinygltf
+// (gltf_write.cpp, gltf_read.cpp); used by mesh_io.cpp, which picks the format
+// from the extension.
 #pragma once
 
 #include <seamless/base/triangle_mesh.h>

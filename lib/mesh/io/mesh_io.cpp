@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Mesh files by extension: OFF, OBJ, PLY and STL (one file per format,
-// mesh_text.h), glTF (gltf_io.h).
+// Mesh files by format (mesh_formats.h): OFF, OBJ, PLY and STL (one file per
+// format, mesh_text.h), glTF (gltf_io.h).
 //
 // Why not OpenMesh IO for these: OpenMesh 9's readers and writers pass every
 // point through Vec3f (BaseImporter::add_vertex(Vec3f), BaseExporter::point), so
@@ -11,6 +11,7 @@
 // (std::to_chars, at most 17 significant digits) and parses with std::from_chars
 // (correctly rounded), so text files round-trip bit-identically, and reads every
 // face exactly as the file indexes it.
+#include <seamless/base/check.h>
 #include <seamless/base/error.h>
 #include <seamless/base/files/atomic_file.h>
 #include <seamless/base/files/input_file.h>
@@ -18,7 +19,6 @@
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/mesh/io/mesh_text.h>
 
-#include <cctype>
 #include <fstream>
 #include <string>
 
@@ -26,12 +26,6 @@ namespace seamless {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lower_extension(const fs::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
 
 // Shared checks of what every reader produced.
 void validate(const TriangleMesh& mesh, const std::string& file) {
@@ -47,31 +41,71 @@ void validate(const TriangleMesh& mesh, const std::string& file) {
                                      std::to_string(n) + ")");
 }
 
-} // namespace
-
-bool is_mesh_extension(const std::string& ext) {
-    std::string e = ext;
-    for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return e == ".off" || e == ".obj" || e == ".ply" || e == ".stl" || e == ".gltf" || e == ".glb";
+bool is_gltf(MeshFormat format) {
+    return format == MeshFormat::gltf || format == MeshFormat::glb;
 }
 
-void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
-    const std::string ext = lower_extension(path);
-    const std::string file = path.string();
-    if (!is_mesh_extension(ext))
-        throw InputError(file, "",
-                         "unknown mesh extension '" + ext +
-                             "' (expected .off .obj .ply .stl .gltf .glb)");
+// The file's text in one of the text formats.
+std::string format_text(MeshFormat format, const TriangleMesh& mesh) {
+    switch (format) {
+    case MeshFormat::off:
+        return mesh_text::format_off(mesh);
+    case MeshFormat::obj:
+        return mesh_text::format_obj(mesh);
+    case MeshFormat::ply:
+        return mesh_text::format_ply(mesh);
+    case MeshFormat::stl:
+        return mesh_text::format_stl(mesh);
+    case MeshFormat::gltf:
+    case MeshFormat::glb:
+        break;
+    }
+    SEAMLESS_CHECK(false, "glTF is written by write_gltf, not as text");
+}
+
+TriangleMesh read_format(MeshFormat format, const std::string& bytes, const std::string& file,
+                         const fs::path& base_dir) {
+    switch (format) {
+    case MeshFormat::gltf:
+        return parse_gltf(bytes, false, file, base_dir);
+    case MeshFormat::glb:
+        return parse_gltf(bytes, true, file, base_dir);
+    case MeshFormat::off:
+        return mesh_text::read_off(bytes, file);
+    case MeshFormat::obj:
+        return mesh_text::read_obj(bytes, file);
+    case MeshFormat::ply:
+        return mesh_text::read_ply(bytes, file);
+    case MeshFormat::stl:
+        return mesh_text::read_stl(bytes, file);
+    }
+    SEAMLESS_CHECK(false, "a mesh format without a reader");
+}
+
+// The mesh of a file's bytes in `format`, checked.
+TriangleMesh parse_as(MeshFormat format, const std::string& bytes, const std::string& file,
+                      const fs::path& base_dir) {
+    TriangleMesh mesh =
+        naming_file_on_oom(file, [&] { return read_format(format, bytes, file, base_dir); });
     validate(mesh, file);
-    if (ext == ".gltf" || ext == ".glb") {
-        write_atomically(path,
-                         [&](const fs::path& tmp) { write_gltf(tmp, mesh, ext == ".glb", file); });
+    // A file with nothing to check is never a clean mesh.
+    if (mesh.triangles.empty()) throw InputError(file, "", "holds no triangles");
+    return mesh;
+}
+
+} // namespace
+
+void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
+    const MeshFormat format = mesh_format(path);
+    const std::string file = path.string();
+    validate(mesh, file);
+    if (is_gltf(format)) {
+        write_atomically(path, [&](const fs::path& tmp) {
+            write_gltf(tmp, mesh, format == MeshFormat::glb, file);
+        });
         return;
     }
-    const std::string text = ext == ".off"   ? mesh_text::format_off(mesh)
-                             : ext == ".obj" ? mesh_text::format_obj(mesh)
-                             : ext == ".ply" ? mesh_text::format_ply(mesh)
-                                             : mesh_text::format_stl(mesh);
+    const std::string text = format_text(format, mesh);
     write_atomically(path, [&](const fs::path& tmp) {
         std::ofstream out(tmp, std::ios::binary);
         if (!out) throw InputError(file, "", "cannot open for writing");
@@ -83,35 +117,13 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
 
 TriangleMesh parse_mesh(const std::string& bytes, const std::string& format,
                         const std::string& file, const std::filesystem::path& base_dir) {
-    std::string ext = format;
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (!is_mesh_extension(ext))
-        throw InputError(file, "",
-                         "unknown mesh extension '" + ext +
-                             "' (expected .off .obj .ply .stl .gltf .glb)");
-    TriangleMesh mesh = naming_file_on_oom(file, [&] {
-        return ext == ".gltf"  ? parse_gltf(bytes, false, file, base_dir)
-               : ext == ".glb" ? parse_gltf(bytes, true, file, base_dir)
-               : ext == ".off" ? mesh_text::read_off(bytes, file)
-               : ext == ".obj" ? mesh_text::read_obj(bytes, file)
-               : ext == ".ply" ? mesh_text::read_ply(bytes, file)
-                               : mesh_text::read_stl(bytes, file);
-    });
-    validate(mesh, file);
-    // A file with nothing to check is never a clean mesh.
-    if (mesh.triangles.empty()) throw InputError(file, "", "holds no triangles");
-    return mesh;
+    return parse_as(mesh_format(format, file), bytes, file, base_dir);
 }
 
 TriangleMesh read_mesh(const std::filesystem::path& path) {
-    const std::string ext = lower_extension(path);
-    const std::string file = path.string();
-    if (!is_mesh_extension(ext))
-        throw InputError(file, "",
-                         "unknown mesh extension '" + ext +
-                             "' (expected .off .obj .ply .stl .gltf .glb)");
+    const MeshFormat format = mesh_format(path);
     const std::string bytes = read_input_file(path, kMaxMeshFileBytes, "mesh");
-    return parse_mesh(bytes, ext, file, path.parent_path());
+    return parse_as(format, bytes, path.string(), path.parent_path());
 }
 
 } // namespace seamless

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Mesh files: .off .obj .ply .stl (our readers and writers: every coordinate
-// round-trips bit-identically, mesh_io.cpp says why not OpenMesh's), .gltf
-// .glb (glTF 2.0) through tinygltf. The format follows the
-// file extension. Writers go through a temporary file and a rename, so a
+// Mesh files: OFF, OBJ, PLY, STL (our readers and writers: every coordinate
+// round-trips bit-identically, mesh_io.cpp says why not OpenMesh's) and glTF
+// 2.0 through tinygltf. The format follows the file extension (kMeshFormats,
+// mesh_formats.h). Writers go through a temporary file and a rename, so a
 // failure leaves no partial file.
 #pragma once
 
 #include <seamless/base/triangle_mesh.h>
+#include <seamless/mesh/io/mesh_formats.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -32,8 +33,5 @@ TriangleMesh read_mesh(const std::filesystem::path& path);
 // are looked up.
 TriangleMesh parse_mesh(const std::string& bytes, const std::string& format,
                         const std::string& file, const std::filesystem::path& base_dir = {});
-
-// Extensions write_mesh and read_mesh know, e.g. {".off", ".obj", ...}.
-bool is_mesh_extension(const std::string& ext);
 
 } // namespace seamless

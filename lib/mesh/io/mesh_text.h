@@ -2,7 +2,7 @@
 // What the text mesh formats share (mesh_io.cpp's readers and writers, one
 // file per format: off_format.cpp, obj_format.cpp, ply_format.cpp,
 // stl_format.cpp): shortest round-trip numbers, tokens with line numbers,
-// header counts checked against the file size. Internal to lib/mesh.
+// header counts checked against the file size. Internal to lib/mesh/io.
 #pragma once
 
 #include <seamless/base/error.h>
