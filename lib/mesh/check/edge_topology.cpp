@@ -1,20 +1,20 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/base/disjoint_sets.h>
 #include <seamless/mesh/check/edge_topology.h>
 
 #include <algorithm>
-#include <cassert>
 #include <tuple>
 
 namespace seamless {
 namespace {
 
-// Corner index 3 t + c of vertex v in triangle t.
+// Corner index 3 t + c of vertex v in triangle t; v is an end of one of t's
+// edges (an edge use or a border join), so it is one of t's corners.
 int corner(const std::vector<std::array<int, 3>>& T, int t, int v) {
     for (int c = 0; c < 3; ++c)
         if (T[t][c] == v) return 3 * t + c;
-    assert(false);
-    return 3 * t;
+    SEAMLESS_CHECK(false, "an edge's end is a corner of the edge's triangle");
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // Exact predicates (Epick) for degeneracy and triangle-triangle intersection,
 // box_self_intersection_d for the candidate pairs.
 #include <seamless/base/segment_distance.h>
+#include <seamless/mesh/check/bits_hash.h>
 #include <seamless/mesh/check/self_intersections.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -38,14 +39,6 @@ struct TripleHash {
         uint64_t h = 1469598103934665603ull;
         for (int x : k) h = (h ^ static_cast<uint32_t>(x)) * 1099511628211ull;
         return static_cast<size_t>(h ^ (h >> 31));
-    }
-};
-
-struct PositionsHash {
-    size_t operator()(const std::array<uint64_t, 9>& k) const {
-        uint64_t h = 1469598103934665603ull;
-        for (uint64_t x : k) h = (h ^ x) * 1099511628211ull ^ (x >> 29);
-        return static_cast<size_t>(h);
     }
 };
 
@@ -158,7 +151,7 @@ Intersections find_intersections(const WeldedMesh& mesh, const std::vector<int>&
     // Without welding, copies with their own vertices: bit-identical corner
     // positions. Only the first takes part (with welding these are the duplicates).
     {
-        std::unordered_set<std::array<uint64_t, 9>, PositionsHash> seen;
+        std::unordered_set<std::array<uint64_t, 9>, BitsHash> seen;
         for (int t = 0; t < nf; ++t) {
             if (skip[t]) continue;
             std::array<std::array<uint64_t, 3>, 3> c;

@@ -166,7 +166,8 @@ class PrimitiveReader {
         const Triangles tris = triangles(mode, corner_order(prim, field, pv.count), field);
         // Optional corner attributes (float32 only).
         AccessorView nv, uv;
-        const bool has_n = corner_attribute(prim, "NORMAL", TINYGLTF_TYPE_VEC3, pv.count, field, nv);
+        const bool has_n =
+            corner_attribute(prim, "NORMAL", TINYGLTF_TYPE_VEC3, pv.count, field, nv);
         const bool has_u =
             corner_attribute(prim, "TEXCOORD_0", TINYGLTF_TYPE_VEC2, pv.count, field, uv);
         if (mesh_.triangles.size() + tris.size() > max_triangles_)

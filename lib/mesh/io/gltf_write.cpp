@@ -44,9 +44,9 @@ int add_accessor(tinygltf::Model& model, int view, int component, size_t count, 
 // A float attribute of `count` elements of `type` in a view of its own.
 int add_float_attribute(tinygltf::Model& model, const std::vector<float>& values, size_t count,
                         int type) {
-    return add_accessor(
-        model, add_view(model, values.data(), values.size() * sizeof(float), kArrayBuffer),
-        TINYGLTF_COMPONENT_TYPE_FLOAT, count, type);
+    return add_accessor(model,
+                        add_view(model, values.data(), values.size() * sizeof(float), kArrayBuffer),
+                        TINYGLTF_COMPONENT_TYPE_FLOAT, count, type);
 }
 
 // What a mesh holds per triangle corner, written when it holds it for every triangle.
@@ -133,8 +133,7 @@ tinygltf::Primitive add_primitive(tinygltf::Model& model, const PrimitiveArrays&
         prim.attributes["TEXCOORD_0"] = add_float_attribute(model, a.uv, nv, TINYGLTF_TYPE_VEC2);
     prim.indices = add_accessor(
         model,
-        add_view(model, a.indices.data(), a.indices.size() * sizeof(uint32_t),
-                 kElementArrayBuffer),
+        add_view(model, a.indices.data(), a.indices.size() * sizeof(uint32_t), kElementArrayBuffer),
         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, a.indices.size(), TINYGLTF_TYPE_SCALAR);
     return prim;
 }
