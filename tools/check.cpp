@@ -5,6 +5,7 @@
 #include "number_options.h"
 
 #include <seamless/mesh/check/check.h>
+#include <seamless/mesh/check/check_json.h>
 #include <seamless/mesh/io/mesh_formats.h>
 #include <seamless/mesh/io/mesh_io.h>
 
