@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// seamless check MESH: watertightness verification (issues 4 and 9, docs/check.md).
+// seamless check MESH: watertightness verification (docs/check.md).
 #include "check_report.h"
 #include "commands.h"
 #include "number_options.h"

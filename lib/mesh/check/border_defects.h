@@ -5,7 +5,7 @@
 // border vertex lies inside another border edge; and seams, the connected runs
 // of crack edges. Candidate pairs come from CGAL's box_intersection_d over the
 // border edges' boxes, so the work is bounded by the number of border edges
-// and of close pairs, whatever the edges' sizes (issue 12, finding 6).
+// and of close pairs, whatever the edges' sizes.
 #pragma once
 
 #include <seamless/mesh/check/edge_topology.h>

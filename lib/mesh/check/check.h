@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Watertightness verification of a triangle mesh (issues 4 and 9): welding of
+// Watertightness verification of a triangle mesh: welding of
 // bit-identical positions (weld.h); edge topology: borders, non-manifold
 // elements, orientation, shells and where they touch (edge_topology.h); border
 // defects: seam cracks, T-junctions, border loops (border_defects.h); degenerate,
