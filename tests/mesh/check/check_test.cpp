@@ -1,54 +1,21 @@
 // SPDX-License-Identifier: MIT
-#include "test_util.h"
+// The watertightness check on meshes built in memory: each defect kind, its
+// tolerance, and CGAL's view of the same borders.
+#include "check_shapes.h"
 
-#include <seamless/base/error.h>
 #include <seamless/mesh/check/check.h>
-#include <seamless/mesh/io/mesh_io.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <catch2/catch.hpp>
-#include <nlohmann/json.hpp>
-#include <tiny_gltf.h>
 
 #include <cmath>
-#include <cstring>
 #include <map>
 
 using namespace seamless;
+using namespace seamless::test;
 
 namespace {
-
-// A piece of the surface z = 0.3 sin(2x) over [x0, x1] x [0, 1] with its own
-// vertices, nx by ny quads, shifted by `offset`. Two pieces meeting at the same x
-// have bit-identical seam positions (same formula, same inputs).
-void add_piece(TriangleMesh& m, double x0, double x1, int nx, int ny, Vec3 offset = {}) {
-    const int base = m.vertex_count();
-    for (int i = 0; i <= nx; ++i)
-        for (int j = 0; j <= ny; ++j) {
-            const double x = x0 + i * ((x1 - x0) / nx), y = static_cast<double>(j) / ny;
-            m.positions.push_back(Vec3{x, y, 0.3 * std::sin(2 * x)} + offset);
-        }
-    auto id = [&](int i, int j) { return base + i * (ny + 1) + j; };
-    for (int i = 0; i < nx; ++i)
-        for (int j = 0; j < ny; ++j) {
-            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-        }
-}
-
-TriangleMesh octahedron(Vec3 c = {}, double r = 1) {
-    TriangleMesh m;
-    for (Vec3 d : {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, -1, 0}, Vec3{0, 0, 1},
-                   Vec3{0, 0, -1}})
-        m.positions.push_back(c + r * d);
-    // Outward: counter-clockwise seen from outside.
-    m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                   {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-    return m;
-}
 
 void append(TriangleMesh& m, const TriangleMesh& other) {
     const int base = m.vertex_count();
@@ -77,21 +44,6 @@ TriangleMesh sweep(const std::vector<std::array<double, 2>>& path, const std::ve
     }
     return m;
 }
-
-// The names of the defect kinds the report holds.
-std::vector<std::string> defects(const CheckReport& r) {
-    std::vector<std::string> d;
-    if (!r.cracks.empty()) d.push_back("cracks");
-    if (!r.t_junctions.empty()) d.push_back("t_junctions");
-    if (!r.non_manifold_edges.empty()) d.push_back("non_manifold_edges");
-    if (!r.non_manifold_vertices.empty()) d.push_back("non_manifold_vertices");
-    if (!r.degenerate_triangles.empty()) d.push_back("degenerate_triangles");
-    if (!r.duplicated_triangles.empty()) d.push_back("duplicated_triangles");
-    if (!r.inconsistent_orientation.empty()) d.push_back("inconsistent_orientation");
-    if (!r.self_intersections.empty()) d.push_back("self_intersections");
-    return d;
-}
-using Names = std::vector<std::string>;
 
 // CGAL's own view of a manifold mesh: vertices welded as check does (bit-identical
 // positions) unless `weld` is false; returns {border halfedges, is_closed}.
@@ -380,152 +332,4 @@ TEST_CASE("check: two overlapping closed components are no defect") {
         CHECK(c.euler == 2);
     }
     agrees_with_cgal(m, r);
-}
-
-TEST_CASE("check: reads an STL and a glb written by other programs") {
-    const auto dir = test::scratch_dir("check_foreign");
-    const TriangleMesh oct = octahedron({0.25, 0.5, 0.125}, 0.5); // float-exact coordinates
-    {
-        OpenMesh::TriMesh_ArrayKernelT<> om;
-        std::vector<OpenMesh::VertexHandle> vh;
-        for (Vec3 p : oct.positions)
-            vh.push_back(om.add_vertex(OpenMesh::Vec3f(
-                static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z))));
-        for (auto t : oct.triangles) om.add_face(vh[t[0]], vh[t[1]], vh[t[2]]);
-        om.request_face_normals();
-        om.update_face_normals();
-        OpenMesh::IO::Options opt(OpenMesh::IO::Options::Binary);
-        REQUIRE(OpenMesh::IO::write_mesh(om, (dir / "om.stl").string(), opt));
-    }
-    const TriangleMesh stl = read_mesh(dir / "om.stl");
-    CHECK(stl.vertex_count() == 24);
-    const CheckReport rs = check_mesh(stl);
-    CHECK(rs.welded_vertices == 18);
-    CHECK(defects(rs) == Names{});
-    CHECK(rs.closed);
-    CHECK(rs.components[0].euler == 2);
-    CHECK(rs.components[0].outward == true);
-
-    // glb: upper and lower halves as two meshes, equator vertices repeated.
-    {
-        tinygltf::Model model;
-        model.asset.version = "2.0";
-        model.buffers.resize(1);
-        auto& data = model.buffers[0].data;
-        tinygltf::Scene scene;
-        for (int half = 0; half < 2; ++half) {
-            std::vector<float> pos;
-            std::vector<uint16_t> idx;
-            std::map<int, uint16_t> local;
-            for (int t = 4 * half; t < 4 * half + 4; ++t)
-                for (int v : oct.triangles[t]) {
-                    auto [it, ins] = local.try_emplace(v, static_cast<uint16_t>(pos.size() / 3));
-                    if (ins)
-                        for (int k = 0; k < 3; ++k)
-                            pos.push_back(static_cast<float>(oct.positions[v][k]));
-                    idx.push_back(it->second);
-                }
-            while (idx.size() % 2) idx.push_back(0);
-            auto add = [&](const void* p, size_t n, int target) {
-                tinygltf::BufferView bv;
-                bv.buffer = 0;
-                bv.byteOffset = data.size();
-                bv.byteLength = n;
-                bv.target = target;
-                data.insert(data.end(), static_cast<const unsigned char*>(p),
-                            static_cast<const unsigned char*>(p) + n);
-                model.bufferViews.push_back(bv);
-                return static_cast<int>(model.bufferViews.size()) - 1;
-            };
-            tinygltf::Accessor pa;
-            pa.bufferView = add(pos.data(), pos.size() * 4, 34962);
-            pa.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-            pa.type = TINYGLTF_TYPE_VEC3;
-            pa.count = pos.size() / 3;
-            pa.minValues = {-1, -1, -1};
-            pa.maxValues = {1, 1, 1};
-            model.accessors.push_back(pa);
-            tinygltf::Accessor ia;
-            ia.bufferView = add(idx.data(), 12 * 2, 34963);
-            ia.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-            ia.type = TINYGLTF_TYPE_SCALAR;
-            ia.count = 12;
-            model.accessors.push_back(ia);
-            tinygltf::Primitive prim;
-            prim.attributes["POSITION"] = static_cast<int>(model.accessors.size()) - 2;
-            prim.indices = static_cast<int>(model.accessors.size()) - 1;
-            prim.mode = TINYGLTF_MODE_TRIANGLES;
-            tinygltf::Mesh gm;
-            gm.primitives.push_back(prim);
-            model.meshes.push_back(gm);
-            tinygltf::Node node;
-            node.mesh = half;
-            model.nodes.push_back(node);
-            scene.nodes.push_back(half);
-        }
-        model.scenes.push_back(scene);
-        model.defaultScene = 0;
-        tinygltf::TinyGLTF io;
-        REQUIRE(
-            io.WriteGltfSceneToFile(&model, (dir / "two.glb").string(), true, true, false, true));
-    }
-    const TriangleMesh glb = read_mesh(dir / "two.glb");
-    CHECK(glb.vertex_count() == 10);
-    CHECK(glb.triangle_count() == 8);
-    const CheckReport rg = check_mesh(glb);
-    CHECK(rg.welded_vertices == 4);
-    CHECK(defects(rg) == Names{});
-    CHECK(rg.closed);
-    CHECK(*rg.components[0].volume == Approx(4.0 / 3.0 * 0.125));
-    CheckOptions raw;
-    raw.weld = false;
-    const CheckReport rn = check_mesh(glb, raw);
-    CHECK(defects(rn) == Names{"cracks"});
-    CHECK(rn.widest_crack == 0);
-}
-
-TEST_CASE("check CLI: exit status 0, 1 and 2") {
-    const auto dir = test::scratch_dir("check_cli");
-    write_mesh(dir / "oct.off", octahedron());
-    TriangleMesh open;
-    add_piece(open, 0, 1, 2, 2);
-    write_mesh(dir / "open.ply", open);
-    TriangleMesh tj;
-    add_piece(tj, 0, 0.5, 2, 2);
-    add_piece(tj, 0.5, 1, 2, 4);
-    write_mesh(dir / "tj.glb", tj);
-
-    auto r = test::run_cli("check \"" + (dir / "oct.off").string() + "\" --closed");
-    CHECK(r.status == 0);
-    CHECK(r.out.find("Euler characteristic 2") != std::string::npos);
-    r = test::run_cli("check \"" + (dir / "open.ply").string() + "\"");
-    CHECK(r.status == 0);
-    r = test::run_cli("check \"" + (dir / "open.ply").string() + "\" --closed");
-    CHECK(r.status == 1);
-    r = test::run_cli("check \"" + (dir / "tj.glb").string() + "\" --json");
-    CHECK(r.status == 1);
-    const auto j = nlohmann::json::parse(r.out);
-    CHECK(j["t_junctions"]["count"] == 2);
-    CHECK(j["t_junctions"]["listed"].size() == 2);
-    CHECK(j["t_junctions"]["listed"][0]["location"].size() == 3);
-    CHECK(j["seams"]["count"] == 1);
-    CHECK(j["seams"]["listed"][0]["length"] == Approx(1));
-    CHECK(j["cracks"]["count"] == 6);
-    CHECK(j["defects"] == 8);
-    CHECK(j["components"] == 1); // the T-junction's two sides join the pieces into one shell
-    CHECK(j["shell_contacts"]["count"] == 0);
-    CHECK(j["closed"] == false);
-    CHECK(j["passed"] == false);
-    // The two pieces' seam vertices coincide: welded, then judged.
-    CHECK(j["welded_vertices"] > 0);
-    r = test::run_cli("check \"" + (dir / "tj.glb").string() + "\" --no-weld");
-    CHECK(r.status == 1);
-    test::write_file(dir / "bad.off", "OFF\n3 1 0\n0 0 0\n");
-    r = test::run_cli("check \"" + (dir / "bad.off").string() + "\"");
-    CHECK(r.status == 2);
-    CHECK(r.err.rfind("error: ", 0) == 0);
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(r.err.find("bad.off") != std::string::npos);
-    r = test::run_cli("check \"" + (dir / "missing.stl").string() + "\"");
-    CHECK(r.status == 2);
 }
