@@ -15,7 +15,7 @@ packages=(build-essential cmake pkg-config libopenmesh-dev libcgal-dev libtinygl
           nlohmann-json3-dev libstb-dev libpng-dev libcli11-dev libtbb-dev libboost-dev python3
           libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
           libocct-foundation-dev libembree-dev clang-14 libclang-rt-14-dev libfuzzer-14-dev)
-# node and npm run the Khronos glTF validator (tests/mesh/mesh_io_test.cpp);
+# node and npm run the Khronos glTF validator (tests/mesh/io/mesh_io_test.cpp);
 # by command, since a node from elsewhere (nodesource) brings its own npm.
 command -v node >/dev/null 2>&1 || packages+=(nodejs)
 command -v npm >/dev/null 2>&1 || packages+=(npm)

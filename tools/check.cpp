@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
-// seamless check MESH: watertightness verification (issues 4 and 9, docs/check.md).
+// seamless check MESH: watertightness verification (docs/check.md).
 #include "check_report.h"
 #include "commands.h"
 #include "number_options.h"
 
-#include <seamless/mesh/check.h>
-#include <seamless/mesh/mesh_io.h>
+#include <seamless/mesh/check/check.h>
+#include <seamless/mesh/check/check_json.h>
+#include <seamless/mesh/io/mesh_formats.h>
+#include <seamless/mesh/io/mesh_io.h>
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +29,7 @@ void add_check(CLI::App& app, Action& action) {
     gap_help << "absolute tolerance for cracks and T-junctions, model units (default: "
              << opts->relative_gap * 100 << "% of the local edge length, at least "
              << opts->gap_floor << " * d_max)";
-    cmd->add_option("MESH", *mesh_path, "mesh file (.off .obj .ply .stl .gltf .glb)")->required();
+    cmd->add_option("MESH", *mesh_path, "mesh file (" + mesh_extensions() + ")")->required();
     cmd->add_flag("--json", *as_json, "print the whole report as JSON");
     cmd->add_flag("--closed", opts->require_closed, "also fail unless every component is closed");
     cmd->add_option("--gap", opts->gap, gap_help.str())->check(finite_number(Bound::positive));

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "check_report.h"
 
-#include <nlohmann/json.hpp>
-
 #include <sstream>
 
 namespace seamless::cli {
@@ -34,10 +32,8 @@ std::string tolerance(const GapTolerance& g) {
     return s.str();
 }
 
-} // namespace
-
-void print_check_report(std::ostream& os, const CheckReport& r, size_t max) {
-    os.precision(10);
+// Welding, counts, the gap tolerance and the border loops.
+void print_counts(std::ostream& os, const CheckReport& r, size_t max) {
     if (r.welded)
         os << "welded " << r.welded_vertices << " of " << r.input_vertices
            << " vertices with bit-identical positions\n";
@@ -56,6 +52,10 @@ void print_check_report(std::ostream& os, const CheckReport& r, size_t max) {
            << (l.closed ? "" : " (not closed)") << "\n";
     }
     if (r.border_loops.size() > max) os << "  ... " << r.border_loops.size() - max << " more\n";
+}
+
+// Non-manifold elements, shell contacts, seams, cracks and T-junctions.
+void print_edge_defects(std::ostream& os, const CheckReport& r, size_t max) {
     print_list(
         os, "non-manifold edges", r.non_manifold_edges,
         [](const EdgeDefect& e) {
@@ -102,6 +102,10 @@ void print_check_report(std::ostream& os, const CheckReport& r, size_t max) {
             return s.str();
         },
         max);
+}
+
+// Triangle defects and overlaps, then the shells with their measures.
+void print_triangles_and_shells(std::ostream& os, const CheckReport& r, size_t max) {
     auto tri = [](const TriangleDefect& d) {
         return "triangle " + std::to_string(d.triangle) + " at " + point(d.location);
     };
@@ -129,94 +133,16 @@ void print_check_report(std::ostream& os, const CheckReport& r, size_t max) {
         if (C.outward) os << (*C.outward ? ", outward" : ", inward");
         os << "\n";
     }
-    os << "defects: " << defect_count(r) << "\n";
 }
 
-std::string check_report_json(const CheckReport& r, int max_listed) {
-    using nlohmann::json;
-    auto pt = [](Vec3 p) { return json::array({p.x, p.y, p.z}); };
-    auto list = [&](const auto& v, auto&& one) {
-        json a = json::array();
-        for (size_t i = 0; i < v.size() && static_cast<int>(i) < max_listed; ++i)
-            a.push_back(one(v[i]));
-        return json{{"count", v.size()}, {"listed", a}};
-    };
-    auto pair = [&](const TrianglePair& p) {
-        return json{{"triangles", {p.t0, p.t1}}, {"location", pt(p.location)}};
-    };
-    json j;
-    j["d_max"] = r.d_max;
-    j["gap"] = r.gap.absolute;
-    j["relative_gap"] = r.gap.relative;
-    j["weld"] = r.welded;
-    j["input_vertices"] = r.input_vertices;
-    j["welded_vertices"] = r.welded_vertices;
-    j["unreferenced_vertices"] = r.unreferenced_vertices;
-    j["vertices"] = r.vertices;
-    j["triangles"] = r.triangles;
-    j["edges"] = r.edges;
-    j["components"] = r.components.size();
-    j["border_edges"] = r.border_edges;
-    j["closed"] = r.closed;
-    j["border_loops"] = list(r.border_loops, [&](const BorderLoop& l) {
-        return json{
-            {"edges", l.edges}, {"length", l.length}, {"start", pt(l.start)}, {"closed", l.closed}};
-    });
-    j["non_manifold_edges"] = list(r.non_manifold_edges, [&](const EdgeDefect& e) {
-        return json{{"vertices", {e.v0, e.v1}},
-                    {"from", pt(e.p0)},
-                    {"to", pt(e.p1)},
-                    {"triangles", e.triangles}};
-    });
-    auto vertex = [&](const VertexDefect& v) {
-        return json{{"vertex", v.vertex}, {"location", pt(v.position)}};
-    };
-    j["non_manifold_vertices"] = list(r.non_manifold_vertices, vertex);
-    j["shell_contacts"] = list(r.shell_contacts, vertex);
-    j["t_junctions"] = list(r.t_junctions, [&](const TJunction& t) {
-        return json{{"vertex", t.vertex},
-                    {"location", pt(t.position)},
-                    {"triangle", t.triangle},
-                    {"edge", {t.v0, t.v1}},
-                    {"distance", t.distance}};
-    });
-    j["seams"] = list(r.seams, [&](const Seam& s) {
-        return json{{"edges", s.edges},           {"length", s.length}, {"gap", s.gap},
-                    {"location", pt(s.location)}, {"from", pt(s.from)}, {"to", pt(s.to)}};
-    });
-    j["cracks"] = list(r.cracks, [&](const Crack& c) {
-        return json{{"triangle", c.triangle},
-                    {"edge", {c.v0, c.v1}},
-                    {"other_triangle", c.other_triangle},
-                    {"other_edge", {c.w0, c.w1}},
-                    {"location", pt(c.location)},
-                    {"gap", c.gap},
-                    {"seam", c.seam}};
-    });
-    j["widest_crack"] = r.widest_crack;
-    j["degenerate_triangles"] = list(r.degenerate_triangles, [&](const TriangleDefect& d) {
-        return json{{"triangle", d.triangle}, {"location", pt(d.location)}};
-    });
-    j["duplicated_triangles"] = list(r.duplicated_triangles, pair);
-    j["inconsistent_orientation"] = list(r.inconsistent_orientation, pair);
-    j["self_intersections"] = list(r.self_intersections, pair);
-    j["overlaps"] = list(r.overlaps, pair);
-    json comps = json::array();
-    for (const auto& c : r.components) {
-        json o{{"vertices", c.vertices},
-               {"triangles", c.triangles},
-               {"edges", c.edges},
-               {"border_edges", c.border_edges},
-               {"closed", c.closed}};
-        if (c.euler) o["euler"] = *c.euler;
-        if (c.genus) o["genus"] = *c.genus;
-        if (c.volume) o["volume"] = *c.volume;
-        if (c.outward) o["outward"] = *c.outward;
-        comps.push_back(o);
-    }
-    j["component_list"] = comps;
-    j["defects"] = defect_count(r);
-    return j.dump(2);
+} // namespace
+
+void print_check_report(std::ostream& os, const CheckReport& r, size_t max) {
+    os.precision(10);
+    print_counts(os, r, max);
+    print_edge_defects(os, r, max);
+    print_triangles_and_shells(os, r, max);
+    os << "defects: " << defect_count(r) << "\n";
 }
 
 } // namespace seamless::cli

@@ -2,7 +2,7 @@
 // seamless sweep MODEL...: accuracy against run time (paper section 8). Either
 // the planarity tolerances eps1 = f * 0.001 d_max, eps2 = f * 0.02 d_max or
 // (--tolerance) a requested deviation D = f * 0.001 d_max, over decades of f
-// (sweep_tolerances in lib/mesh/sweep.h); every row sets the certified bound
+// (sweep_tolerances in lib/mesh/deviation/sweep.h); every row sets the certified bound
 // beside the measured deviation. Prints one line per row, or JSON. The report
 // of docs/results/tessellation.md is written by bench/tessellation.
 // Exit status 1 when a measured deviation exceeds its bound.
@@ -10,7 +10,7 @@
 #include "number_options.h"
 
 #include <seamless/base/files/atomic_file.h>
-#include <seamless/mesh/sweep.h>
+#include <seamless/mesh/deviation/sweep.h>
 #include <seamless/model/model.h>
 
 #include <nlohmann/json.hpp>

@@ -11,161 +11,176 @@
 #include <seamless/base/files/output_files.h>
 #include <seamless/base/parallel/huge_pages.h>
 #include <seamless/base/parallel/workers_warm_up.h>
-#include <seamless/mesh/mesh_io.h>
+#include <seamless/mesh/io/mesh_formats.h>
+#include <seamless/mesh/io/mesh_io.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <nlohmann/json.hpp>
 
-#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
 
 namespace seamless::cli {
+namespace {
+
+struct TessellateArgs {
+    std::string model, out, stats;
+    double eps1 = -1, eps2 = -1, seam_tolerance = -1, tolerance = 0, angle = 0;
+    int max_depth = TessellationOptions{}.max_depth;
+    long long max_triangles = TessellationOptions{}.max_triangles;
+    int threads = TessellationOptions{}.threads;
+    ModelLoadOptions load;
+};
+
+void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
+    cmd->add_option("MODEL", args.model,
+                    "model file (.json version 1, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
+        ->required();
+    cmd->add_option("-o,--output", args.out,
+                    "mesh file; format by extension (" + mesh_extensions() + ")")
+        ->required();
+    cmd->add_option("--eps1", args.eps1,
+                    "planarity tolerance in model units (default 0.001 * d_max)")
+        ->check(finite_number(Bound::positive));
+    cmd->add_option("--eps2", args.eps2,
+                    "boundary straightness tolerance in model units (default 0.02 * d_max)")
+        ->check(finite_number(Bound::positive));
+    cmd->add_option("--seam-tolerance", args.seam_tolerance,
+                    "surfaces whose boundaries are closer than this (model units) share their "
+                    "vertices there (default 1e-9 * d_max)")
+        ->check(finite_number(Bound::non_negative));
+    cmd->add_option("--tolerance", args.tolerance,
+                    "requested deviation in model units: subdivide until the certified two-way "
+                    "distance between surfaces and mesh is at most this (planarity test off "
+                    "unless --eps1/--eps2 are given)")
+        ->check(finite_number(Bound::positive));
+    cmd->add_option("--angle", args.angle,
+                    "also bound the angle between the normals of neighbouring triangles, degrees")
+        ->check(CLI::Range(0.0, 180.0));
+    cmd->add_option("--max-depth", args.max_depth, "most halvings per Bezier patch")
+        ->check(CLI::Range(0, 60));
+    cmd->add_option("--max-triangles", args.max_triangles,
+                    "refuse (exit 2, no output) a tolerance that needs more triangles than this "
+                    "(peak memory about 0.7 KB per triangle)")
+        ->capture_default_str()
+        ->check(CLI::Range(1LL, 2'000'000'000LL));
+    cmd->add_option("--threads", args.threads,
+                    "worker threads (0: all cores; 1: sequential); the mesh is the same for any")
+        ->check(CLI::Range(0, 1024));
+    cmd->add_option("--stats", args.stats, "also write the statistics as JSON to this file");
+    add_model_options(cmd, args.load);
+}
+
+TessellationOptions tessellation_options(const TessellateArgs& args) {
+    TessellationOptions opt;
+    opt.eps1 = args.eps1;
+    opt.eps2 = args.eps2;
+    opt.max_depth = args.max_depth;
+    opt.max_triangles = args.max_triangles;
+    opt.seam_tolerance = args.seam_tolerance;
+    opt.tolerance = args.tolerance;
+    opt.threads = args.threads;
+    opt.angle = args.angle * 3.14159265358979323846 / 180;
+    opt.patch_trees = false; // the renderer's, not written
+    return opt;
+}
+
+// The --stats file.
+nlohmann::json tessellation_stats_json(const TessellateArgs& args, const TessellationStats& s) {
+    nlohmann::json js{{"model", args.model},
+                      {"output", args.out},
+                      {"surfaces", s.surfaces},
+                      {"patches", s.patches},
+                      {"subpatches", s.subpatches},
+                      {"triangles", s.triangles},
+                      {"vertices", s.vertices},
+                      {"shared_edges", s.shared_edges},
+                      {"collapsed_edges", s.collapsed_edges},
+                      {"seams", s.seams},
+                      {"seam_vertices", s.seam_vertices},
+                      {"flipped_surfaces", s.flipped_surfaces},
+                      {"seam_tolerance", s.seam_tolerance},
+                      {"nonplanar_subpatches", s.nonplanar_subpatches},
+                      {"max_depth", s.max_depth},
+                      {"d_max", s.d_max},
+                      {"eps1", s.eps1},
+                      {"eps2", s.eps2},
+                      {"tolerance", s.tolerance},
+                      {"angle_degrees", args.angle},
+                      {"max_error_bound", s.max_error_bound},
+                      {"certified_bound", s.max_error_bound},
+                      {"above_tolerance", s.above_tolerance},
+                      {"passes", s.passes},
+                      {"seconds", s.seconds}};
+    const PhaseSeconds& ph = s.phases;
+    js["phase_seconds"] = {{"subdivision", ph.subdivision},
+                           {"boundaries", ph.boundaries},
+                           {"rings", ph.rings},
+                           {"numbering", ph.numbering},
+                           {"bounds", ph.bounds},
+                           {"normals", ph.normals},
+                           {"fans", ph.fans},
+                           {"orientation", ph.orientation},
+                           {"scaling", ph.scaling}};
+    return js;
+}
+
+void print_tessellation_summary(const TessellationStats& s) {
+    std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches
+              << " subpatches, " << s.triangles << " triangles, " << s.vertices
+              << " vertices, certified bound " << s.max_error_bound;
+    if (s.tolerance > 0)
+        std::cout << " (tolerance " << s.tolerance << ", " << s.above_tolerance
+                  << " subpatches above)";
+    std::cout << ", " << s.seconds << " s\n";
+}
+
+int run_tessellate(const TessellateArgs& args) {
+    // Refuse an unknown output format before doing the work.
+    (void)mesh_format(std::filesystem::path(args.out));
+    // Every output checked (writable, not an input) before the work.
+    std::vector<std::filesystem::path> outs{args.out};
+    if (!args.stats.empty()) outs.push_back(args.stats);
+    OutputFiles files(outs, {args.model});
+    keep_freed_memory(); // the passes reuse each other's pages (huge_pages.h)
+    const Model m = [&] {
+        const WorkersWarmUp warm_up(args.threads); // while the model is read
+        return load_model(args.model, args.load);
+    }();
+    print_warnings(m);
+    TessellationOptions opt = tessellation_options(args);
+    ProgressBar bar("tessellate");
+    opt.progress = [&bar](double f) { bar.update(f); };
+    const Tessellation t = [&] {
+        try {
+            return tessellate(m, opt);
+        } catch (const TriangleBudgetError& e) { // name this command's flag
+            throw InputError(e.file(), e.field(),
+                             TriangleBudgetError::message_for(e.limit(), "--max-triangles"));
+        }
+    }();
+    bar.finish();
+    write_mesh(files.staging(0), t.mesh);
+    print_tessellation_summary(t.stats);
+    if (!args.stats.empty())
+        write_text_atomically(files.staging(1),
+                              tessellation_stats_json(args, t.stats).dump(2) + "\n");
+    files.commit(); // both outputs, or neither
+    return 0;
+}
+
+} // namespace
 
 void add_tessellate(CLI::App& app, Action& action) {
     auto* cmd = app.add_subcommand(
         "tessellate", "Triangulate a model into a crack-free mesh (planar subpatches, "
                       "straight-midpoint edge vertices, fans of four or more triangles)");
-    struct Args {
-        std::string model, out, stats;
-        double eps1 = -1, eps2 = -1, seam_tolerance = -1, tolerance = 0, angle = 0;
-        int max_depth = TessellationOptions{}.max_depth;
-        long long max_triangles = TessellationOptions{}.max_triangles;
-        int threads = TessellationOptions{}.threads;
-        ModelLoadOptions load;
-    };
-    auto args = std::make_shared<Args>();
-    cmd->add_option("MODEL", args->model,
-                    "model file (.json version 1, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
-        ->required();
-    cmd->add_option("-o,--output", args->out,
-                    "mesh file; format by extension (.off .obj .ply .stl .gltf .glb)")
-        ->required();
-    cmd->add_option("--eps1", args->eps1,
-                    "planarity tolerance in model units (default 0.001 * d_max)")
-        ->check(finite_number(Bound::positive));
-    cmd->add_option("--eps2", args->eps2,
-                    "boundary straightness tolerance in model units (default 0.02 * d_max)")
-        ->check(finite_number(Bound::positive));
-    cmd->add_option("--seam-tolerance", args->seam_tolerance,
-                    "surfaces whose boundaries are closer than this (model units) share their "
-                    "vertices there (default 1e-9 * d_max)")
-        ->check(finite_number(Bound::non_negative));
-    cmd->add_option("--tolerance", args->tolerance,
-                    "requested deviation in model units: subdivide until the certified two-way "
-                    "distance between surfaces and mesh is at most this (planarity test off "
-                    "unless --eps1/--eps2 are given)")
-        ->check(finite_number(Bound::positive));
-    cmd->add_option("--angle", args->angle,
-                    "also bound the angle between the normals of neighbouring triangles, degrees")
-        ->check(CLI::Range(0.0, 180.0));
-    cmd->add_option("--max-depth", args->max_depth, "most halvings per Bezier patch")
-        ->check(CLI::Range(0, 60));
-    cmd->add_option("--max-triangles", args->max_triangles,
-                    "refuse (exit 2, no output) a tolerance that needs more triangles than this "
-                    "(peak memory about 0.7 KB per triangle)")
-        ->capture_default_str()
-        ->check(CLI::Range(1LL, 2'000'000'000LL));
-    cmd->add_option("--threads", args->threads,
-                    "worker threads (0: all cores; 1: sequential); the mesh is the same for any")
-        ->check(CLI::Range(0, 1024));
-    cmd->add_option("--stats", args->stats, "also write the statistics as JSON to this file");
-    add_model_options(cmd, args->load);
-    cmd->callback([&action, args] {
-        action = [args] {
-            // Refuse an unknown output format before doing the work.
-            std::string ext = std::filesystem::path(args->out).extension().string();
-            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-            if (!is_mesh_extension(ext))
-                throw InputError(args->out, "",
-                                 "unknown mesh extension '" + ext +
-                                     "' (expected .off .obj .ply .stl .gltf .glb)");
-            // Every output checked (writable, not an input) before the work.
-            std::vector<std::filesystem::path> outs{args->out};
-            if (!args->stats.empty()) outs.push_back(args->stats);
-            OutputFiles files(outs, {args->model});
-            keep_freed_memory(); // the passes reuse each other's pages (huge_pages.h)
-            const Model m = [&] {
-                const WorkersWarmUp warm_up(args->threads); // while the model is read
-                return load_model(args->model, args->load);
-            }();
-            print_warnings(m);
-            TessellationOptions opt;
-            opt.eps1 = args->eps1;
-            opt.eps2 = args->eps2;
-            opt.max_depth = args->max_depth;
-            opt.max_triangles = args->max_triangles;
-            opt.seam_tolerance = args->seam_tolerance;
-            opt.tolerance = args->tolerance;
-            opt.threads = args->threads;
-            opt.angle = args->angle * 3.14159265358979323846 / 180;
-            opt.patch_trees = false; // the renderer's, not written
-            ProgressBar bar("tessellate");
-            opt.progress = [&bar](double f) { bar.update(f); };
-            const Tessellation t = [&] {
-                try {
-                    return tessellate(m, opt);
-                } catch (const TriangleBudgetError& e) { // name this command's flag
-                    throw InputError(
-                        e.file(), e.field(),
-                        TriangleBudgetError::message_for(e.limit(), "--max-triangles"));
-                }
-            }();
-            bar.finish();
-            write_mesh(files.staging(0), t.mesh);
-            const TessellationStats& s = t.stats;
-            std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches
-                      << " subpatches, " << s.triangles << " triangles, " << s.vertices
-                      << " vertices, certified bound " << s.max_error_bound;
-            if (s.tolerance > 0)
-                std::cout << " (tolerance " << s.tolerance << ", " << s.above_tolerance
-                          << " subpatches above)";
-            std::cout << ", " << s.seconds << " s\n";
-            if (!args->stats.empty()) {
-                nlohmann::json js{{"model", args->model},
-                                  {"output", args->out},
-                                  {"surfaces", s.surfaces},
-                                  {"patches", s.patches},
-                                  {"subpatches", s.subpatches},
-                                  {"triangles", s.triangles},
-                                  {"vertices", s.vertices},
-                                  {"shared_edges", s.shared_edges},
-                                  {"collapsed_edges", s.collapsed_edges},
-                                  {"seams", s.seams},
-                                  {"seam_vertices", s.seam_vertices},
-                                  {"flipped_surfaces", s.flipped_surfaces},
-                                  {"seam_tolerance", s.seam_tolerance},
-                                  {"nonplanar_subpatches", s.nonplanar_subpatches},
-                                  {"max_depth", s.max_depth},
-                                  {"d_max", s.d_max},
-                                  {"eps1", s.eps1},
-                                  {"eps2", s.eps2},
-                                  {"tolerance", s.tolerance},
-                                  {"angle_degrees", args->angle},
-                                  {"max_error_bound", s.max_error_bound},
-                                  {"certified_bound", s.max_error_bound},
-                                  {"above_tolerance", s.above_tolerance},
-                                  {"passes", s.passes},
-                                  {"seconds", s.seconds}};
-                const PhaseSeconds& ph = s.phases;
-                js["phase_seconds"] = {{"subdivision", ph.subdivision},
-                                       {"boundaries", ph.boundaries},
-                                       {"rings", ph.rings},
-                                       {"numbering", ph.numbering},
-                                       {"bounds", ph.bounds},
-                                       {"normals", ph.normals},
-                                       {"fans", ph.fans},
-                                       {"orientation", ph.orientation},
-                                       {"scaling", ph.scaling}};
-                write_text_atomically(files.staging(1), js.dump(2) + "\n");
-            }
-            files.commit(); // both outputs, or neither
-            return 0;
-        };
-    });
+    auto args = std::make_shared<TessellateArgs>();
+    add_tessellate_options(cmd, *args);
+    cmd->callback([&action, args] { action = [args] { return run_tessellate(*args); }; });
 }
 
 } // namespace seamless::cli

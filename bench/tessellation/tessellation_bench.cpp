@@ -5,14 +5,14 @@
 // (Geom_BSplineSurface, a clamped B-spline surface whole, any other as its
 // Bezier patches; BRepBuilderAPI_MakeFace), sewn into one shape
 // (BRepBuilderAPI_Sewing) as its users do; both meshes are measured by the
-// same code (lib/mesh/deviation.h) and checked by lib/mesh/check.h.
+// same code (lib/mesh/deviation/deviation.h) and checked by lib/mesh/check/check.h.
 // Writes docs/results/tessellation.md and tessellation.svg:
 //   seamless_bench_tessellation --docs docs/results
 #include <seamless/base/files/atomic_file.h>
 #include <seamless/base/parallel/huge_pages.h>
-#include <seamless/mesh/check.h>
-#include <seamless/mesh/deviation.h>
-#include <seamless/mesh/sweep.h>
+#include <seamless/mesh/check/check.h>
+#include <seamless/mesh/deviation/deviation.h>
+#include <seamless/mesh/deviation/sweep.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
 
@@ -392,10 +392,10 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<ModelSweep>
           "absolute) on the model's surfaces as faces (`Geom_BSplineSurface`, a clamped "
           "B-spline surface whole, others as their Bezier patches; `BRepBuilderAPI_MakeFace`) "
           "sewn into one shape (`BRepBuilderAPI_Sewing`, tolerance 1e-6 d_max); seamless "
-          "`tessellate --tolerance D`. Both meshes measured by `lib/mesh/deviation.h` "
+          "`tessellate --tolerance D`. Both meshes measured by `lib/mesh/deviation/deviation.h` "
           "(surface->mesh: 33 x 33 points per Bezier patch, plus 2 x 2 per subpatch for "
           "seamless; mesh->surface: corners, edge midpoints and centroid of every triangle, "
-          "Newton-projected on its surface) and checked by `lib/mesh/check.h` (welded by "
+          "Newton-projected on its surface) and checked by `lib/mesh/check/check.h` (welded by "
           "position; degenerate triangles; crack = a border edge running along another; border "
           "edges include the model's own boundary). Seconds: median of the runs (seamless at "
           "teapot D = 1e-4 d_max: at least 11 alternating 1- and 2-thread runs); OpenCASCADE on "

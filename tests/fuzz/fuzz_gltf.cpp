@@ -3,7 +3,7 @@
 // buffers resolve against an empty base folder).
 #include "fuzz_common.h"
 
-#include <seamless/mesh/mesh_io.h>
+#include <seamless/mesh/io/mesh_io.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     seamless::fuzz::expect_clean("fuzz.gltf", [&] {

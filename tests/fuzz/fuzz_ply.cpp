@@ -2,7 +2,7 @@
 // libFuzzer harness: the .ply mesh reader (parse_mesh, from memory).
 #include "fuzz_common.h"
 
-#include <seamless/mesh/mesh_io.h>
+#include <seamless/mesh/io/mesh_io.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     seamless::fuzz::expect_clean("fuzz.ply", [&] {

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// Watertightness check: the steps of docs/check.md composed, each in its own file.
+#include <seamless/mesh/check/check.h>
+#include <seamless/mesh/check/shell_measures.h>
+#include <seamless/mesh/check/weld.h>
+
+namespace seamless {
+
+CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options) {
+    CheckReport R;
+    R.input_vertices = mesh.vertex_count();
+    R.triangles = mesh.triangle_count();
+    R.welded = options.weld;
+
+    const WeldedMesh W = weld_vertices(mesh, options.weld);
+    R.welded_vertices = W.welded_vertices;
+    R.unreferenced_vertices = W.unreferenced_vertices;
+    R.vertices = static_cast<int>(W.positions.size()) - W.unreferenced_vertices;
+    Box3 box;
+    for (size_t v = 0; v < W.positions.size(); ++v)
+        if (W.referenced[v]) box.extend(W.positions[v]);
+    R.d_max = box.max_extent();
+    R.gap = options.gap > 0 ? GapTolerance{options.gap, 0}
+                            : GapTolerance{options.gap_floor * R.d_max, options.relative_gap};
+
+    const EdgeTopology E = edge_topology(W);
+    R.edges = static_cast<int>(E.groups.size());
+    R.border_edges = static_cast<int>(E.border.size());
+    R.closed = E.border.empty();
+    R.non_manifold_edges = E.non_manifold_edges;
+    R.inconsistent_orientation = E.inconsistent_orientation;
+
+    BorderDefects B = border_defects(W, E.border, R.gap);
+    R.border_loops = std::move(B.loops);
+    R.t_junctions = std::move(B.t_junctions);
+    R.cracks = std::move(B.cracks);
+    R.seams = std::move(B.seams);
+    R.widest_crack = B.widest_crack;
+
+    Shells S = find_shells(W, E, B.joins);
+    measure_closed_shells(W, S);
+    R.non_manifold_vertices = std::move(S.non_manifold_vertices);
+    R.shell_contacts = std::move(S.shell_contacts);
+
+    R.degenerate_triangles = degenerate_triangles(W);
+    R.duplicated_triangles = duplicated_triangles(W);
+    Intersections I = find_intersections(W, S.triangle_shell, R.degenerate_triangles,
+                                         R.duplicated_triangles, R.t_junctions);
+    R.self_intersections = std::move(I.self_intersections);
+    R.overlaps = std::move(I.overlaps);
+    R.components = std::move(S.shells);
+    R.triangle_component = std::move(S.triangle_shell);
+    return R;
+}
+
+int defect_count(const CheckReport& r) {
+    return static_cast<int>(r.cracks.size() + r.t_junctions.size() + r.non_manifold_edges.size() +
+                            r.non_manifold_vertices.size() + r.degenerate_triangles.size() +
+                            r.duplicated_triangles.size() + r.inconsistent_orientation.size() +
+                            r.self_intersections.size());
+}
+
+bool check_passed(const CheckReport& r, const CheckOptions& options) {
+    if (defect_count(r) > 0) return false;
+    if (options.require_closed)
+        for (const auto& c : r.components)
+            if (!c.closed) return false;
+    return true;
+}
+
+} // namespace seamless

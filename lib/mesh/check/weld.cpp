@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/mesh/check/bits_hash.h>
+#include <seamless/mesh/check/weld.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <numeric>
+#include <unordered_map>
+
+namespace seamless {
+
+WeldedMesh weld_vertices(const TriangleMesh& mesh, bool weld) {
+    WeldedMesh W;
+    const int nv_in = mesh.vertex_count(), nf = mesh.triangle_count();
+    std::vector<int> remap(nv_in);
+    if (weld) {
+        std::unordered_map<std::array<uint64_t, 3>, int, BitsHash> first;
+        first.reserve(nv_in);
+        for (int i = 0; i < nv_in; ++i) {
+            std::array<uint64_t, 3> k;
+            std::memcpy(k.data(), &mesh.positions[i], sizeof k);
+            auto [it, inserted] = first.try_emplace(k, static_cast<int>(W.positions.size()));
+            if (inserted) W.positions.push_back(mesh.positions[i]);
+            remap[i] = it->second;
+        }
+    } else {
+        std::iota(remap.begin(), remap.end(), 0);
+        W.positions = mesh.positions;
+    }
+    W.welded_vertices = nv_in - static_cast<int>(W.positions.size());
+    W.triangles.resize(nf);
+    for (int t = 0; t < nf; ++t)
+        for (int c = 0; c < 3; ++c) W.triangles[t][c] = remap[mesh.triangles[t][c]];
+    W.referenced.assign(W.positions.size(), 0);
+    for (const auto& t : W.triangles)
+        for (int v : t) W.referenced[v] = 1;
+    W.unreferenced_vertices =
+        static_cast<int>(std::count(W.referenced.begin(), W.referenced.end(), 0));
+    return W;
+}
+
+} // namespace seamless

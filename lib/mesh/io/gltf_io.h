@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// glTF 2.0 (.gltf with an embedded base64 buffer, .glb) through tinygltf
+// (gltf_write.cpp, gltf_read.cpp); used by mesh_io.cpp, which picks the format
+// from the extension.
+#pragma once
+
+#include <seamless/base/triangle_mesh.h>
+
+#include <filesystem>
+#include <string>
+
+namespace seamless {
+
+// One glTF mesh (and node) per source surface, named after it, with one indexed
+// triangle primitive: POSITION (float32, min/max), NORMAL (unit float32, from
+// corner_normals) and TEXCOORD_0 (float32, from corner_uvs) when present. A vertex
+// is split where its corners differ in normal or uv. Writes `path` directly (the
+// caller provides atomicity); throws InputError naming `name` on failure.
+void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, bool binary,
+                const std::string& name);
+
+// Every triangle primitive (modes 4, 5, 6) of every mesh, as indexed, no welding;
+// triangle_surface is the glTF mesh index, surface_names the mesh names; corner
+// normals and uvs are read when every primitive has them.
+// Images are not decoded; external buffers are read as input files are
+// (regular files within the mesh size limit). Limits: JSON nesting depth 64,
+// at most one triangle per byte of the file and its buffers (docs/formats.md).
+TriangleMesh read_gltf(const std::filesystem::path& path);
+// The same from a file's bytes; `file` names it in messages, external buffers
+// are looked up in `base_dir`.
+TriangleMesh parse_gltf(const std::string& bytes, bool binary, const std::string& file,
+                        const std::filesystem::path& base_dir);
+
+} // namespace seamless
