@@ -73,10 +73,19 @@ void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Int
 void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,
                                     Interval* out);
 
-// De Casteljau subdivision at local parameter s (in u) or t (in v); the halves
-// keep the source surface and their part of the parameter rectangle.
-void split_u(const BezierPatch& b, double s, BezierPatch& lo, BezierPatch& hi);
-void split_v(const BezierPatch& b, double t, BezierPatch& lo, BezierPatch& hi);
+// A parameter direction of a patch: u (local s, the first index of cp) or v
+// (local t, the second).
+enum class Direction { u, v };
+
+// De Casteljau subdivision along d at local parameter x (s for u, t for v);
+// the halves keep the source surface and their part of the parameter rectangle.
+void split(const BezierPatch& b, Direction d, double x, BezierPatch& lo, BezierPatch& hi);
+inline void split_u(const BezierPatch& b, double s, BezierPatch& lo, BezierPatch& hi) {
+    split(b, Direction::u, s, lo, hi);
+}
+inline void split_v(const BezierPatch& b, double t, BezierPatch& lo, BezierPatch& hi) {
+    split(b, Direction::v, t, lo, hi);
+}
 
 // Bounding box of the (projected) control points: holds the patch (convex hull property).
 Box3 control_box(const BezierPatch& b);
