@@ -47,9 +47,8 @@ struct BezierPatch {
 // Point, derivatives with respect to the LOCAL parameters (s, t) in [0,1]^2, and
 // normal. Multiply du by 1/(u1-u0) for derivatives on the source surface.
 SurfacePoint evaluate(const BezierPatch& b, double s, double t);
-// The point alone (no derivatives): about two thirds of evaluate()'s
-// instructions on a bicubic patch; may differ from evaluate().point in the
-// last bits. For estimates, not proofs.
+// The point alone (no derivatives, so cheaper than evaluate()); may differ
+// from evaluate().point in the last bits. For estimates, not proofs.
 Vec3 evaluate_point(const BezierPatch& b, double s, double t);
 // Homogeneous point X(s,t) = sum B_i(s) B_j(t) cp_ij.
 HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t);
