@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Bad input is reported as an InputError naming the file and the field, e.g.
 //   model.json: surfaces[2].knots_u: expected 11 numbers, got 10
-// Internal invariants are assertions; InputError is only for what a user handed us.
+// Internal invariants are SEAMLESS_CHECKs (check.h); InputError is only for what a
+// user handed us.
 // what() is one printable line: control characters and invalid UTF-8 that a
 // hostile file put in a name or token are escaped (printable.h).
 #pragma once

@@ -9,6 +9,7 @@
 //   (iii) non-empty box inside int(x): exactly one zero in x.
 #pragma once
 
+#include <seamless/base/check.h>
 #include <seamless/interval/gauss_seidel.h>
 #include <seamless/interval/interval_matrix.h>
 
@@ -38,7 +39,7 @@ HansenSenguptaStep<N> hansen_sengupta_preconditioned(const RMat<N>& C, const IMa
         r.box = IVec<N>::empty();
         return r;
     }
-    assert(contains(x, center));
+    SEAMLESS_CHECK(contains(x, center), "the center lies in the box (Theorem 6)");
     const IVec<N> xc = to_ivec<N>(center);
     const IVec<N> g = gauss_seidel(CA, -(C * f_center), x - xc);
     if (g.is_empty()) {

@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -30,10 +29,9 @@ namespace seamless {
 // rounding whose result is subnormal errs by at most denorm_min / 2, so n of
 // them by n denorm_min / 2; n times the smallest NORMAL double (2^52 times
 // denorm_min) bounds that with room to spare and is itself normal: an x86
-// operation that produces or stores a subnormal takes a microcode assist of
-// about a hundred cycles, and the allowance n * denorm_min was such a
-// subnormal in every point enclosure (perf: 58 % of real_range_lanes' samples
-// on one instruction after it; teapot 640x480 x 16 render 0.38 -> 0.25 s user CPU).
+// operation that produces or stores a subnormal takes a microcode assist, and
+// the allowance n * denorm_min was such a subnormal in every point enclosure
+// (docs/results/render.md).
 inline double underflow_allowance(double n) {
     return n * std::numeric_limits<double>::min();
 }

@@ -8,7 +8,6 @@
 #include <seamless/interval/interval.h>
 
 #include <array>
-#include <cassert>
 #include <cmath>
 #include <type_traits>
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// STEP/IGES on demand: the OpenCASCADE reader (step_iges.cpp) is a module of
+// STEP/IGES on demand: the OpenCASCADE reader (step_iges/) is a module of
 // its own, libseamless_step_iges.so beside libseamless.so, loaded the first
 // time a STEP or IGES file is read. A run that reads JSON or .bpt models
-// never maps OpenCASCADE's 17 libraries ("leave out what a given scene does
-// not need"; AMD EPYC VM, 2026-12-02: `seamless --version` 58 -> 17 ms, page
-// faults 1,004 -> 220). Where the reader is linked into the program itself
-// (the static fuzz build), its entry is found there first.
+// never maps OpenCASCADE's libraries, whose loading costs every run start-up
+// time ("leave out what a given scene does not need"; docs/results/tessellation.md).
+// Where the reader is linked into the program itself (the static fuzz build),
+// its entry is found there first.
 #include <seamless/model/step_iges.h>
 
 #include <seamless/base/error.h>

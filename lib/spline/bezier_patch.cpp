@@ -2,8 +2,9 @@
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/spline/fixed_degree.h>
 
+#include <seamless/base/check.h>
+
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -91,7 +92,7 @@ void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Int
 
 void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,
                                     Interval* out) {
-    assert(s >= 0 && s <= 1 && t >= 0 && t <= 1);
+    SEAMLESS_CHECK(s >= 0 && s <= 1 && t >= 0 && t <= 1, "the error bound holds in [0,1]^2");
     constexpr double u = 0x1p-53;
     const double rs = 1.0 - s, rt = 1.0 - t;
     const int levels = b.p + b.q;
@@ -150,57 +151,55 @@ SurfacePoint evaluate(const BezierPatch& b, double s, double t) {
     return r;
 }
 
-void split_u(const BezierPatch& b, double s, BezierPatch& lo, BezierPatch& hi) {
+namespace {
+
+// split() along D: de Casteljau's levels run over one index of cp (stride
+// apart), once for each line of the other index (line_stride apart).
+template <Direction D>
+void split_along(const BezierPatch& b, double x, BezierPatch& lo, BezierPatch& hi) {
+    constexpr bool along_u = D == Direction::u;
+    constexpr int stride = along_u ? BezierPatch::kMaxOrder : 1;
+    constexpr int line_stride = along_u ? 1 : BezierPatch::kMaxOrder;
+    // The parameter range split (a0, a1) and the one kept (c0, c1).
+    constexpr double BezierPatch::*a0 = along_u ? &BezierPatch::u0 : &BezierPatch::v0;
+    constexpr double BezierPatch::*a1 = along_u ? &BezierPatch::u1 : &BezierPatch::v1;
+    constexpr double BezierPatch::*c0 = along_u ? &BezierPatch::v0 : &BezierPatch::u0;
+    constexpr double BezierPatch::*c1 = along_u ? &BezierPatch::v1 : &BezierPatch::u1;
     const int p = b.p, q = b.q;
+    const int n = along_u ? p : q, lines = along_u ? q : p;
     for (BezierPatch* h : {&lo, &hi}) {
         h->p = p;
         h->q = q;
         h->rational = b.rational;
         h->surface = b.surface;
-        h->v0 = b.v0;
-        h->v1 = b.v1;
+        h->*c0 = b.*c0;
+        h->*c1 = b.*c1;
     }
-    const double um = b.u_at(s);
-    lo.u0 = b.u0;
-    lo.u1 = um;
-    hi.u0 = um;
-    hi.u1 = b.u1;
-    HPoint col[BezierPatch::kMaxOrder];
-    for (int j = 0; j <= q; ++j) {
-        for (int i = 0; i <= p; ++i) col[i] = b.at(i, j);
+    const double m = b.*a0 + x * (b.*a1 - b.*a0); // b.u_at(x) or b.v_at(x)
+    lo.*a0 = b.*a0;
+    lo.*a1 = m;
+    hi.*a0 = m;
+    hi.*a1 = b.*a1;
+    HPoint line[BezierPatch::kMaxOrder];
+    for (int l = 0; l <= lines; ++l) {
+        const int first = l * line_stride;
+        for (int k = 0; k <= n; ++k) line[k] = b.cp[first + k * stride];
         // De Casteljau: lo gets the first point of each level, hi the last.
-        for (int level = 0; level <= p; ++level) {
-            lo.at(level, j) = col[0];
-            hi.at(p - level, j) = col[p - level];
-            for (int i = 0; i < p - level; ++i) col[i] = lerp(col[i], col[i + 1], s);
+        for (int level = 0; level <= n; ++level) {
+            lo.cp[first + level * stride] = line[0];
+            hi.cp[first + (n - level) * stride] = line[n - level];
+            for (int k = 0; k < n - level; ++k) line[k] = lerp(line[k], line[k + 1], x);
         }
     }
 }
 
-void split_v(const BezierPatch& b, double t, BezierPatch& lo, BezierPatch& hi) {
-    const int p = b.p, q = b.q;
-    for (BezierPatch* h : {&lo, &hi}) {
-        h->p = p;
-        h->q = q;
-        h->rational = b.rational;
-        h->surface = b.surface;
-        h->u0 = b.u0;
-        h->u1 = b.u1;
-    }
-    const double vm = b.v_at(t);
-    lo.v0 = b.v0;
-    lo.v1 = vm;
-    hi.v0 = vm;
-    hi.v1 = b.v1;
-    HPoint row[BezierPatch::kMaxOrder];
-    for (int i = 0; i <= p; ++i) {
-        for (int j = 0; j <= q; ++j) row[j] = b.at(i, j);
-        for (int level = 0; level <= q; ++level) {
-            lo.at(i, level) = row[0];
-            hi.at(i, q - level) = row[q - level];
-            for (int j = 0; j < q - level; ++j) row[j] = lerp(row[j], row[j + 1], t);
-        }
-    }
+} // namespace
+
+void split(const BezierPatch& b, Direction d, double x, BezierPatch& lo, BezierPatch& hi) {
+    if (d == Direction::u)
+        split_along<Direction::u>(b, x, lo, hi);
+    else
+        split_along<Direction::v>(b, x, lo, hi);
 }
 
 Box3 control_box(const BezierPatch& b) {

@@ -47,9 +47,8 @@ struct BezierPatch {
 // Point, derivatives with respect to the LOCAL parameters (s, t) in [0,1]^2, and
 // normal. Multiply du by 1/(u1-u0) for derivatives on the source surface.
 SurfacePoint evaluate(const BezierPatch& b, double s, double t);
-// The point alone (no derivatives): about two thirds of evaluate()'s
-// instructions on a bicubic patch; may differ from evaluate().point in the
-// last bits. For estimates, not proofs.
+// The point alone (no derivatives, so cheaper than evaluate()); may differ
+// from evaluate().point in the last bits. For estimates, not proofs.
 Vec3 evaluate_point(const BezierPatch& b, double s, double t);
 // Homogeneous point X(s,t) = sum B_i(s) B_j(t) cp_ij.
 HPoint evaluate_homogeneous(const BezierPatch& b, double s, double t);
@@ -73,10 +72,19 @@ void enclose_homogeneous(const BezierPatch& b, double s, double t, int dims, Int
 void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, int dims,
                                     Interval* out);
 
-// De Casteljau subdivision at local parameter s (in u) or t (in v); the halves
-// keep the source surface and their part of the parameter rectangle.
-void split_u(const BezierPatch& b, double s, BezierPatch& lo, BezierPatch& hi);
-void split_v(const BezierPatch& b, double t, BezierPatch& lo, BezierPatch& hi);
+// A parameter direction of a patch: u (local s, the first index of cp) or v
+// (local t, the second).
+enum class Direction { u, v };
+
+// De Casteljau subdivision along d at local parameter x (s for u, t for v);
+// the halves keep the source surface and their part of the parameter rectangle.
+void split(const BezierPatch& b, Direction d, double x, BezierPatch& lo, BezierPatch& hi);
+inline void split_u(const BezierPatch& b, double s, BezierPatch& lo, BezierPatch& hi) {
+    split(b, Direction::u, s, lo, hi);
+}
+inline void split_v(const BezierPatch& b, double t, BezierPatch& lo, BezierPatch& hi) {
+    split(b, Direction::v, t, lo, hi);
+}
 
 // Bounding box of the (projected) control points: holds the patch (convex hull property).
 Box3 control_box(const BezierPatch& b);

@@ -2,7 +2,6 @@
 #include <seamless/spline/bspline_surface.h>
 
 #include <algorithm>
-#include <cassert>
 
 namespace seamless {
 
@@ -12,8 +11,7 @@ int find_span(int degree, int n, const std::vector<double>& knots, double t) {
     return degree;
 }
 
-void basis_functions(int p, int k, const std::vector<double>& U, double t, double* N0,
-                     double* N1) {
+void basis_functions(int p, int k, const std::vector<double>& U, double t, double* N0, double* N1) {
     // Triangular table of the Cox-de Boor recurrence (The NURBS Book, A2.2/A2.3, first derivative).
     double left[kMaxDegree + 2], right[kMaxDegree + 2];
     double ndu[kMaxDegree + 1][kMaxDegree + 1];
@@ -36,7 +34,8 @@ void basis_functions(int p, int k, const std::vector<double>& U, double t, doubl
         N1[0] = 0;
         return;
     }
-    // N'_{k-p+r,p} = p * (N_{k-p+r,p-1} / (U[k+r]-U[k-p+r]) - N_{k-p+r+1,p-1} / (U[k+r+1]-U[k-p+r+1]))
+    // N'_{k-p+r,p} = p * (N_{k-p+r,p-1} / (U[k+r]-U[k-p+r])
+    //                     - N_{k-p+r+1,p-1} / (U[k+r+1]-U[k-p+r+1]))
     for (int r = 0; r <= p; ++r) {
         double d = 0.0;
         if (r >= 1) d += ndu[r - 1][p - 1] / ndu[p][r - 1];

@@ -2,7 +2,7 @@
 // Range enclosures of a Bezier patch over a parameter box [s] x [t] in [0,1]^2
 // (paper section 5): the point P, the partial derivatives dP/ds, dP/dt and the
 // normal dP/ds x dP/dt. Each coordinate is the intersection of
-//  - Horner on the power form, ordered as sum_i b_i(t) s^i when [t] is the
+//  - Horner on the power form (polynomial_range.h), ordered as sum_i b_i(t) s^i when [t] is the
 //    narrower interval and sum_j c_j(s) t^j otherwise, each one-dimensional
 //    polynomial with interval coefficients bounded by Lemma 2 (parameters >= 0);
 //  - the mean value form f(mid) + f_s(box)(s - mid s) + f_t(box)(t - mid t)
@@ -16,14 +16,10 @@
 #include <seamless/interval/interval.h>
 #include <seamless/interval/interval_matrix.h>
 #include <seamless/spline/bezier_patch.h>
+#include <seamless/spline/polynomial_range.h>
 #include <seamless/spline/power_form.h>
 
 namespace seamless {
-
-// A box of local parameters; a subset of [0,1]^2 for the enclosures below.
-struct ParamBox {
-    Interval s{0.0, 1.0}, t{0.0, 1.0};
-};
 
 using IVec3 = IVec<3>;
 
@@ -43,17 +39,6 @@ struct PatchEnclosure {
     IVec3 point, ds, dt, normal; // over the box; derivatives in local (s, t)
 };
 
-// Range of a one-dimensional polynomial sum_{i<=n} c_i u^i with interval
-// coefficients over u: Lemma 2 when u >= 0 (the lower and upper coefficient
-// polynomials bounded separately, each by Horner, mean value form or, where
-// monotone, its end values), interval Horner otherwise.
-Interval polynomial_range(const Interval* c, int n, Interval u);
-// Coordinate c of a power form over a box by nested Horner (section 5 ordering).
-Interval horner(const PowerForm& f, int c, ParamBox box);
-// The same two with every degree a run-time loop bound: the reference for the
-// unrolled fixed-degree paths above (tests compare them bit for bit).
-Interval polynomial_range_generic(const Interval* c, int n, Interval u);
-Interval horner_generic(const PowerForm& f, int c, ParamBox box);
 // Horner intersected with the mean value form; fs, ft: the power forms of f_s, f_t.
 Interval enclose(const PowerForm& f, const PowerForm& fs, const PowerForm& ft, int c, ParamBox box);
 
@@ -80,15 +65,8 @@ PatchSecondDerivatives enclose_second(const PatchForms& f, ParamBox box, const P
 struct PatchThirdDerivatives {
     IVec3 sss, sst, stt, ttt;
 };
-// Coordinate c of the derivative of f along s (dir 0) or t (dir 1) over a box,
-// by horner() on the differentiated coefficients formed on the fly.
-Interval horner_derivative(const PowerForm& f, int c, int dir, ParamBox box);
 PatchThirdDerivatives enclose_third(const PatchForms& f, ParamBox box, const PatchEnclosure& e,
                                     const PatchSecondDerivatives& d2);
-
-// Range enclosures (horner calls) made on this thread so far: a statistic
-// for the renderer's --stats (differences around a piece of work).
-long long range_enclosure_count();
 
 // Cross product of interval vectors (the normal of section 5).
 IVec3 cross(const IVec3& a, const IVec3& b);

@@ -162,15 +162,19 @@ void enclose_homogeneous_fixed(const BezierPatch& b, double s, double t, int dim
 }
 
 // The primary ray's homogeneous system G = (X - a Z, Y - b Z) of a patch and
-// its partials along s and t at one point, in doubles: G[0..1], Gs[0..1],
-// Gt[0..1]. Its zeros are the ray's hits (W > 0), and Newton on G needs no
-// quotient; each control point is combined with the ray first, so the sums
-// run over two coordinates (one lane pair) instead of four. Inlined, like
-// bernstein_fixed: G's arrays stay in registers.
+// its partials along s and t at one point, in doubles. Its zeros are the
+// ray's hits (W > 0), and Newton on G needs no quotient.
+struct RaySystemAt {
+    double G[2], Gs[2], Gt[2];
+};
+
+// RaySystemAt of patch b for the ray's (a, bb) at (s, t). Each control point
+// is combined with the ray first, so the sums run over two coordinates (one
+// lane pair) instead of four. Inlined, like bernstein_fixed: G's arrays stay
+// in registers.
 template <int P, int Q>
-[[gnu::always_inline]] inline void ray_system_fixed(const BezierPatch& b, double a, double bb,
-                                                    double s, double t, double* G, double* Gs,
-                                                    double* Gt) {
+[[gnu::always_inline]] inline RaySystemAt ray_system_fixed(const BezierPatch& b, double a,
+                                                           double bb, double s, double t) {
     using Lanes = double __attribute__((vector_size(16)));
     double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
     bernstein_fixed<P>(s, Bu, dBu);
@@ -189,11 +193,13 @@ template <int P, int Q>
         Xu = Xu + dBu[i] * row;
         Xv = Xv + Bu[i] * rowv;
     }
+    RaySystemAt r;
     for (int k = 0; k < 2; ++k) {
-        G[k] = X[k];
-        Gs[k] = Xu[k];
-        Gt[k] = Xv[k];
+        r.G[k] = X[k];
+        r.Gs[k] = Xu[k];
+        r.Gt[k] = Xv[k];
     }
+    return r;
 }
 
 } // namespace seamless

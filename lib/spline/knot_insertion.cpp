@@ -1,23 +1,33 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/knot_insertion.h>
 
-#include <cassert>
+#include <seamless/base/check.h>
 
 namespace seamless {
 namespace {
 
-// Boehm's insertion on one strided sequence of n control points.
+// One insertion of the knot t into the knot vector U of degree p, in span k
+// (insertion_span), on sequences of n control points.
+struct Insertion {
+    const std::vector<double>& U;
+    int p, k, n;
+    double t;
+};
+
+// Boehm's insertion on one strided sequence of n control points, P[i * stride]
+// into the n + 1 points Q[i * stride]:
 // Q_i = P_i (i <= k-p), (1-a_i) P_{i-1} + a_i P_i (k-p < i <= k), P_{i-1} (i > k),
 // a_i = (t - t_i) / (t_{i+p} - t_i). The denominators are positive because the
 // span k is non-empty and t_i <= t_k < t_{k+1} <= t_{i+p}.
-void boehm(int p, int k, const std::vector<double>& U, double t, const HPoint* P, HPoint* Q, int n,
-           int stride) {
+void boehm(const Insertion& in, const HPoint* P, HPoint* Q, int stride) {
+    const int p = in.p, k = in.k;
+    const std::vector<double>& U = in.U;
     for (int i = 0; i <= k - p; ++i) Q[i * stride] = P[i * stride];
     for (int i = k - p + 1; i <= k; ++i) {
-        double a = (t - U[i]) / (U[i + p] - U[i]);
+        double a = (in.t - U[i]) / (U[i + p] - U[i]);
         Q[i * stride] = lerp(P[(i - 1) * stride], P[i * stride], a);
     }
-    for (int i = k + 1; i <= n; ++i) Q[i * stride] = P[(i - 1) * stride];
+    for (int i = k + 1; i <= in.n; ++i) Q[i * stride] = P[(i - 1) * stride];
 }
 
 // Distinct knot values within [lo, hi].
@@ -61,8 +71,8 @@ void insert_knot_u(HomogeneousNet& net, double t) {
     const int p = net.degree_u, n = net.rows;
     const int k = insertion_span(p, n, net.knots_u, t);
     std::vector<HPoint> out(static_cast<size_t>(n + 1) * net.cols);
-    for (int j = 0; j < net.cols; ++j)
-        boehm(p, k, net.knots_u, t, &net.cp[j], &out[j], n, net.cols);
+    const Insertion in{net.knots_u, p, k, n, t};
+    for (int j = 0; j < net.cols; ++j) boehm(in, &net.cp[j], &out[j], net.cols);
     net.cp = std::move(out);
     net.knots_u.insert(net.knots_u.begin() + k + 1, t);
     net.rows = n + 1;
@@ -72,9 +82,9 @@ void insert_knot_v(HomogeneousNet& net, double t) {
     const int q = net.degree_v, n = net.cols;
     const int k = insertion_span(q, n, net.knots_v, t);
     std::vector<HPoint> out(static_cast<size_t>(net.rows) * (n + 1));
+    const Insertion in{net.knots_v, q, k, n, t};
     for (int i = 0; i < net.rows; ++i)
-        boehm(q, k, net.knots_v, t, &net.cp[static_cast<size_t>(i) * n],
-              &out[static_cast<size_t>(i) * (n + 1)], n, 1);
+        boehm(in, &net.cp[static_cast<size_t>(i) * n], &out[static_cast<size_t>(i) * (n + 1)], 1);
     net.cp = std::move(out);
     net.knots_v.insert(net.knots_v.begin() + k + 1, t);
     net.cols = n + 1;
@@ -125,7 +135,8 @@ std::vector<BezierPatch> bezier_patches(const BSplineSurface& s, int surface_ind
             out.push_back(b);
         }
     }
-    assert(static_cast<int>(out.size()) == bezier_patch_count(s));
+    SEAMLESS_CHECK(static_cast<int>(out.size()) == bezier_patch_count(s),
+                   "one Bezier patch per non-empty knot span rectangle");
     return out;
 }
 

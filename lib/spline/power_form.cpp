@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/power_form.h>
 
-#include <cassert>
+#include <seamless/base/check.h>
 
 namespace seamless {
 namespace {
@@ -28,7 +28,8 @@ PowerForm power_form(const BezierPatch& b) {
 }
 
 void power_form(const BezierPatch& b, PowerForm& f) {
-    assert(b.p >= 0 && b.p <= kMaxDegree && b.q >= 0 && b.q <= kMaxDegree);
+    SEAMLESS_CHECK(b.p >= 0 && b.p <= kMaxDegree && b.q >= 0 && b.q <= kMaxDegree,
+                   "a patch of degree at most kMaxDegree");
     constexpr int K = PowerForm::kMaxOrder;
     f.set_degrees(b.p, b.q, 4);
     double Mu[K][K], Mv[K][K];
@@ -65,7 +66,8 @@ PowerForm derivative_t(const PowerForm& f) {
 }
 
 void derivative_s(const PowerForm& f, PowerForm& d) {
-    assert(&d != &f); // d's degrees are set before f's coefficients are read
+    // d's degrees are set before f's coefficients are read.
+    SEAMLESS_CHECK(&d != &f, "derivative_s into its own argument");
     d.set_degrees(f.p > 0 ? f.p - 1 : 0, f.q, f.dim);
     for (int c = 0; c < f.dim; ++c)
         for (int i = 0; i <= d.p; ++i)
@@ -75,7 +77,7 @@ void derivative_s(const PowerForm& f, PowerForm& d) {
 }
 
 void derivative_t(const PowerForm& f, PowerForm& d) {
-    assert(&d != &f);
+    SEAMLESS_CHECK(&d != &f, "derivative_t into its own argument");
     d.set_degrees(f.p, f.q > 0 ? f.q - 1 : 0, f.dim);
     for (int c = 0; c < f.dim; ++c)
         for (int i = 0; i <= d.p; ++i)
@@ -91,7 +93,8 @@ PowerForm combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], in
 }
 
 void combine(const PowerForm& f, const Interval m[][PowerForm::kMaxDim], int rows, PowerForm& g) {
-    assert(rows >= 1 && rows <= PowerForm::kMaxDim && &g != &f);
+    SEAMLESS_CHECK(rows >= 1 && rows <= PowerForm::kMaxDim && &g != &f,
+                   "1 to kMaxDim rows, into another form");
     g.set_degrees(f.p, f.q, rows);
     for (int k = 0; k < rows; ++k)
         for (int i = 0; i <= f.p; ++i)

@@ -6,24 +6,22 @@
 // the same holds for the power forms of the partial derivatives.
 #pragma once
 
+#include <seamless/base/check.h>
+#include <seamless/base/raw_array.h>
 #include <seamless/interval/interval.h>
 #include <seamless/spline/bezier_patch.h>
 
-#include <seamless/base/raw_array.h>
-
 #include <algorithm>
-#include <cassert>
 #include <utility>
 
 namespace seamless {
 
 // Coefficients packed by the actual degrees: a(c, i, j) at (c (p + 1) + i) (q + 1) + j.
 // Room inside for a bicubic's 4 x 4 x 4 (1 KB); a form of higher degrees
-// takes room for degree 9 (6.4 KB) on the heap once, kept for reuse. (Room for
-// degree 9 inside spread a projected patch's six forms 6.4 KB apart over about
-// 8 of its 10 pages: ~290 of the teapot's page faults at ~11.5 us each; now a
-// bicubic ProjectedPatch is 9.8 KB, its forms one after another.) Set the
-// degrees with set_degrees() before writing coefficients: it makes the room.
+// takes room for degree 9 (6.4 KB) on the heap once, kept for reuse (room for
+// degree 9 inside would spread a patch's six forms over as many pages, each
+// touched: docs/results/render.md). Set the degrees with set_degrees() before
+// writing coefficients: it makes the room.
 // Nothing is zeroed and copies take only the coefficients in use: every
 // producer writes exactly those of its degrees.
 struct PowerForm {
@@ -64,8 +62,9 @@ struct PowerForm {
     // Sets the degrees and the dim, with room for their coefficients (their
     // values unset).
     void set_degrees(int p_, int q_, int dim_) {
-        assert(p_ >= 0 && p_ < kMaxOrder && q_ >= 0 && q_ < kMaxOrder && dim_ >= 1 &&
-               dim_ <= kMaxDim);
+        SEAMLESS_CHECK(p_ >= 0 && p_ < kMaxOrder && q_ >= 0 && q_ < kMaxOrder && dim_ >= 1 &&
+                           dim_ <= kMaxDim,
+                       "degrees and dim within the room for degree 9");
         if (!heap_ && dim_ * (p_ + 1) * (q_ + 1) > kInline) {
             heap_ = raw_array<Interval>(kCapacity);
             a_ = heap_.get();

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/ray_patch.h>
 
+#include <seamless/base/check.h>
 #include <seamless/interval/hansen_sengupta.h>
 
 #include <array>
-#include <cassert>
 #include <cmath>
 
 namespace seamless {
@@ -114,24 +114,11 @@ ParamBox clip_to_unit(ParamBox b) {
     return clip_to(ParamBox{}, b);
 }
 
-} // namespace
-
-void intersect(const PatchForms& patch, const Ray& ray, std::vector<RayPatchHit>& hits,
-               const RayPatchOptions& options, RayPatchStats* stats) {
-    intersect(patch, ray, ParamBox{}, hits, options, stats);
-}
-
-void intersect(const PatchForms& patch, const Ray& ray, ParamBox start,
-               std::vector<RayPatchHit>& hits, const RayPatchOptions& options,
-               RayPatchStats* stats) {
-    assert(options.max_depth >= 0 && options.max_depth <= kMaxRayPatchDepth);
-    assert(dot(ray.direction, ray.direction) > 0);
-    RayPatchStats local;
-    RayPatchStats& st = stats ? *stats : local;
-    RaySystem sys; // its coefficients unset until ray_system writes them (power_form.h)
-    ray_system(patch, ray, sys);
-    const size_t first = hits.size();
-
+// Covering method (section 5 remark 2): the boxes of start that refine()
+// cannot exclude, each a hit (certified or not) once it is narrow enough or
+// out of depth or budget, appended to hits.
+void cover(const RaySystem& sys, ParamBox start, std::vector<RayPatchHit>& hits,
+           const RayPatchOptions& options, RayPatchStats& st) {
     struct Entry {
         IVec<2> box;
         int depth;
@@ -139,8 +126,6 @@ void intersect(const PatchForms& patch, const Ray& ray, ParamBox start,
     // Depth-first: the stack never holds more than one box per level plus one.
     std::array<Entry, kMaxRayPatchDepth + 2> stack;
     int top = 0;
-    start = clip_to_unit(start);
-    if (start.s.is_empty() || start.t.is_empty()) return;
     stack[top++] = {to_ivec(start), 0};
     long long budget = options.max_boxes;
     while (top > 0) {
@@ -163,7 +148,7 @@ void intersect(const PatchForms& patch, const Ray& ray, ParamBox start,
             hits.push_back({to_box(r.box), {}, false});
             continue;
         }
-        // Covering method (section 5 remark 2): bisect the wider parameter interval.
+        // Bisect the wider parameter interval.
         ++st.bisections;
         const int d = r.box[0].width() >= r.box[1].width() ? 0 : 1;
         const double m = r.box[d].mid();
@@ -173,10 +158,12 @@ void intersect(const PatchForms& patch, const Ray& ray, ParamBox start,
         stack[top++] = {hi, e.depth + 1};
         stack[top++] = {lo, e.depth + 1};
     }
+}
 
-    // A zero on a bisection line, or one that rounding keeps from being
-    // excluded next to a certified box, leaves several touching boxes: merge
-    // them, then try to certify the merged box after epsilon inflation.
+// A zero on a bisection line, or one that rounding keeps from being excluded
+// next to a certified box, leaves several touching boxes: merged here (hits
+// from index first on), each merged box uncertified.
+void merge_touching(std::vector<RayPatchHit>& hits, size_t first) {
     for (size_t i = first; i < hits.size(); ++i)
         for (size_t j = i + 1; j < hits.size(); ++j) {
             if (!hits[i].box.s.overlaps(hits[j].box.s) || !hits[i].box.t.overlaps(hits[j].box.t))
@@ -187,21 +174,48 @@ void intersect(const PatchForms& patch, const Ray& ray, ParamBox start,
             hits.pop_back();
             j = i; // rescan against the grown box
         }
+}
+
+// An uncertified hit certified after epsilon inflation within the start box
+// (zeros outside it are not asked for), if refine() certifies the inflated box.
+void certify_inflated(const RaySystem& sys, ParamBox start, RayPatchHit& h,
+                      const RayPatchOptions& options, RayPatchStats& st) {
+    if (h.unique) return;
+    const double eps = std::max(max_width(to_ivec(h.box)), options.tolerance);
+    const ParamBox inflated = clip_to(start, {Interval(h.box.s.lo() - eps, h.box.s.hi() + eps),
+                                              Interval(h.box.t.lo() - eps, h.box.t.hi() + eps)});
+    const Refined r = refine(sys, to_ivec(inflated), false, options, st);
+    if (r.outcome == Outcome::hit && r.unique) {
+        h.box = to_box(r.box);
+        h.unique = true;
+    }
+}
+
+} // namespace
+
+void intersect(const PatchForms& patch, const Ray& ray, std::vector<RayPatchHit>& hits,
+               const RayPatchOptions& options, RayPatchStats* stats) {
+    intersect(patch, ray, ParamBox{}, hits, options, stats);
+}
+
+void intersect(const PatchForms& patch, const Ray& ray, ParamBox start,
+               std::vector<RayPatchHit>& hits, const RayPatchOptions& options,
+               RayPatchStats* stats) {
+    SEAMLESS_CHECK(options.max_depth >= 0 && options.max_depth <= kMaxRayPatchDepth,
+                   "the covering stack holds kMaxRayPatchDepth levels");
+    SEAMLESS_CHECK(dot(ray.direction, ray.direction) > 0, "a ray has a direction");
+    RayPatchStats local;
+    RayPatchStats& st = stats ? *stats : local;
+    RaySystem sys; // its coefficients unset until ray_system writes them (power_form.h)
+    ray_system(patch, ray, sys);
+    const size_t first = hits.size();
+    start = clip_to_unit(start);
+    if (start.s.is_empty() || start.t.is_empty()) return;
+    cover(sys, start, hits, options, st);
+    merge_touching(hits, first);
     for (size_t i = first; i < hits.size(); ++i) {
-        RayPatchHit& h = hits[i];
-        if (!h.unique) {
-            const double eps = std::max(max_width(to_ivec(h.box)), options.tolerance);
-            // Epsilon inflation, within the start box: zeros outside it are not asked for.
-            const ParamBox inflated =
-                clip_to(start, {Interval(h.box.s.lo() - eps, h.box.s.hi() + eps),
-                                Interval(h.box.t.lo() - eps, h.box.t.hi() + eps)});
-            const Refined r = refine(sys, to_ivec(inflated), false, options, st);
-            if (r.outcome == Outcome::hit && r.unique) {
-                h.box = to_box(r.box);
-                h.unique = true;
-            }
-        }
-        h.q = ray_parameter(patch, ray, h.box);
+        certify_inflated(sys, start, hits[i], options, st);
+        hits[i].q = ray_parameter(patch, ray, hits[i].box);
     }
 }
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/spline/subpatch.h>
 
+#include <seamless/base/check.h>
 #include <seamless/interval/lanes.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -162,7 +162,7 @@ void control_coefficients(const BezierPatch& b, SubpatchShape sh, Interval* out)
 void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Interval u1) {
     u0 = intersect(u0, Interval(0.0, 1.0)); // the exact ends lie in [0, 1]
     u1 = intersect(u1, Interval(0.0, 1.0));
-    assert(!u0.is_empty() && !u1.is_empty());
+    SEAMLESS_CHECK(!u0.is_empty() && !u1.is_empty(), "both ends meet [0, 1]");
     const bool cut_hi = !(u1.is_thin() && u1.lo() == 1);
     const bool cut_lo = !(u0.is_thin() && u0.lo() == 0);
     if (!cut_hi && !cut_lo) return;
@@ -184,7 +184,7 @@ void restrict_subpatch(Interval* c, SubpatchShape sh, int dir, Interval u0, Inte
 void split_subpatch(const Interval* c, SubpatchShape sh, int dir, Interval u, Interval* lo,
                     Interval* hi) {
     u = intersect(u, Interval(0.0, 1.0));
-    assert(!u.is_empty());
+    SEAMLESS_CHECK(!u.is_empty(), "the split parameter meets [0, 1]");
     const bool at_end = u.is_thin() && (u.lo() == 0 || u.lo() == 1); // a pass skipped
     if (!at_end && lanes::moderate(c, sh.size(), 0x1p1000)) {
         const PassWeights w(u);

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The surface point S(s, t) of a Bezier patch exactly as evaluate()
 // (bezier_patch.h) computes it, without its derivatives, and the unit normal
-// there, also at poles (its limit): the tessellation's
-// vertices and subpatch centres are these points (section 6: the vertices lie
-// on the surface), some 80,000 of them at teapot D = 0.001, and evaluate()'s
-// derivatives were about half of its work there.
+// there, also at poles (its limit): the tessellation's vertices and subpatch
+// centres are these points (section 6: the vertices lie on the surface), where
+// evaluate()'s derivatives would be work for nothing.
 #pragma once
 
 #include <seamless/spline/fixed_degree.h>

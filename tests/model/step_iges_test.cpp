@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// STEP and IGES in (lib/model/step_iges.cpp): every bundled CAD file converts,
+// STEP and IGES in (lib/model/step_iges/): every bundled CAD file converts,
 // the surfaces agree with the JSON conversions made outside the project,
 // trimmed faces are refused by name unless skipped or taken whole, and bad
 // files give one InputError naming the file.

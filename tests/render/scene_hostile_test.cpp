@@ -106,7 +106,7 @@ TEST_CASE("Scene messages: top-level members without a dot, a folder is a folder
     const auto dir = test::scratch_dir("scene-messages");
     test::write_file(dir / "m.json", kModel);
     test::write_file(dir / "s.json", scene_with(R"([{"model": "m.json"}])", R"("ambient": -1, )"));
-    CHECK_THAT(error_of(dir / "s.json"), Catch::Contains("s.json: ambient: value -1 outside"));
+    CHECK_THAT(error_of(dir / "s.json"), Catch::Contains("s.json: ambient: value -1 out of range"));
     std::filesystem::create_directories(dir / "folder.json");
     const auto r = test::run_cli("render \"" + (dir / "folder.json").string() + "\" -o \"" +
                                      (dir / "x.png").string() + "\"",

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The fast range enclosures of enclosure.cpp (degrees 1 to 3 unrolled, the
+// The fast range enclosures of polynomial_range.cpp (degrees 1 to 3 unrolled, the
 // lane forms of lanes.h for moderate coefficients and parameters in [0, 1])
 // must give the bits of the generic scalar code (run-time degrees, Interval
 // operations) for every degree 0-9, thin, narrow and wide coefficients, boxes

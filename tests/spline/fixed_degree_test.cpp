@@ -98,10 +98,11 @@ TEST_CASE("ray_system_fixed (bicubic, biquadratic, bilinear) gives G = (X - a Z,
         for (int k = 0; k < 20; ++k) {
             const double s = k == 0 ? 0.0 : U(rng), t = k == 0 ? 1.0 : U(rng);
             const double a = E(rng), bb = E(rng);
-            double G[2], Gs[2], Gt[2];
-            if (degree == 3) ray_system_fixed<3, 3>(b, a, bb, s, t, G, Gs, Gt);
-            if (degree == 2) ray_system_fixed<2, 2>(b, a, bb, s, t, G, Gs, Gt);
-            if (degree == 1) ray_system_fixed<1, 1>(b, a, bb, s, t, G, Gs, Gt);
+            RaySystemAt g{};
+            if (degree == 3) g = ray_system_fixed<3, 3>(b, a, bb, s, t);
+            if (degree == 2) g = ray_system_fixed<2, 2>(b, a, bb, s, t);
+            if (degree == 1) g = ray_system_fixed<1, 1>(b, a, bb, s, t);
+            const double *G = g.G, *Gs = g.Gs, *Gt = g.Gt;
             const HPoint X = evaluate_homogeneous(b, s, t);
             CHECK(std::abs(G[0] - (X.x - a * X.z)) <= 1e-12 * (1 + X.w));
             CHECK(std::abs(G[1] - (X.y - bb * X.z)) <= 1e-12 * (1 + X.w));

@@ -18,7 +18,6 @@ namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 // Below this, operator new: a huge page for less would be mostly unused.
-// (640x480: the PNG's 0.9 MB of bytes take one, the 0.3 MB of surface flags not.)
 constexpr std::size_t kHugeFrom = kHugePage / 4;
 
 std::size_t huge_bytes(std::size_t bytes) {
@@ -88,9 +87,9 @@ void touch_pages(void* p, std::size_t bytes, int threads) {
     parallel_chunks(units, threads, [&](int begin, int end) {
         const std::size_t from = begin * kHuge, stop = std::min(bytes, end * kHuge);
 #if defined(MADV_POPULATE_WRITE)
-        // The pages holding [from, stop) in one call (Linux 5.14): about half
-        // the cost of a fault per page here (64 MB: 570 -> 300 ms, i11o).
-        // Whole pages of the caller's storage: writable, contents unchanged.
+        // The pages holding [from, stop) in one call (Linux 5.14), cheaper
+        // than a fault per page. Whole pages of the caller's storage:
+        // writable, contents unchanged.
         const std::uintptr_t a = (reinterpret_cast<std::uintptr_t>(p) + from) & ~(kPage - 1);
         const std::uintptr_t z = reinterpret_cast<std::uintptr_t>(p) + stop;
         if (stop > from && madvise(reinterpret_cast<void*>(a), z - a, MADV_POPULATE_WRITE) == 0)

@@ -2,13 +2,11 @@
 // Large arrays written once, front to back (a tessellation's outputs, the
 // image's pixels, the light planes, the PNG's bytes), backed by 2 MB pages
 // where the system offers them (Linux transparent huge pages in "madvise"
-// mode). On 4 KB pages their first touch costs one page fault per 4 KB, ~12 us
-// on the AMD EPYC VM of docs/results: the teapot at D = 0.001 took ~20,000
-// faults, a third of its CPU time in the kernel (docs/results/tessellation.md,
-// i11h); a 1280x1024 image's 2,250 pages ~26 ms of the render's CPU
-// (bench/render/render_assessment.md, i10o). Only the storage changes: the
-// arrays, their values and the output are the same. Where the kernel has no
-// huge page free, 4 KB pages serve.
+// mode): on 4 KB pages their first touch costs one page fault per 4 KB, a
+// large share of a tessellation's or a render's CPU time
+// (docs/results/tessellation.md, docs/results/render.md). Only the storage
+// changes: the arrays, their values and the output are the same. Where the
+// kernel has no huge page free, 4 KB pages serve.
 #pragma once
 
 #include <cstddef>
@@ -21,8 +19,7 @@ namespace seamless {
 // --- Raw storage, none of it constructed ------------------------------------
 
 // From 512 KB up: 2 MB-aligned anonymous mmap advised MADV_HUGEPAGE; below,
-// operator new (a huge page for less would be mostly unused). A test program
-// writing 8 MB took 25-31 ms of CPU in 4 KB pages and 0.7-2.4 ms advised.
+// operator new (a huge page for less would be mostly unused).
 void* allocate_huge(std::size_t bytes);
 // p from allocate_huge(bytes), the same bytes.
 void release_huge(void* p, std::size_t bytes);
@@ -48,10 +45,10 @@ void advise_huge_pages(void* p, std::size_t bytes);
 
 // Backs every 4 KB page of [p, p + bytes) for writing, 2 MB at a time on
 // `threads` workers (parallel.h): the page faults of new storage are taken in
-// parallel instead of on the thread that fills it (i11j), and, where Linux
-// offers MADV_POPULATE_WRITE, by one call per 2 MB instead of a fault per
-// page (contents unchanged); else by writing a zero byte into each page. For
-// raw storage only (no live objects in it).
+// parallel instead of on the thread that fills it, and, where Linux offers
+// MADV_POPULATE_WRITE, by one call per 2 MB instead of a fault per page
+// (contents unchanged); else by writing a zero byte into each page. For raw
+// storage only (no live objects in it).
 void touch_pages(void* p, std::size_t bytes, int threads);
 
 // v.reserve(n) with the new storage advised for 2 MB pages before anything
@@ -75,10 +72,7 @@ template <class T> void reserve_huge(std::vector<T>& v, std::size_t n, int threa
 // (no trimming of the heap's top, no mmap below 32 MB, the most it allows), so
 // that a later pass or call refills pages already touched instead of faulting
 // in fresh ones. A process setting (mallopt): only a program's main calls it,
-// never the library. Teapot --tolerance 0.001, AMD EPYC VM (~11 us per
-// fault): the second pass re-faulted about 1,800 pages in the CLI; a warm
-// repetition on one thread about 8,000 (i11o). Nothing where the C library is
-// not glibc.
+// never the library. Nothing where the C library is not glibc.
 void keep_freed_memory();
 
 } // namespace seamless

@@ -14,10 +14,10 @@
 namespace seamless {
 namespace {
 
-// One arena per worker count, made on first use and kept: making one per
-// call cost about 27 us on 2 threads against 6 us to enter a kept one, and a
-// tessellation makes some 40 calls (docs/results/tessellation.md, i11j).
-// Never destroyed: TBB's own state may be gone when statics are.
+// One arena per worker count, made on first use and kept: making one costs
+// several times more than entering a kept one, and a tessellation makes
+// dozens of calls (docs/results/tessellation.md). Never destroyed: TBB's own
+// state may be gone when statics are.
 tbb::task_arena& arena_of(int workers) {
     static std::mutex lock;
     static auto* arenas = new std::map<int, std::unique_ptr<tbb::task_arena>>;

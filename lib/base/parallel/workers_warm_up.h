@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The workers of parallel_chunks (parallel.h) started on a thread of their
 // own while the caller does something else (a CLI reading its model), so
-// that their start-up is not paid by the first parallel call. TBB's arena
-// and threads took 2.5-3 ms there, once per process, on the AMD EPYC VM:
-// teapot --tolerance 0.0006525 --threads 2, the tessellation's scaling phase
-// 2.8-2.9 ms against 0.5 ms on one thread (docs/results/tessellation.md,
-// i11s). Nothing changes but when the workers start.
+// that their start-up (TBB's arena and threads, once per process:
+// docs/results/tessellation.md) is not paid by the first parallel call.
+// Nothing changes but when the workers start.
 #pragma once
 
 #include <thread>

@@ -111,15 +111,16 @@ Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit, double cs, do
 // certificate is below).
 [[gnu::always_inline]] inline bool ray_step(const BezierPatch& p, double a, double b, double& s,
                                             double& t, double& step) {
-    double G[2], Gs[2], Gt[2];
+    RaySystemAt g;
     if (p.p == 3 && p.q == 3)
-        ray_system_fixed<3, 3>(p, a, b, s, t, G, Gs, Gt);
+        g = ray_system_fixed<3, 3>(p, a, b, s, t);
     else if (p.p == 2 && p.q == 2)
-        ray_system_fixed<2, 2>(p, a, b, s, t, G, Gs, Gt);
+        g = ray_system_fixed<2, 2>(p, a, b, s, t);
     else if (p.p == 1 && p.q == 1)
-        ray_system_fixed<1, 1>(p, a, b, s, t, G, Gs, Gt);
+        g = ray_system_fixed<1, 1>(p, a, b, s, t);
     else
         return newton_step(p, a, b, s, t, step);
+    const double *G = g.G, *Gs = g.Gs, *Gt = g.Gt;
     const double det = Gs[0] * Gt[1] - Gt[0] * Gs[1];
     if (!(std::abs(det) > 0)) return false;
     const double ds = (G[0] * Gt[1] - G[1] * Gt[0]) / det, dt = (Gs[0] * G[1] - Gs[1] * G[0]) / det;

@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: MIT
+// STEP and IGES through OpenCASCADE: this folder is the only code that
+// includes its headers, built as its own module (libseamless_step_iges.so)
+// that step_iges_loader.cpp loads when a STEP or IGES file is read, so that
+// other runs do not pay for mapping OpenCASCADE's libraries at start-up.
+// Each face of the transferred file (file_transfer.h) becomes one surface
+// (surface_conversion.h) unless it is trimmed (face_range.h).
+#include <seamless/model/step_iges.h>
+
+#include <seamless/base/error.h>
+#include <seamless/model/step_iges/face_range.h>
+#include <seamless/model/step_iges/file_transfer.h>
+#include <seamless/model/step_iges/surface_conversion.h>
+
+#include <BRep_Tool.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Standard_Failure.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+#include <sstream>
+
+namespace seamless {
+
+namespace {
+
+using namespace step_iges;
+
+std::string fmt(double x, int digits = 3) {
+    std::ostringstream os;
+    os.precision(digits);
+    os << x;
+    return os.str();
+}
+
+// OpenCASCADE's data exchange keeps its settings and its messenger in globals:
+// one reader at a time.
+std::mutex& occt_mutex() {
+    static std::mutex m;
+    return m;
+}
+
+// OpenCASCADE prints its messages to stdout by default; ours are InputErrors
+// and Model::warnings, so its printers go.
+void silence_occt() {
+    static std::once_flag once;
+    std::call_once(once, [] { Message::DefaultMessenger()->ChangePrinters().Clear(); });
+}
+
+std::string list_names(const std::vector<std::string>& names) {
+    std::string s;
+    const size_t shown = std::min<size_t>(names.size(), 20);
+    for (size_t k = 0; k < shown; ++k) s += (k ? ", " : "") + names[k];
+    if (names.size() > shown) s += ", ... " + std::to_string(names.size() - shown) + " more";
+    return s;
+}
+
+// The faces of a transferred file as surfaces, with what was left out or
+// approximated.
+class FaceReader {
+  public:
+    FaceReader(const std::string& file, const ModelLoadOptions& options)
+        : file_(file), options_(options) {
+        m_.source = file;
+    }
+
+    // Face k (1-based) of t: a surface of the model, or trimmed.
+    void read(const TransferredFile& t, int k) {
+        const TopoDS_Face face = TopoDS::Face(t.faces(k));
+        std::string name = entity_label(t.transfer, t.model, face, t.iges);
+        if (name.empty()) name = "face-" + std::to_string(k - 1);
+        if (int uses = name_uses_[name]++; uses > 0)
+            name.append(".").append(std::to_string(uses + 1));
+        const Handle(Geom_Surface) surf = BRep_Tool::Surface(face); // located
+        if (surf.IsNull()) throw InputError(file_, name, "face without a surface");
+        const FaceRange r = face_range(face, surf);
+        if (!r.natural) {
+            trimmed_.push_back(name);
+            if (options_.trimmed != TrimmedFaces::whole_surface) return;
+        }
+        if (static_cast<long long>(m_.surfaces.size()) >= options_.limits.max_surfaces)
+            throw InputError(file_, "",
+                             "more than " + std::to_string(options_.limits.max_surfaces) +
+                                 " surfaces exceed the limit");
+        Converted c = convert(surf, r.u1, r.u2, r.v1, r.v2, options_.approximation_tolerance);
+        if (c.surface.IsNull())
+            throw InputError(file_, name,
+                             "cannot convert its " + kind_of(surf) +
+                                 " surface to a B-spline surface");
+        // Keep the face's outward side as the surface's dP/du x dP/dv side.
+        if (face.Orientation() == TopAbs_REVERSED) c.surface->UReverse();
+        if (static_cast<long long>(c.surface->NbUPoles()) * c.surface->NbVPoles() >
+            options_.limits.max_control_points)
+            throw InputError(file_, name,
+                             std::to_string(c.surface->NbUPoles()) + " x " +
+                                 std::to_string(c.surface->NbVPoles()) +
+                                 " control points exceed the limit of " +
+                                 std::to_string(options_.limits.max_control_points));
+        BSplineSurface s = to_model(c.surface, name);
+        validate_surface(s, file_, name);
+        m_.surfaces.push_back(std::move(s));
+        m_.origins.push_back({name, kind_of(surf), c.exact, c.error});
+        if (!c.exact)
+            approximated_.push_back(name + " (" + kind_of(surf) + ", " + fmt(c.error) + ")");
+    }
+
+    // The model, with warnings for what was skipped or approximated (or the
+    // refusal of trimmed faces).
+    Model finish() {
+        if (!trimmed_.empty()) {
+            const std::string what = std::to_string(trimmed_.size()) + " trimmed face" +
+                                     (trimmed_.size() == 1 ? "" : "s") + " (" +
+                                     list_names(trimmed_) + ")";
+            switch (options_.trimmed) {
+            case TrimmedFaces::refuse:
+                throw InputError(file_, "",
+                                 what + ": trimmed faces are not supported (--skip-trimmed "
+                                        "leaves them out, --untrimmed takes their whole surfaces)");
+            case TrimmedFaces::skip:
+                m_.warnings.push_back(file_ + ": skipped " + what);
+                break;
+            case TrimmedFaces::whole_surface:
+                m_.warnings.push_back(file_ + ": took the whole surfaces of " + what);
+                break;
+            }
+        }
+        if (!approximated_.empty())
+            m_.warnings.push_back(
+                file_ + ": approximated " + std::to_string(approximated_.size()) + " surface" +
+                (approximated_.size() == 1 ? "" : "s") +
+                " without an exact NURBS form, largest distances: " + list_names(approximated_));
+        if (m_.surfaces.empty())
+            throw InputError(file_, "",
+                             "no surfaces left after skipping " + std::to_string(trimmed_.size()) +
+                                 " trimmed faces");
+        return std::move(m_);
+    }
+
+  private:
+    const std::string& file_;
+    const ModelLoadOptions& options_;
+    Model m_;
+    std::vector<std::string> trimmed_, approximated_;
+    std::map<std::string, int> name_uses_;
+};
+
+Model read_locked(const std::filesystem::path& path, const ModelLoadOptions& options) {
+    const TransferredFile t = transfer_file(path);
+    const std::string file = path.string();
+    FaceReader faces(file, options);
+    for (int k = 1; k <= t.faces.Extent(); ++k) faces.read(t, k);
+    return faces.finish();
+}
+
+Model read_with_occt(const std::filesystem::path& path, const ModelLoadOptions& options) {
+    std::lock_guard<std::mutex> lock(occt_mutex());
+    silence_occt();
+    try {
+        return read_locked(path, options);
+    } catch (const Standard_Failure& e) {
+        const char* what = e.GetMessageString();
+        throw InputError(path.string(), "",
+                         std::string("OpenCASCADE failed to read it (") + e.DynamicType()->Name() +
+                             (what && *what ? std::string(": ") + what : std::string()) + ")");
+    }
+}
+
+} // namespace
+
+} // namespace seamless
+
+// The module's one entry (step_iges_loader.cpp finds it by this name).
+extern "C" __attribute__((visibility("default"))) void
+seamless_read_step_iges(const std::filesystem::path* path,
+                        const seamless::ModelLoadOptions* options, seamless::Model* out) {
+    *out = seamless::read_with_occt(*path, *options);
+}
