@@ -31,6 +31,7 @@
 #include <seamless/render/clusters/certified_pixels.h>
 #include <seamless/render/clusters/cluster_attempt.h>
 #include <seamless/render/pixels/pixel_lights.h>
+#include <seamless/render/pixels/pixel_shade.h>
 #include <seamless/render/pixels/pixel_solve.h>
 #include <seamless/render/render.h>
 #include <seamless/render/scene/projection.h>

@@ -3,6 +3,7 @@
 // of a sampled cluster that meets the patch does so inside the narrowed box,
 // and a certified box holds exactly one hit of every ray.
 #include <seamless/render/scene/projection.h>
+#include <seamless/render/subscreen/bezier_clip.h>
 #include <seamless/render/subscreen/mark.h>
 #include <seamless/render/subscreen/primary_cluster.h>
 #include <seamless/spline/ray_patch.h>

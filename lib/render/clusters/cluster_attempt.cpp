@@ -3,6 +3,7 @@
 #include <seamless/render/clusters/cluster_attempt.h>
 
 #include <seamless/render/clusters/second_order.h>
+#include <seamless/render/pixels/pixel_shade.h>
 #include <seamless/render/scene/step_clock.h>
 #include <seamless/render/shading/shading.h>
 
@@ -14,26 +15,6 @@
 #include <limits>
 
 namespace seamless {
-
-// SHADE at an exact hit: the local model, or shade_ray of trace.h with secondary rays.
-std::array<double, 3> shade_hit(const ProjectedScene& ps, const Scene& scene,
-                                const TriangleScene* ts, const PixelHit& h) {
-    Vec3 P, N;
-    surface_frame(ps.patches[h.patch].patch, h.s, h.t, P, N);
-    return shade_at(ps, scene, ts, h.patch, P, N);
-}
-
-std::array<double, 3> shade_at(const ProjectedScene& ps, const Scene& scene,
-                               const TriangleScene* ts, int patch, Vec3 P, Vec3 N,
-                               const char* lit) {
-    const ProjectedPatch& pp = ps.patches[patch];
-    if (!ts)
-        return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N),
-                             Vec3{});
-    const Vec3 Pw = ps.frame.to_world(P);
-    return shade_ray(scene, *ts, Pw, normalize(ps.frame.to_world_direction(N)), pp.material, patch,
-                     normalize(ps.frame.eye - Pw), 0, nullptr, lit);
-}
 
 namespace {
 
@@ -192,10 +173,8 @@ ClusterAttemptResult ClusterAttempt::try_paint(const PixelRect& B, const Mark* m
         // The hits' enclosures from the marks' subpatches restricted to the
         // certified box (every hit lies in it and in a mark): their control
         // points' hulls in camera and in world coordinates, and the partial
-        // derivatives from the control points' differences. Tighter than
-        // enclose_point's forms over the box on every coordinate sampled
-        // (teapot, scenes 1 and 3: median 0.77-0.87 of its width) and a
-        // fraction of the cost.
+        // derivatives from the control points' differences: tighter than
+        // enclose_point's forms over the box, at a fraction of the cost.
         point = world = e.ds = e.dt = IVec3::empty();
         bool derivatives = true;
         for (size_t k = 0; k < n; ++k) {

@@ -36,18 +36,6 @@
 
 namespace seamless {
 
-// SHADE for one ray at an exact hit (step 6's pixels and step 9's corner
-// rays). With secondary rays in play (ts not null), shadows, reflection and
-// refraction are traced against the triangles (section 7, SHADE); the local
-// illumination model is the same either way.
-std::array<double, 3> shade_hit(const ProjectedScene& ps, const Scene& scene,
-                                const TriangleScene* ts, const PixelHit& h);
-// The same at the hit's point P and normal N (camera coordinates,
-// surface_frame of projection.h) on patch `patch`; lit: as shade_ray's (trace.h).
-std::array<double, 3> shade_at(const ProjectedScene& ps, const Scene& scene,
-                               const TriangleScene* ts, int patch, Vec3 P, Vec3 N,
-                               const char* lit = nullptr);
-
 // A sub-screen's pixels, inclusive.
 struct PixelRect {
     int x0, y0, x1, y1;

@@ -31,7 +31,7 @@
 //                  + min(r_b W_b / 2, M_b W_b^2 / 8).
 // The second-order parts converge to |I_aa| and |I_bb| as B shrinks, while
 // interval arithmetic overestimates r by the width of the gradient's enclosure
-// (6 to 100 times the sampled variation on the teapot: render.md, fifth round).
+// (many times the sampled variation: docs/results/render.md).
 //
 // The painted level. With n levels, I' = I (n - 1), the painted value is
 // V = L~ (n - 1) from corner values L~ that enclose the true corner
@@ -79,7 +79,7 @@ bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Mat
 // entire partials where those are undecided. sys: B's cluster system.
 // (Splitting `box` into 3 x 3 parts and taking the hull of their first-order
 // jets narrowed the first-order bound a little but cost more than it saved:
-// docs/results/render.md, fifth round.)
+// docs/results/render.md.)
 std::array<IntervalJet2, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
                                            const Material& mat, const ClusterSystem& sys,
                                            const ParamBox& box, const PatchEnclosure& e,

@@ -106,9 +106,7 @@ Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit, double cs, do
 // Newton's step on the homogeneous system G = (X - a Z, Y - b Z) (the same
 // zeros as on X / W, W > 0): bicubic, biquadratic and bilinear patches by
 // ray_system_fixed, without the quotient rule and with the sums over two
-// combined coordinates (teapot 640x480 x 16: paint_pixels 423.7 -> 405.0 M
-// instructions, PNGs byte-identical; Newton's point only steers, the
-// certificate is below).
+// combined coordinates (Newton's point only steers, the certificate is below).
 [[gnu::always_inline]] inline bool ray_step(const BezierPatch& p, double a, double b, double& s,
                                             double& t, double& step) {
     double G[2], Gs[2], Gt[2];
@@ -212,9 +210,8 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     // At most one zero in box when A is regular: Newton in doubles from
     // `start` or the box's centre; a run whose step leaves the box (mostly
     // the ray passing beside the patch) stops there, and the ray goes on to
-    // the miss proof and the clip. (It stopped after three such steps in a
-    // row, each clamped to the box: teapot 640x480 x 16 paint_pixels 497.4 ->
-    // 486.4 M instructions stopping at the first, with PNGs byte-identical.)
+    // the miss proof and the clip (rather than after a few steps clamped to
+    // the box, which mostly lead nowhere).
     if (!J.regular) return false;
     double s = box.s.mid(), t = box.t.mid(), step = 1;
     if (start) {
@@ -316,7 +313,7 @@ bool newton_in_box(const BezierPatch& patch, double a, double b, const ParamBox&
     // 12 steps at most; 1e-9: a step this small near the regular zero (the
     // certificate's Jacobian is regular on box) leaves an error of its
     // square's order (1e-12 cost one more evaluation per pixel for the same
-    // images: teapot 640x480 x 16 1.640 -> 1.630 G instructions). Or a step
+    // images). Or a step
     // d <= 1e-5 whose successor k d^2 would be below 1e-12: the point is then
     // that close to the zero, closer than a single pixel's shading point (the
     // middle of newton_hit's Krawczyk box, inside a 2e-9 wide box). k from a

@@ -81,7 +81,7 @@ struct MarkJacobian {
     }
 };
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
-// The same from a Jacobian enclosed otherwise (subpatch_jacobian of primary_cluster.h).
+// The same from a Jacobian enclosed otherwise (subpatch_jacobian of bezier_clip.h).
 MarkJacobian mark_jacobian(const IMat<2>& A);
 
 // Krawczyk's test on a small box Y about a point c of Y with J regular over a

@@ -40,9 +40,8 @@ void cover(const ProjectedPatch& pp, double a, double b, const ParamBox& box, in
 // A mark's box (or the part of it a clip left): certified Newton; where
 // undecided, on the part the Hansen-Sengupta step leaves or its halves (a
 // covering method with the cheap test, Jacobians from the ray's power forms),
-// and the full covering method only on boxes still undecided at depth 8 (depth
-// 6: teapot 640x480 x 16 paint_pixels 452.6 M, 8: 449.2 M, 12 and 16: 448.7 M;
-// 8 keeps the worst case at 256 boxes). J and start: the Jacobian over `box`
+// and the full covering method only on boxes still undecided at depth 8
+// (deeper saved little; 8 keeps the worst case at 256 boxes). J and start: the Jacobian over `box`
 // and Newton's start for the first step, when known.
 void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box0, int patch,
                PixelScratch& scratch, RenderStats& st, Nearest& near,
@@ -68,9 +67,7 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
         // A shared Jacobian that is not regular still proves misses and
         // contracts the box to where the hits may be (Theorem 6 ii and i hold
         // for any enclosure of G'): its step comes before the fresh
-        // Jacobian, which is enclosed over the smaller box (teapot 640x480 x
-        // 16: paint_pixels 434.2 -> 427.8 M instructions, PNG byte-identical;
-        // the miss proof alone, over the whole box: 432.1 M).
+        // Jacobian, which is enclosed over the smaller box.
         ParamBox box = popped;
         if (J && !shared && J->preconditioned) {
             if (!may_hold_zero(sys, *J, popped, box, st)) {
@@ -94,8 +91,7 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
         if (depth < kDepth) {
             // The zeros lie in the Hansen-Sengupta step's box: a box it
             // shrank to below half its area is tried again whole, another one
-            // is halved. (Below a quarter: teapot 640x480 x 16 paint_pixels
-            // 457.2 M; a tenth 466.0 M, a half 452.6 M, 0.75 452.6 M, 0.9 454.3 M.)
+            // is halved (a half took the fewest instructions of the thresholds tried).
             if (rest.s.width() * rest.t.width() < 0.5 * box.s.width() * box.t.width()) {
                 todo.push_back({rest, depth + 1});
                 continue;
@@ -124,7 +120,7 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
 // the ray's own clip of the mark's subpatch (a certain miss, or a smaller box)
 // and solve_box there. (Bezier clipping all the way down, restricting the
 // subpatch for the one ray, was tried instead of solve_box: fewer
-// Hansen-Sengupta steps, but 8% more instructions for the whole render.)
+// Hansen-Sengupta steps, but more instructions for the whole render.)
 void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks& shared, size_t k,
                        PixelScratch& scratch, RenderStats& st, Nearest& near) {
     if (shared.refine(k)) {
@@ -147,7 +143,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     // Hansen-Sengupta step over the box) comes before Newton: the same step
     // on the same box as after it, so the outcome is the same either way (a
     // proved miss leaves no hit to certify), without Newton's wasted run
-    // beside the patch. Teapot 640x480 x 16: 852 -> 842 M in paint_pixels.
+    // beside the patch.
     bool held = false; // the Hansen-Sengupta step over the box ran and left `rest`
     RaySystem sys(pp, a, b, scratch.sys, scratch.sys_of);
     if (shared.missed(k) && J.regular) {
@@ -188,8 +184,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     ParamBox box;
     // Where the Hansen-Sengupta step shrank the box well (below a quarter),
     // solve_box starts on its box without the clip of the mark's whole
-    // subpatch (teapot 640x480 x 16: paint_pixels 484.7 -> 457.2 M; a
-    // tenth: 458.0 M, a half: 466.4 M, always: 514.6 M).
+    // subpatch (a quarter took the fewest instructions of the thresholds tried).
     if (rest.s.width() * rest.t.width() < 0.25 * mark.box.s.width() * mark.box.t.width()) {
         box = rest;
     } else {
@@ -222,8 +217,7 @@ PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* m
     Nearest near;
     if (shared) {
         // The marks in the sub-screen's depth order, those the ray may meet:
-        // the same sequence as sorting those alone (teapot 640x480 x 16:
-        // paint_pixels 449.2 -> 438.7 M instructions, PNG byte-identical).
+        // the same sequence as sorting those alone, without a sort per ray.
         // Refines during the walk change only marks already visited (and
         // append halves, which that mark's solve handles).
         for (const auto& [zlo, k] : shared->depth_order()) {

@@ -286,11 +286,10 @@ std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& tria
     // Directed edges bucketed by their first vertex (counting sort): per
     // bucket entry k the edge's last vertex to[k] and its number 3 t + e (from
     // corner e to corner e + 1 of triangle t), so a vertex's few edges are
-    // scanned for the same edge and its reverse in flat arrays. The teapot
-    // scene's 7k triangles: 0.2 MB of arrays where a hash table of every edge
-    // and its reverse touched 1.5 MB (about 380 fresh pages, each a page
-    // fault); bucket-ordered last vertices instead of recomputing them from
-    // the edge's number: 8.8 -> 2.6 M instructions (callgrind).
+    // scanned for the same edge and its reverse in flat arrays (a hash table
+    // of every edge touched several times the memory, each fresh page a
+    // fault); the last vertices kept in bucket order rather than recomputed
+    // from the edge's number.
     const size_t n = triangles.size() * 3;
     int nv = 0;
     for (const auto& t : triangles) nv = std::max({nv, t[0] + 1, t[1] + 1, t[2] + 1});

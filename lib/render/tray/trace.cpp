@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/tray/trace.h>
 
+#include <seamless/base/check.h>
+
 #include <seamless/render/shading/optics.h>
 #include <seamless/render/shading/shading.h>
 #include <seamless/render/tray/ray_triangle.h>
 
 #include <algorithm>
-#include <cassert>
 #include <limits>
 
 namespace seamless {
@@ -41,8 +42,7 @@ bool visit_roots_met(const RootHierarchy& h, const TriangleRay& ray, const doubl
 // visited and their order are those of the plain loop over the roots.
 // visit_triangles' roots met by a ray, per thread, through one call whose
 // result the caller keeps (as shade_scratch below: a thread_local's address
-// is otherwise recomputed, a __tls_get_addr call each time; scene 3
-// 640x480 x 16: 230,877 calls in nearest_hit).
+// is otherwise recomputed, a __tls_get_addr call each time).
 [[gnu::noinline]] std::vector<int>& met_roots() {
     thread_local std::vector<int> met;
     return met;
@@ -148,7 +148,7 @@ bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVe
         const ApexTriangle& p = ts.light_planes.get(
             static_cast<size_t>(l), static_cast<size_t>(f), apex, mesh.positions[tri[0]],
             mesh.positions[tri[1]], mesh.positions[tri[2]], scratch);
-        assert(p.apex == apex);
+        SEAMLESS_DCHECK(p.apex == apex, "light l's planes are formed from its position");
         return pyramid_may_meet_triangle(p, ends);
     }
     return pyramid_may_meet_triangle(apex, ends, mesh.positions[tri[0]], mesh.positions[tri[1]],
@@ -226,9 +226,8 @@ bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, doubl
 namespace {
 
 // shade_ray's per-thread scratch, one thread_local: in the shared library
-// each access to a thread_local is a __tls_get_addr call (three objects,
-// their guards, recomputed after calls: 2.04 M calls, 22 M instructions, on
-// the teapot at 1280x1024 x 256, one thread).
+// each access to a thread_local is a __tls_get_addr call (three objects
+// and their guards would each be recomputed after calls).
 struct ShadeScratch {
     // Step 2: the lights that reach P (lights_reaching), so the hot loop
     // does not allocate; done with before the recursion reuses it.
