@@ -22,6 +22,7 @@
 
 #include <seamless/render/clusters/cluster_shade.h>
 #include <seamless/render/pixels/pixel_solve.h>
+#include <seamless/render/scene/canvas.h>
 #include <seamless/render/scene/image.h>
 #include <seamless/render/scene/projection.h>
 #include <seamless/render/scene/render_options.h>
@@ -35,11 +36,6 @@
 #include <vector>
 
 namespace seamless {
-
-// A sub-screen's pixels, inclusive.
-struct PixelRect {
-    int x0, y0, x1, y1;
-};
 
 // What an attempt came to.
 struct ClusterAttemptResult {
