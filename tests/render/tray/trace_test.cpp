@@ -3,7 +3,7 @@
 // tessellation: shadows, a mirror, refraction through a plane-parallel plate
 // as Snell's law predicts, the recursion limit, lights that are off; TRAY on
 // the scenes of section 8 (data/scenes): sequential == parallel, all load and render.
-#include "render_compare.h"
+#include "render/render_compare.h"
 #include "test_util.h"
 
 #include <seamless/render/render.h>

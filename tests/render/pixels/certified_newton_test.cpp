@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "dome_patch.h"
+#include "render/dome_patch.h"
 
 #include <random>
 

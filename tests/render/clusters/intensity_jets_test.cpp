@@ -7,8 +7,8 @@
 // light, under a light at the eye (highlights facing the viewer), under a
 // grazing light (the diffuse term's terminator crosses clusters), with no light
 // reaching it (a shadowed cluster: only ambient), and a rational cylinder.
-#include "cluster_samples.h"
-#include "scene_fixtures.h"
+#include "render/clusters/cluster_samples.h"
+#include "render/scene_fixtures.h"
 #include "test_util.h"
 
 #include <seamless/render/clusters/second_order.h>

@@ -5,8 +5,8 @@
 // certified corner enclosures hold the exact corner intensities, and where the
 // criterion paints, every painted level lies within one level of the pixel's
 // own; INTRACY using it still agrees with the per-pixel reference.
-#include "cluster_samples.h"
-#include "render_compare.h"
+#include "render/clusters/cluster_samples.h"
+#include "render/render_compare.h"
 #include "test_util.h"
 
 #include <seamless/render/clusters/second_order.h>
