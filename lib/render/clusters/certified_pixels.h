@@ -60,6 +60,16 @@ class CertifiedPixels {
         PixelHit hit;
         Vec3 P, N;
     };
+    struct Marks { // B's marks
+        const Mark* marks;
+        size_t n;
+    };
+    struct Starts { // where Newton starts: the last hit, the row's first, the next
+        NewtonRun *last, *row, *next;
+    };
+    int solve_tile(const PixelRect& tile, const ClusterAttemptResult& r, const Marks& marks,
+                   Starts& runs, IVec<3>& Pw, PixelScratch& scratch, RenderStats& st);
+    void shade_tile(const PixelRect& tile, int patch, bool shared, RenderStats& st);
 
     const ProjectedScene& ps_;
     const Scene& scene_;

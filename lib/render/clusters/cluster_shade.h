@@ -78,6 +78,16 @@ class ClusterShader {
                        int patch, int depth, std::array<Interval, 3>& I);
     bool secondary_cluster(const IVec<3>& origin, const IVec<3>& dir, int skip_patch, int depth,
                            std::array<Interval, 3>& out);
+    // secondary_cluster's covering triangle (-1: none) with its meeting
+    // parameters, and the count of triangles that may be met.
+    struct Covering {
+        int triangle = -1, candidates = 0;
+        Interval q, beta, delta;
+    };
+    Covering covering_triangle(const RayCluster& rc, double dmin, int skip_patch) const;
+    bool other_before(const RayCluster& rc, const Covering& c, int skip_patch) const;
+    bool shade_covered(const RayCluster& rc, const Covering& c, int depth,
+                       std::array<Interval, 3>& out);
 
     static constexpr int kBlockerTries = 4;         // per light and cluster (lights())
     static constexpr int kMaxBlockerSurface = 4096; // triangles of a blocking surface
