@@ -35,7 +35,7 @@
 #include <seamless/render/subscreen/narrowing.h>
 #include <seamless/render/subscreen/shrink.h>
 #include <seamless/render/subscreen/subscreen.h>
-#include <seamless/render/tray/ray_cluster.h>
+#include <seamless/render/tray/blocking_surface.h>
 #include <seamless/render/tray/trace.h>
 
 #include <seamless/model/model.h>
@@ -234,7 +234,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     // scene without lit diffuse or specular surfaces and without mirrors or
     // glass needs none, and gets none.
     std::unique_ptr<TriangleScene> ts;
-    std::vector<int> neighbours; // for shadows by a surface of triangles (ray_cluster.h)
+    std::vector<int> neighbours; // for shadows by a surface of triangles (blocking_surface.h)
     if (needs_secondary_rays(scene)) {
         ts = std::make_unique<TriangleScene>(build_triangle_scene(scene, patches, opt.threads));
         st.triangles = ts->tess.mesh.triangle_count();

@@ -224,7 +224,7 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
         // A certain blocker is rare (one triangle must cover every ray), so
         // only the first kBlockerTries triangles that may meet the cluster are
         // tried, as blockers and then as seeds of a blocking surface
-        // (ray_cluster.h); after that the light is undecided (split B).
+        // (blocking_surface.h); after that the light is undecided (split B).
         bool maybe = false, blocked = false;
         int tries = 0;
         int seeds[kBlockerTries];
@@ -245,10 +245,11 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
                 if (m == TriangleMeeting::covers && q.lo() > 0 && q.hi() < q_max) blocked = true;
             });
         for (int k = 0; k < tries && !blocked && neighbours_; ++k) {
-            blocked = pyramid_blocked_by_surface(light.position, Pw, q_max, seeds[k],
-                                                 ts_->tess.mesh.positions, ts_->tess.mesh.triangles,
-                                                 *neighbours_, ts_->triangle_patch, patch,
-                                                 kMaxBlockerSurface, surface_);
+            blocked =
+                pyramid_blocked_by_surface({light.position, Pw, q_max}, seeds[k],
+                                           {ts_->tess.mesh.positions, ts_->tess.mesh.triangles,
+                                            *neighbours_, ts_->triangle_patch},
+                                           patch, kMaxBlockerSurface, surface_);
             r.by_surface += blocked;
         }
         if (blocked) {

@@ -13,6 +13,7 @@
 #include <seamless/render/scene/render_options.h>
 #include <seamless/render/scene/render_stats.h>
 #include <seamless/render/shading/shading.h>
+#include <seamless/render/tray/blocking_surface.h>
 #include <seamless/render/tray/ray_cluster.h>
 #include <seamless/render/tray/trace.h>
 #include <seamless/spline/subpatch.h>
@@ -41,7 +42,7 @@ struct ClusterShading {
 struct ClusterLights {
     bool decided = true;
     int blocked = 0;    // lights certainly blocked for every point
-    int by_surface = 0; // of those, blocked by a surface of triangles (ray_cluster.h)
+    int by_surface = 0; // of those, blocked by a surface of triangles (blocking_surface.h)
 };
 
 class ClusterShader {
@@ -49,7 +50,7 @@ class ClusterShader {
     // ts: null when no secondary rays are in play. levels, dither: the
     // painting rule of step 9, to stop before tracing secondary clusters
     // when the local terms alone already span too many levels.
-    // neighbours: triangle_neighbours(ts->tess.mesh.triangles) (ray_cluster.h),
+    // neighbours: triangle_neighbours(ts->tess.mesh.triangles) (blocking_surface.h),
     // for lights blocked by a surface of triangles; null with ts null.
     ClusterShader(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
                   const std::vector<int>* neighbours, int levels, bool dither);
