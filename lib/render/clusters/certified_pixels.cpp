@@ -69,9 +69,9 @@ int CertifiedPixels::solve_tile(const PixelRect& tile, const ClusterAttemptResul
             } else {
                 *next = {}; // a fallback's hit: no correction, k unknown
                 ++st.certified_pixel_fallbacks;
-                p.hit = solve_pixel(ps_, a, b, &only, 1, scratch, st);
+                p.hit = solve_pixel(ps_, a, b, {&only, 1}, scratch, st);
                 if (p.hit.patch < 0)
-                    p.hit = solve_pixel(ps_, a, b, marks.marks, marks.n, scratch, st);
+                    p.hit = solve_pixel(ps_, a, b, {marks.marks, marks.n}, scratch, st);
             }
             if (p.hit.patch < 0) continue;
             surface_frame(ps_.patches[p.hit.patch].patch, p.hit.s, p.hit.t, p.P, p.N, &next->at);

@@ -326,7 +326,7 @@ void ClusterAttempt::corner_rays(const PixelRect& B, const Certified& c,
             corner[k] = shade_hit(ps_, scene_, ts_, PixelHit{c.patch, cs, ct, 0});
             continue;
         }
-        const PixelHit h = solve_pixel(ps_, ca, cb, &only, 1, pixel, st);
+        const PixelHit h = solve_pixel(ps_, ca, cb, {&only, 1}, pixel, st);
         if (h.patch < 0) {
             for (int i = 0; i < 3; ++i) corner[k][i] = I[i].mid();
         } else {

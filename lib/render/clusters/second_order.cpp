@@ -70,12 +70,11 @@ bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Mat
                       double a, double b, const ParamBox& box, const MarkJacobian& J,
                       ClusterSystem& scratch, RenderStats& st, std::array<Interval, 3>& I) {
     RaySystem sys(pp, a, b, scratch);
-    ParamBox hit;
-    Interval q;
-    if (!newton_hit(pp, a, b, box, sys, J, hit, q, st)) return false;
+    CertifiedHit hit;
+    if (!newton_hit(sys, box, J, hit, st)) return false;
     ++st.primary_rays;
     V3<Interval> P, N;
-    corner_frame(pp.forms, hit, P, N);
+    corner_frame(pp.forms, hit.box, P, N);
     I = shade<Interval>(lighting, mat, P, N, Vec3{});
     return I[0].is_finite() && I[1].is_finite() && I[2].is_finite();
 }

@@ -204,9 +204,14 @@ bool krawczyk_hit(const MarkJacobian& J, const IVec<2>& Gc, const IVec<2>& Y, co
     return true;
 }
 
-bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
-                const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
-                const double* start, const SurfacePoint* at_start, NewtonFrame* frame) {
+bool newton_hit(RaySystem& sys, const ParamBox& box, const MarkJacobian& J, CertifiedHit& out,
+                RenderStats& st, NewtonStart from, NewtonFrame* frame) {
+    const ProjectedPatch& pp = sys.patch();
+    const double a = sys.a(), b = sys.b();
+    const double* start = from.st;
+    const SurfacePoint* at_start = from.at;
+    ParamBox& hit = out.box;
+    Interval& q = out.q;
     // At most one zero in box when A is regular: Newton in doubles from
     // `start` or the box's centre; a run whose step leaves the box (mostly
     // the ray passing beside the patch) stops there, and the ray goes on to
@@ -273,12 +278,12 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     return true;
 }
 
-NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                               RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
-                               const MarkJacobian* given, ParamBox* rest, const double* start) {
+NewtonOutcome newton_certified(RaySystem& sys, const ParamBox& box, CertifiedHit& hit,
+                               RenderStats& st, const MarkJacobian* given, ParamBox* rest,
+                               const double* start) {
     MarkJacobian own;
     const MarkJacobian& J = given ? *given : (own = mark_jacobian(sys.forms(), box));
-    if (newton_hit(pp, a, b, box, sys, J, hit, q, st, start)) return NewtonOutcome::hit;
+    if (newton_hit(sys, box, J, hit, st, {start, nullptr})) return NewtonOutcome::hit;
     ParamBox part;
     if (!may_hold_zero(sys, J, box, part, st)) return NewtonOutcome::miss;
     if (rest) *rest = part;

@@ -12,7 +12,7 @@ void SinglePixels::paint_pixel(const SubScreen& B, const Mark* marks, size_t n,
                                PixelScratch& scratch, RenderStats& st) {
     paint_hit(B.x0, B.y0, B.cause,
               solve_pixel(ps_, ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_b(B.y0 + 0.5),
-                          marks, n, scratch, st),
+                          {marks, n}, scratch, st),
               st);
 }
 
@@ -47,7 +47,7 @@ void SinglePixels::paint_subscreen(const SubScreen& B, MarkStack& stack, PixelSc
 SinglePixels::Shaded SinglePixels::solve(double a, double b, PixelScratch& scratch,
                                          RenderStats& st) {
     Shaded p;
-    p.hit = solve_pixel(ps_, a, b, nullptr, 0, scratch, st, &shared_);
+    p.hit = solve_pixel(ps_, a, b, shared_, scratch, st);
     if (p.hit.patch < 0) return p;
     const BezierPatch& patch = ps_.patches[p.hit.patch].patch;
     // A hit by certified Newton is shaded at Newton's point, from the
