@@ -295,10 +295,11 @@ bool ClusterAttempt::second_order_corners(const PixelRect& B, const Certified& c
                                           std::array<double, 3> corner[4]) {
     const ProjectedPatch& pp = ps_.patches[c.patch];
     ++st.second_order_attempts;
-    const double ca[2] = {ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_a(B.x1 + 0.5)};
-    const double cb[2] = {ps_.frame.screen_b(B.y0 + 0.5), ps_.frame.screen_b(B.y1 + 0.5)};
-    const SecondOrder so = second_order(pp, *cs.lighting, ps_.lighting.materials[pp.material],
-                                        c.box, cs.e, sys_, ca, cb, levels_, dither_, pixel.sys, st);
+    const CornerPixels corners{{ps_.frame.screen_a(B.x0 + 0.5), ps_.frame.screen_a(B.x1 + 0.5)},
+                               {ps_.frame.screen_b(B.y0 + 0.5), ps_.frame.screen_b(B.y1 + 0.5)}};
+    const SecondOrder so =
+        second_order({pp, c.box, cs.e, sys_}, {*cs.lighting, ps_.lighting.materials[pp.material]},
+                     corners, {levels_, dither_}, pixel.sys, st);
     if (!so.paint) {
         // Halving B quarters the bound: children may pass where B failed.
         if (so.error_levels < 4 * (dither_ ? 0.5 : 1.0)) levels_over = 0;

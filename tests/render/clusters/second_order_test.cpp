@@ -75,8 +75,11 @@ Tally check_clusters(const Scene& scene, int w, int h, int block, std::vector<in
                     exact[static_cast<size_t>((block - 1) * block)], exact.back()};
                 for (const int n : levels)
                     for (const bool dither : {true, false}) {
-                        const SecondOrder so = second_order(pp, ps.lighting, mat, box, e, sys, ca,
-                                                            cb, n, dither, scratch, st);
+                        const CertifiedCluster cluster{pp, box, e, sys};
+                        const ClusterLight light{ps.lighting, mat};
+                        const SecondOrder so =
+                            second_order(cluster, light, {{ca[0], ca[1]}, {cb[0], cb[1]}},
+                                         {n, dither}, scratch, st);
                         if (!std::isfinite(so.bound[0]) || !std::isfinite(so.bound[1]) ||
                             !std::isfinite(so.bound[2]))
                             continue;
@@ -86,8 +89,8 @@ Tally check_clusters(const Scene& scene, int w, int h, int block, std::vector<in
                         // The certified corner enclosures hold the exact corner intensities.
                         std::array<Interval, 3> Ic;
                         for (int k = 0; k < 4 && so.paint; ++k) {
-                            REQUIRE(corner_intensity(pp, ps.lighting, mat, ca[k & 1], cb[k >> 1],
-                                                     box, mark_jacobian(A), scratch, st, Ic));
+                            REQUIRE(corner_intensity(cluster, light, RVec<2>{ca[k & 1], cb[k >> 1]},
+                                                     mark_jacobian(A), scratch, st, Ic));
                             for (int c = 0; c < 3; ++c)
                                 tally.corner_misses +=
                                     !Ic[c].contains(corner[k][c]) || Ic[c].mid() != so.corner[k][c];
