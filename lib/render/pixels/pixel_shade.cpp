@@ -22,8 +22,10 @@ std::array<double, 3> shade_at(const ProjectedScene& ps, const Scene& scene,
         return shade<double>(ps.lighting, ps.lighting.materials[pp.material], to_v3(P), to_v3(N),
                              Vec3{});
     const Vec3 Pw = ps.frame.to_world(P);
-    return shade_ray(scene, *ts, Pw, normalize(ps.frame.to_world_direction(N)), pp.material, patch,
-                     normalize(ps.frame.eye - Pw), 0, nullptr, lit);
+    return shade_ray(scene, *ts,
+                     {Pw, normalize(ps.frame.to_world_direction(N)), pp.material, patch,
+                      normalize(ps.frame.eye - Pw)},
+                     0, nullptr, lit);
 }
 
 } // namespace seamless

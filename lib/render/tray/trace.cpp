@@ -85,9 +85,9 @@ bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray, 
 std::array<double, 3> trace_secondary(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 dir,
                                       int patch, int depth, long long* tests) {
     TraceHit h;
-    if (!nearest_hit(ts, P, dir, ts.ray_epsilon, kInf, patch, h, tests))
+    if (!nearest_hit(ts, {P, dir, ts.ray_epsilon, kInf, patch}, h, tests))
         return {scene.background.x, scene.background.y, scene.background.z};
-    return shade_ray(scene, ts, h.point, h.normal, h.material, h.patch, -dir, depth, tests);
+    return shade_ray(scene, ts, {h.point, h.normal, h.material, h.patch, -dir}, depth, tests);
 }
 
 } // namespace
@@ -155,8 +155,10 @@ bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVe
                                      mesh.positions[tri[2]]);
 }
 
-bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-                 int skip_patch, TraceHit& hit, long long* tests) {
+bool nearest_hit(const TriangleScene& ts, const TraceRay& r, TraceHit& hit, long long* tests) {
+    const Vec3 origin = r.origin, dir = r.dir;
+    const double t_min = r.t_min, t_max = r.t_max;
+    const int skip_patch = r.skip_patch;
     const TriangleMesh& mesh = ts.tess.mesh;
     const TriangleRay ray(origin, dir);
     double best_t = t_max;
@@ -195,8 +197,10 @@ bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, d
     return true;
 }
 
-bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-             int skip_patch, long long* tests, int* blocker) {
+bool any_hit(const TriangleScene& ts, const TraceRay& r, long long* tests, int* blocker) {
+    const Vec3 origin = r.origin, dir = r.dir;
+    const double t_min = r.t_min, t_max = r.t_max;
+    const int skip_patch = r.skip_patch;
     const TriangleMesh& mesh = ts.tess.mesh;
     const TriangleRay ray(origin, dir);
     RayTriangleHit h;
@@ -250,9 +254,10 @@ struct ShadeScratch {
 
 } // namespace
 
-std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 N,
-                                int material, int patch, Vec3 view, int depth, long long* tests,
-                                const char* lit) {
+std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, const ShadePoint& at,
+                                int depth, long long* tests, const char* lit) {
+    const Vec3 P = at.P, N = at.N, view = at.view;
+    const int material = at.material, patch = at.patch;
     const Material& m = scene.materials[material];
     const double cos_v = dot(N, view);
     const Vec3 Nf = cos_v < 0 ? -N : N; // towards the viewer (surfaces have two sides)
@@ -274,7 +279,7 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
     }
     lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist, int light) {
         if (lit && lit[light]) return false;
-        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests,
+        return any_hit(ts, {P, dir, ts.ray_epsilon, dist, patch}, tests,
                        depth_blocker ? depth_blocker + light : nullptr);
     });
     std::array<double, 3> I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);
