@@ -49,15 +49,27 @@
 namespace seamless {
 namespace {
 
+// What every part renders from (step 1's projected scene and whole-patch
+// marks, the triangles for secondary rays when in play) and into.
+struct PartContext {
+    const ProjectedScene& ps;
+    const MarkStack& whole;
+    const Scene& scene;
+    const TriangleScene* ts;            // null: no secondary rays in play
+    const std::vector<int>* neighbours; // ts's triangle_neighbours, with ts
+    const RenderOptions& opt;
+    Image& image;
+    int levels;
+};
+
 // One part of the screen (remark 4) with its own stack of sub-screens.
 class PartRenderer {
   public:
-    PartRenderer(const ProjectedScene& ps, const MarkStack& whole, const Scene& scene,
-                 const TriangleScene* ts, const std::vector<int>* neighbours,
-                 const RenderOptions& opt, Image& image, int levels)
-        : whole_(whole), opt_(opt), canvas_(image, levels, ps.lighting.background), narrowing_(ps),
-          pixels_(ps, scene, ts, canvas_), attempt_(ps, scene, ts, neighbours, opt, image, levels),
-          certified_(ps, scene, ts, image, levels), frame_(ps.frame) {}
+    explicit PartRenderer(const PartContext& c)
+        : whole_(c.whole), opt_(c.opt), canvas_(c.image, c.levels, c.ps.lighting.background),
+          narrowing_(c.ps), pixels_(c.ps, c.scene, c.ts, canvas_),
+          attempt_(c.ps, c.scene, c.ts, c.neighbours, c.opt, c.image, c.levels),
+          certified_(c.ps, c.scene, c.ts, c.image, c.levels), frame_(c.ps.frame) {}
 
     void run(int x0, int y0, int x1, int y1, RenderStats& st) {
         marks_.marks.assign(whole_.marks.begin(), whole_.marks.end());
@@ -254,6 +266,8 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
     const int px = std::min(opt.prepartition, W), py = std::min(opt.prepartition, H);
     const int parts = px * py;
     std::vector<RenderStats> part_stats(parts);
+    const PartContext context{ps,  whole, scene, ts.get(), ts ? &neighbours : nullptr,
+                              opt, image, L};
     std::atomic<int> done{0};
     // A part takes a free renderer (made when none is free: at most one per
     // worker) and gives it back, so its scratch vectors keep their capacity
@@ -273,9 +287,7 @@ Image render_intracy(const Scene& scene, const RenderOptions& opt, RenderStats& 
                 free_renderers.pop_back();
             }
         }
-        if (!r)
-            r = std::make_unique<PartRenderer>(ps, whole, scene, ts.get(),
-                                               ts ? &neighbours : nullptr, opt, image, L);
+        if (!r) r = std::make_unique<PartRenderer>(context);
         r->run(x0, y0, x1, y1, part_stats[p]);
         {
             const std::lock_guard<std::mutex> hold(free_lock);

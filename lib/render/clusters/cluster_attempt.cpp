@@ -349,6 +349,7 @@ void ClusterAttempt::paint_level(const PixelRect& B, const int lo[3]) {
 // within the enclosure's levels [lo, hi] (step 9, remark 2).
 void ClusterAttempt::paint_bilinear(const PixelRect& B, const std::array<double, 3> corner[4],
                                     const int lo[3], const int hi[3]) {
+    const BilinearForm form{corner, levels_};
     const double wx = std::max(1, B.x1 - B.x0), wy = std::max(1, B.y1 - B.y0);
     for (int y = B.y0; y <= B.y1; ++y) {
         const double fy = (y - B.y0) / wy;
@@ -356,8 +357,8 @@ void ClusterAttempt::paint_bilinear(const PixelRect& B, const std::array<double,
             const double fx = (x - B.x0) / wx;
             image_.surface_at(x, y) = 1;
             for (int c = 0; c < 3; ++c)
-                image_.at(x, y, c) = static_cast<std::uint16_t>(bilinear_level(
-                    corner, c, fx, fy, dither_ ? dither(x, y, c) : 0.0, levels_, lo[c], hi[c]));
+                image_.at(x, y, c) = static_cast<std::uint16_t>(
+                    form.level(c, fx, fy, dither_ ? dither(x, y, c) : 0.0, lo[c], hi[c]));
         }
     }
 }

@@ -112,21 +112,25 @@ SecondOrder second_order(const CertifiedCluster& c, const ClusterLight& light,
                          const CornerPixels& corners, PaintRule rule, ClusterSystem& scratch,
                          RenderStats& st);
 
-// Step 9's painted level at fractions (fx, fy) between B's corner pixels: the
-// bilinear form of the corner intensities (row by row: (x0, y0), (x1, y0),
-// (x0, y1), (x1, y1)) plus dither d, rounded and kept within [lo, hi].
-inline int bilinear_level(const std::array<double, 3> corner[4], int c, double fx, double fy,
-                          double d, int levels, int lo, int hi) {
-    const double v = (1 - fy) * ((1 - fx) * corner[0][c] + fx * corner[1][c]) +
-                     fy * ((1 - fx) * corner[2][c] + fx * corner[3][c]);
-    // std::lround without the library call: for x > 0 the truncation is the
-    // floor and x - floor(x) is exact, so this rounds halves away from zero
-    // too; x <= 0 gives 0 where lround gives 0 or less, the same after the
-    // clamp to [lo, hi] (lo >= 0).
-    const double x = clamp01(v) * (levels - 1) + d;
-    long level = x > 0 ? static_cast<long>(x) : 0;
-    if (x - static_cast<double>(level) >= 0.5) ++level;
-    return static_cast<int>(std::clamp<long>(level, lo, hi));
-}
+// Step 9's bilinear form of B's corner intensities (corner[0..3], row by row:
+// (x0, y0), (x1, y0), (x0, y1), (x1, y1)), painted with `levels` levels.
+struct BilinearForm {
+    const std::array<double, 3>* corner;
+    int levels;
+    // Channel c's painted level at fractions (fx, fy) between B's corner
+    // pixels: the form plus dither d, rounded and kept within [lo, hi].
+    int level(int c, double fx, double fy, double d, int lo, int hi) const {
+        const double v = (1 - fy) * ((1 - fx) * corner[0][c] + fx * corner[1][c]) +
+                         fy * ((1 - fx) * corner[2][c] + fx * corner[3][c]);
+        // std::lround without the library call: for x > 0 the truncation is the
+        // floor and x - floor(x) is exact, so this rounds halves away from zero
+        // too; x <= 0 gives 0 where lround gives 0 or less, the same after the
+        // clamp to [lo, hi] (lo >= 0).
+        const double x = clamp01(v) * (levels - 1) + d;
+        long level = x > 0 ? static_cast<long>(x) : 0;
+        if (x - static_cast<double>(level) >= 0.5) ++level;
+        return static_cast<int>(std::clamp<long>(level, lo, hi));
+    }
+};
 
 } // namespace seamless

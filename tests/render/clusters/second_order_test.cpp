@@ -120,8 +120,8 @@ Tally check_clusters(const Scene& scene, int w, int h, int block, std::vector<in
                                 for (int c = 0; c < 3; ++c) {
                                     const int q = quantise(Ix[c], n);
                                     for (double d = -0.5; d < 0.5; d += dither ? 0.125 : 1.0) {
-                                        const int p = bilinear_level(so.corner, c, fx, fy,
-                                                                     dither ? d : 0.0, n, 0, n - 1);
+                                        const int p = BilinearForm{so.corner, n}.level(
+                                            c, fx, fy, dither ? d : 0.0, 0, n - 1);
                                         tally.level_misses += std::abs(p - q) > 1;
                                     }
                                 }
@@ -185,7 +185,8 @@ TEST_CASE("INTRACY with the second-order step 9 agrees with the per-pixel refere
     CHECK(d.surface_mismatch == 0);
 }
 
-TEST_CASE("bilinear_level rounds as std::lround within the enclosure's levels", "[second_order]") {
+TEST_CASE("BilinearForm::level rounds as std::lround within the enclosure's levels",
+          "[second_order]") {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> U(-0.1, 1.1), D(-0.5, 0.5);
     const int levels[] = {2, 16, 256, 65536};
@@ -206,6 +207,6 @@ TEST_CASE("bilinear_level rounds as std::lround within the enclosure's levels", 
         const double v = (1 - fy) * ((1 - fx) * corner[0][0] + fx * corner[1][0]) +
                          fy * ((1 - fx) * corner[2][0] + fx * corner[3][0]);
         const long want = std::clamp<long>(std::lround(clamp01(v) * (L - 1) + d), lo, hi);
-        CHECK(bilinear_level(corner, 0, fx, fy, d, L, lo, hi) == want);
+        CHECK(BilinearForm{corner, L}.level(0, fx, fy, d, lo, hi) == want);
     }
 }
