@@ -77,8 +77,10 @@ Image render_reference(const Scene& scene, const RenderOptions& opt, RenderStats
                 surface_frame(ps.patches[best].patch, bs, bt, P, N);
                 if (ts) {
                     const Vec3 Pw = ps.frame.to_world(P);
-                    I = shade_ray(scene, *ts, Pw, normalize(ps.frame.to_world_direction(N)),
-                                  ps.patches[best].material, best, normalize(ps.frame.eye - Pw), 0);
+                    I = shade_ray(scene, *ts,
+                                  {Pw, normalize(ps.frame.to_world_direction(N)),
+                                   ps.patches[best].material, best, normalize(ps.frame.eye - Pw)},
+                                  0);
                 } else {
                     I = shade<double>(ps.lighting, ps.lighting.materials[ps.patches[best].material],
                                       to_v3(P), to_v3(N), Vec3{});

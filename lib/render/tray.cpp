@@ -58,12 +58,13 @@ Image render_tray(const Scene& scene, const RenderOptions& opt, RenderStats& st)
             // the pixel x patch Hansen-Sengupta solves of INTRACY.
             TraceHit hit;
             std::array<double, 3> I;
-            if (!nearest_hit(ts, ray_origin, dir, 0, kInf, -1, hit, &rs.pixel_patch_solves)) {
+            if (!nearest_hit(ts, {ray_origin, dir, 0, kInf, -1}, hit, &rs.pixel_patch_solves)) {
                 I = {scene.background.x, scene.background.y, scene.background.z};
                 ++rs.background_pixels;
             } else {
-                I = shade_ray(scene, ts, hit.point, hit.normal, hit.material, hit.patch,
-                              -normalize(dir), 0, &rs.pixel_patch_solves);
+                I = shade_ray(scene, ts,
+                              {hit.point, hit.normal, hit.material, hit.patch, -normalize(dir)}, 0,
+                              &rs.pixel_patch_solves);
             }
             for (int c = 0; c < 3; ++c)
                 image.at(x, y, c) = static_cast<std::uint16_t>(quantise(I[c], L));

@@ -19,7 +19,7 @@
 // (newton_in_box of certified_newton.h: a step below 1e-9, or one whose
 // successor would be below 1e-12) can only have converged to that zero; the shading is in doubles
 // at the hit, as for every single pixel and corner ray (shade_at of
-// cluster_attempt.h, with shadow rays for the lights).
+// pixel_shade.h, with shadow rays for the lights).
 #pragma once
 
 #include <seamless/render/clusters/cluster_attempt.h>
@@ -52,14 +52,24 @@ class CertifiedPixels {
   private:
     // B is painted in tiles: a tile's hits on the certified patch share one
     // certificate per light (lights_reaching_box of pixel_lights.h), where
-    // SHADE's for all of B failed; 8 x 4 by callgrind counts on scenes 2 and 3
-    // (4 x 4, 5 x 4 and 10 x 8 took 0.3-1 % more; without: 11-23 % more).
+    // SHADE's for all of B failed; 8 x 4 took the fewest instructions on
+    // scenes 2 and 3 (docs/results/render.md).
     static constexpr int kTileWidth = 8, kTileHeight = 4;
 
     struct Shaded { // a pixel's hit, with point and normal there (camera coordinates)
         PixelHit hit;
         Vec3 P, N;
     };
+    struct Marks { // B's marks
+        const Mark* marks;
+        size_t n;
+    };
+    struct Starts { // where Newton starts: the last hit, the row's first, the next
+        NewtonRun *last, *row, *next;
+    };
+    int solve_tile(const PixelRect& tile, const ClusterAttemptResult& r, const Marks& marks,
+                   Starts& runs, IVec<3>& Pw, PixelScratch& scratch, RenderStats& st);
+    void shade_tile(const PixelRect& tile, int patch, bool shared, RenderStats& st);
 
     const ProjectedScene& ps_;
     const Scene& scene_;

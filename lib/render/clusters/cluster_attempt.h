@@ -22,6 +22,7 @@
 
 #include <seamless/render/clusters/cluster_shade.h>
 #include <seamless/render/pixels/pixel_solve.h>
+#include <seamless/render/scene/canvas.h>
 #include <seamless/render/scene/image.h>
 #include <seamless/render/scene/projection.h>
 #include <seamless/render/scene/render_options.h>
@@ -35,23 +36,6 @@
 #include <vector>
 
 namespace seamless {
-
-// SHADE for one ray at an exact hit (step 6's pixels and step 9's corner
-// rays). With secondary rays in play (ts not null), shadows, reflection and
-// refraction are traced against the triangles (section 7, SHADE); the local
-// illumination model is the same either way.
-std::array<double, 3> shade_hit(const ProjectedScene& ps, const Scene& scene,
-                                const TriangleScene* ts, const PixelHit& h);
-// The same at the hit's point P and normal N (camera coordinates,
-// surface_frame of projection.h) on patch `patch`; lit: as shade_ray's (trace.h).
-std::array<double, 3> shade_at(const ProjectedScene& ps, const Scene& scene,
-                               const TriangleScene* ts, int patch, Vec3 P, Vec3 N,
-                               const char* lit = nullptr);
-
-// A sub-screen's pixels, inclusive.
-struct PixelRect {
-    int x0, y0, x1, y1;
-};
 
 // What an attempt came to.
 struct ClusterAttemptResult {
@@ -78,9 +62,37 @@ class ClusterAttempt {
                                    RenderStats& st);
 
   private:
+    // B's marks and their subpatches.
+    struct MarkSpan {
+        const Mark* marks;
+        size_t n;
+        const SubpatchArena& coefs;
+    };
+    // Step 7's cluster: the nearest patch and its box, certified by
+    // certify(): every ray of B hits `patch` exactly once in `box`; e, world:
+    // the enclosures of the hits (camera and world coordinates) and of the
+    // patch's derivatives there.
+    struct Certified {
+        int patch = -1;
+        ParamBox box{};
+        PatchEnclosure e;
+        IVec3 world;
+    };
+    int nearest_patch(const Mark* marks, size_t n, ParamBox& box) const;
+    int certify(const PixelRect& B, const MarkSpan& m, Certified& c, RenderStats& st);
+    bool enclose_hits(const MarkSpan& m, Certified& c);
+    int nearest_cause(const MarkSpan& m, const Certified& c, Interval a, Interval b,
+                      RenderStats& st) const;
     int certificate_cause(const Mark* marks, size_t n) const;
-    bool corner_misses(const PixelRect& B, const Mark* marks, size_t n, int patch,
-                       const SubpatchArena& coefs, bool clip) const;
+    bool corner_misses(const PixelRect& B, const MarkSpan& m, int patch, bool clip) const;
+    bool second_order_corners(const PixelRect& B, const Certified& c, const ClusterShading& cs,
+                              PixelScratch& pixel, RenderStats& st, int& levels_over,
+                              std::array<double, 3> corner[4]);
+    void corner_rays(const PixelRect& B, const Certified& c, const std::array<Interval, 3>& I,
+                     PixelScratch& pixel, RenderStats& st, std::array<double, 3> corner[4]);
+    void paint_level(const PixelRect& B, const int lo[3]);
+    void paint_bilinear(const PixelRect& B, const std::array<double, 3> corner[4], const int lo[3],
+                        const int hi[3]);
 
     static constexpr long long kSecondOrderArea = 32; // smallest B for step 9's second order
 

@@ -83,6 +83,22 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
     rc.direction = dir;
     // q up to diag / |dir| carries every ray across the whole scene.
     rc.q = Interval(0.0, next_up(next_up(scene_diagonal_ / dmin) * 1.001));
+    const Covering cover = covering_triangle(rc, dmin, skip_patch);
+    if (cover.candidates == 0) { // step 3.3
+        const Vec3 bg = scene_.background;
+        for (int c = 0; c < 3; ++c) out[c] = Interval(bg[c]);
+        return true;
+    }
+    if (cover.triangle < 0 || other_before(rc, cover, skip_patch)) return false;
+    return shade_covered(rc, cover, depth, out);
+}
+
+// Step 3.4's candidate: the nearest triangle certainly met by every ray of rc
+// (q beyond twice the rays' start offset), and how many triangles may be met.
+ClusterShader::Covering ClusterShader::covering_triangle(const RayCluster& rc, double dmin,
+                                                         int skip_patch) const {
+    const IVec<3>& origin = rc.origin;
+    const IVec<3>& dir = rc.direction;
     const ClusterHull ch(rc);
     // The middle ray (midpoint origin and direction): a covering triangle
     // meets it at q > 2 ray_epsilon / dmin > 0, inside the triangle's box.
@@ -118,15 +134,16 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
                 cd = delta;
             }
         });
-    if (candidates == 0) { // step 3.3
-        const Vec3 bg = scene_.background;
-        for (int c = 0; c < 3; ++c) out[c] = Interval(bg[c]);
-        return true;
-    }
-    if (cover < 0) return false;
-    // Nearest: no other triangle may be met up to the covering one.
+    return {cover, candidates, cq, cb, cd};
+}
+
+// Whether a triangle other than the covering one may be met before it (the
+// covering triangle is then not the nearest q-connected set).
+bool ClusterShader::other_before(const RayCluster& rc, const Covering& c, int skip_patch) const {
+    const auto& M = ts_->tess.mesh;
+    const int cover = c.triangle;
     RayCluster before = rc;
-    before.q = Interval(0.0, cq.hi());
+    before.q = Interval(0.0, c.q.hi());
     const ClusterHull chb(before);
     bool other = false;
     visit_flat_candidates(
@@ -137,7 +154,18 @@ bool ClusterShader::secondary_cluster(const IVec<3>& origin, const IVec<3>& dir,
             other = may_hit_triangle(before, M.positions[tri[0]], M.positions[tri[1]],
                                      M.positions[tri[2]]);
         });
-    if (other) return false;
+    return other;
+}
+
+// Step 3.4: SHADE over the hull of the meeting points of rc's rays with the
+// covering triangle c, at recursion depth `depth`; false when a light is
+// undecided there, or the hit's own secondary clusters are.
+bool ClusterShader::shade_covered(const RayCluster& rc, const Covering& c, int depth,
+                                  std::array<Interval, 3>& out) {
+    const auto& M = ts_->tess.mesh;
+    const IVec<3>& origin = rc.origin;
+    const int cover = c.triangle;
+    const Interval cb = c.beta, cd = c.delta;
     const Material& hm = scene_.materials[ts_->triangle_material[cover]];
     const int hit_patch = ts_->triangle_patch[cover];
     // The meeting points and the interpolated normals over (beta, delta).
@@ -196,7 +224,7 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
         // A certain blocker is rare (one triangle must cover every ray), so
         // only the first kBlockerTries triangles that may meet the cluster are
         // tried, as blockers and then as seeds of a blocking surface
-        // (ray_cluster.h); after that the light is undecided (split B).
+        // (blocking_surface.h); after that the light is undecided (split B).
         bool maybe = false, blocked = false;
         int tries = 0;
         int seeds[kBlockerTries];
@@ -217,10 +245,11 @@ ClusterLights ClusterShader::lights(const IVec<3>& Pw, int patch, const Material
                 if (m == TriangleMeeting::covers && q.lo() > 0 && q.hi() < q_max) blocked = true;
             });
         for (int k = 0; k < tries && !blocked && neighbours_; ++k) {
-            blocked = pyramid_blocked_by_surface(light.position, Pw, q_max, seeds[k],
-                                                 ts_->tess.mesh.positions, ts_->tess.mesh.triangles,
-                                                 *neighbours_, ts_->triangle_patch, patch,
-                                                 kMaxBlockerSurface, surface_);
+            blocked =
+                pyramid_blocked_by_surface({light.position, Pw, q_max}, seeds[k],
+                                           {ts_->tess.mesh.positions, ts_->tess.mesh.triangles,
+                                            *neighbours_, ts_->triangle_patch},
+                                           patch, kMaxBlockerSurface, surface_);
             r.by_surface += blocked;
         }
         if (blocked) {

@@ -13,6 +13,7 @@
 #include <seamless/render/scene/render_options.h>
 #include <seamless/render/scene/render_stats.h>
 #include <seamless/render/shading/shading.h>
+#include <seamless/render/tray/blocking_surface.h>
 #include <seamless/render/tray/ray_cluster.h>
 #include <seamless/render/tray/trace.h>
 #include <seamless/spline/subpatch.h>
@@ -41,7 +42,7 @@ struct ClusterShading {
 struct ClusterLights {
     bool decided = true;
     int blocked = 0;    // lights certainly blocked for every point
-    int by_surface = 0; // of those, blocked by a surface of triangles (ray_cluster.h)
+    int by_surface = 0; // of those, blocked by a surface of triangles (blocking_surface.h)
 };
 
 class ClusterShader {
@@ -49,7 +50,7 @@ class ClusterShader {
     // ts: null when no secondary rays are in play. levels, dither: the
     // painting rule of step 9, to stop before tracing secondary clusters
     // when the local terms alone already span too many levels.
-    // neighbours: triangle_neighbours(ts->tess.mesh.triangles) (ray_cluster.h),
+    // neighbours: triangle_neighbours(ts->tess.mesh.triangles) (blocking_surface.h),
     // for lights blocked by a surface of triangles; null with ts null.
     ClusterShader(const ProjectedScene& ps, const Scene& scene, const TriangleScene* ts,
                   const std::vector<int>* neighbours, int levels, bool dither);
@@ -78,6 +79,16 @@ class ClusterShader {
                        int patch, int depth, std::array<Interval, 3>& I);
     bool secondary_cluster(const IVec<3>& origin, const IVec<3>& dir, int skip_patch, int depth,
                            std::array<Interval, 3>& out);
+    // secondary_cluster's covering triangle (-1: none) with its meeting
+    // parameters, and the count of triangles that may be met.
+    struct Covering {
+        int triangle = -1, candidates = 0;
+        Interval q, beta, delta;
+    };
+    Covering covering_triangle(const RayCluster& rc, double dmin, int skip_patch) const;
+    bool other_before(const RayCluster& rc, const Covering& c, int skip_patch) const;
+    bool shade_covered(const RayCluster& rc, const Covering& c, int depth,
+                       std::array<Interval, 3>& out);
 
     static constexpr int kBlockerTries = 4;         // per light and cluster (lights())
     static constexpr int kMaxBlockerSurface = 4096; // triangles of a blocking surface

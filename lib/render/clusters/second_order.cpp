@@ -66,40 +66,42 @@ double bilinear_error(const IntervalJet2& I, double wa, double wb) {
         .hi();
 }
 
-bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
-                      double a, double b, const ParamBox& box, const MarkJacobian& J,
-                      ClusterSystem& scratch, RenderStats& st, std::array<Interval, 3>& I) {
-    RaySystem sys(pp, a, b, scratch);
-    ParamBox hit;
-    Interval q;
-    if (!newton_hit(pp, a, b, box, sys, J, hit, q, st)) return false;
+bool corner_intensity(const CertifiedCluster& c, const ClusterLight& light, RVec<2> ab,
+                      const MarkJacobian& J, ClusterSystem& scratch, RenderStats& st,
+                      std::array<Interval, 3>& I) {
+    const ProjectedPatch& pp = c.pp;
+    const ParamBox& box = c.box;
+    RaySystem sys(pp, ab[0], ab[1], scratch);
+    CertifiedHit hit;
+    if (!newton_hit(sys, box, J, hit, st)) return false;
     ++st.primary_rays;
     V3<Interval> P, N;
-    corner_frame(pp.forms, hit, P, N);
-    I = shade<Interval>(lighting, mat, P, N, Vec3{});
+    corner_frame(pp.forms, hit.box, P, N);
+    I = shade<Interval>(light.lighting, light.mat, P, N, Vec3{});
     return I[0].is_finite() && I[1].is_finite() && I[2].is_finite();
 }
 
-std::array<IntervalJet2, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
-                                           const Material& mat, const ClusterSystem& sys,
-                                           const ParamBox& box, const PatchEnclosure& e,
+std::array<IntervalJet2, 3> intensity_jets(const CertifiedCluster& c, const ClusterLight& light,
                                            const IMat<2>& A, Interval a, Interval b) {
     V3<IntervalJet2> P, N;
-    if (!surface_jets(pp.forms, sys, box, e, A, a, b, P, N)) {
+    if (!surface_jets(c, A, a, b, P, N)) {
         const IntervalJet2 any = unit_range(IntervalJet2());
         return {any, any, any};
     }
-    return shade<IntervalJet2>(lighting, mat, P, N, Vec3{});
+    return shade<IntervalJet2>(light.lighting, light.mat, P, N, Vec3{});
 }
 
-SecondOrder second_order(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
-                         const ParamBox& box, const PatchEnclosure& e, const ClusterSystem& sys,
-                         const double ca[2], const double cb[2], int levels, bool dither,
-                         ClusterSystem& scratch, RenderStats& st) {
+SecondOrder second_order(const CertifiedCluster& cluster, const ClusterLight& light,
+                         const CornerPixels& corners, PaintRule rule, ClusterSystem& scratch,
+                         RenderStats& st) {
+    const double* ca = corners.a;
+    const double* cb = corners.b;
+    const int levels = rule.levels;
+    const bool dither = rule.dither;
     SecondOrder r;
     const Interval a = Interval::hull(ca[0], ca[1]), b = Interval::hull(cb[0], cb[1]);
-    const MarkJacobian J = mark_jacobian(sys, box);
-    const std::array<IntervalJet2, 3> I = intensity_jets(pp, lighting, mat, sys, box, e, J.A, a, b);
+    const MarkJacobian J = mark_jacobian(cluster.sys, cluster.box);
+    const std::array<IntervalJet2, 3> I = intensity_jets(cluster, light, J.A, a, b);
     const double wa = (Interval(ca[1]) - Interval(ca[0])).mag();
     const double wb = (Interval(cb[1]) - Interval(cb[0])).mag();
     const double limit = dither ? 0.5 : 1.0;
@@ -116,7 +118,7 @@ SecondOrder second_order(const ProjectedPatch& pp, const Scene& lighting, const 
     double corner_rad[3] = {0, 0, 0};
     for (int k = 0; k < 4; ++k) {
         std::array<Interval, 3> Ic;
-        if (!corner_intensity(pp, lighting, mat, ca[k & 1], cb[k >> 1], box, J, scratch, st, Ic))
+        if (!corner_intensity(cluster, light, RVec<2>{ca[k & 1], cb[k >> 1]}, J, scratch, st, Ic))
             return r;
         for (int c = 0; c < 3; ++c) {
             r.corner[k][c] = Ic[c].mid();

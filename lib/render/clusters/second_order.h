@@ -31,7 +31,7 @@
 //                  + min(r_b W_b / 2, M_b W_b^2 / 8).
 // The second-order parts converge to |I_aa| and |I_bb| as B shrinks, while
 // interval arithmetic overestimates r by the width of the gradient's enclosure
-// (6 to 100 times the sampled variation on the teapot: render.md, fifth round).
+// (many times the sampled variation: docs/results/render.md).
 //
 // The painted level. With n levels, I' = I (n - 1), the painted value is
 // V = L~ (n - 1) from corner values L~ that enclose the true corner
@@ -66,23 +66,28 @@ namespace seamless {
 // intensity jet I; wa, wb: W_a, W_b.
 double bilinear_error(const IntervalJet2& I, double wa, double wb);
 
-// The certified intensity of one corner ray of a cluster (the ray through
-// screen point (a, b), hitting patch pp exactly once in `box`): the hit
+// What a cluster's rays see: the ambient and the lights that reach every ray
+// of B (camera coordinates), and the patch's material.
+struct ClusterLight {
+    const Scene& lighting;
+    const Material& mat;
+};
+
+// The certified intensity of one corner ray of cluster c (the ray through
+// screen point (a, b), hitting c.pp exactly once in c.box): the hit
 // certified by newton_hit (certified_newton.h) on a small box, SHADE over that box.
-// J: the Jacobian over box for every ray of B. false when not certified.
-bool corner_intensity(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
-                      double a, double b, const ParamBox& box, const MarkJacobian& J,
-                      ClusterSystem& scratch, RenderStats& st, std::array<Interval, 3>& I);
+// J: the Jacobian over c.box for every ray of B. false when not certified.
+bool corner_intensity(const CertifiedCluster& c, const ClusterLight& light, RVec<2> ab,
+                      const MarkJacobian& J, ClusterSystem& scratch, RenderStats& st,
+                      std::array<Interval, 3>& I);
 
 // The intensity of the rays of a cluster as second-order jets over B:
 // shade<IntervalJet2> (shading.h) at the jets of surface_jets.h; [0, 1] with
-// entire partials where those are undecided. sys: B's cluster system.
+// entire partials where those are undecided; A, a, b as surface_jets'.
 // (Splitting `box` into 3 x 3 parts and taking the hull of their first-order
 // jets narrowed the first-order bound a little but cost more than it saved:
-// docs/results/render.md, fifth round.)
-std::array<IntervalJet2, 3> intensity_jets(const ProjectedPatch& pp, const Scene& lighting,
-                                           const Material& mat, const ClusterSystem& sys,
-                                           const ParamBox& box, const PatchEnclosure& e,
+// docs/results/render.md.)
+std::array<IntervalJet2, 3> intensity_jets(const CertifiedCluster& c, const ClusterLight& light,
                                            const IMat<2>& A, Interval a, Interval b);
 
 // The second-order test of a cluster whose plain step 9 failed on span.
@@ -92,30 +97,40 @@ struct SecondOrder {
     double error_levels = 0;         // e of the comment above (in levels), the widest channel
     std::array<double, 3> bound{};   // |I - L| over B per channel (intensity)
 };
-// pp, box, sys: the certified cluster (box contracted by certify_cluster, sys
-// its cluster system); e: enclose(pp.forms, box); lighting: the lights that reach every ray of B
-// (camera coordinates), mat: the patch's material; ca, cb: screen coordinates of B's first and last
-// pixel column and row.
-SecondOrder second_order(const ProjectedPatch& pp, const Scene& lighting, const Material& mat,
-                         const ParamBox& box, const PatchEnclosure& e, const ClusterSystem& sys,
-                         const double ca[2], const double cb[2], int levels, bool dither,
-                         ClusterSystem& scratch, RenderStats& st);
+// B's corner pixels: the screen coordinates of its first and last pixel
+// column (a) and row (b).
+struct CornerPixels {
+    double a[2], b[2];
+};
+// Step 9's painting rule: the image's levels, and whether it dithers.
+struct PaintRule {
+    int levels;
+    bool dither;
+};
+// c: the certified cluster (box contracted by certify_cluster); light: what its rays see.
+SecondOrder second_order(const CertifiedCluster& c, const ClusterLight& light,
+                         const CornerPixels& corners, PaintRule rule, ClusterSystem& scratch,
+                         RenderStats& st);
 
-// Step 9's painted level at fractions (fx, fy) between B's corner pixels: the
-// bilinear form of the corner intensities (row by row: (x0, y0), (x1, y0),
-// (x0, y1), (x1, y1)) plus dither d, rounded and kept within [lo, hi].
-inline int bilinear_level(const std::array<double, 3> corner[4], int c, double fx, double fy,
-                          double d, int levels, int lo, int hi) {
-    const double v = (1 - fy) * ((1 - fx) * corner[0][c] + fx * corner[1][c]) +
-                     fy * ((1 - fx) * corner[2][c] + fx * corner[3][c]);
-    // std::lround without the library call: for x > 0 the truncation is the
-    // floor and x - floor(x) is exact, so this rounds halves away from zero
-    // too; x <= 0 gives 0 where lround gives 0 or less, the same after the
-    // clamp to [lo, hi] (lo >= 0).
-    const double x = clamp01(v) * (levels - 1) + d;
-    long level = x > 0 ? static_cast<long>(x) : 0;
-    if (x - static_cast<double>(level) >= 0.5) ++level;
-    return static_cast<int>(std::clamp<long>(level, lo, hi));
-}
+// Step 9's bilinear form of B's corner intensities (corner[0..3], row by row:
+// (x0, y0), (x1, y0), (x0, y1), (x1, y1)), painted with `levels` levels.
+struct BilinearForm {
+    const std::array<double, 3>* corner;
+    int levels;
+    // Channel c's painted level at fractions (fx, fy) between B's corner
+    // pixels: the form plus dither d, rounded and kept within [lo, hi].
+    int level(int c, double fx, double fy, double d, int lo, int hi) const {
+        const double v = (1 - fy) * ((1 - fx) * corner[0][c] + fx * corner[1][c]) +
+                         fy * ((1 - fx) * corner[2][c] + fx * corner[3][c]);
+        // std::lround without the library call: for x > 0 the truncation is the
+        // floor and x - floor(x) is exact, so this rounds halves away from zero
+        // too; x <= 0 gives 0 where lround gives 0 or less, the same after the
+        // clamp to [lo, hi] (lo >= 0).
+        const double x = clamp01(v) * (levels - 1) + d;
+        long level = x > 0 ? static_cast<long>(x) : 0;
+        if (x - static_cast<double>(level) >= 0.5) ++level;
+        return static_cast<int>(std::clamp<long>(level, lo, hi));
+    }
+};
 
 } // namespace seamless

@@ -4,10 +4,15 @@
 namespace seamless {
 namespace {
 
+// A function F over the box and its partials along s and t up to second order.
+struct Partials2 {
+    Interval F, Fs, Ft, Fss, Fst, Ftt;
+};
+
 // F(s(a, b), t(a, b)) from F and its partials along s and t over the box
 // (chain rule to second order).
-IntervalJet2 compose(Interval F, Interval Fs, Interval Ft, Interval Fss, Interval Fst, Interval Ftt,
-                     const IntervalJet2& s, const IntervalJet2& t) {
+IntervalJet2 compose(const Partials2& p, const IntervalJet2& s, const IntervalJet2& t) {
+    const Interval F = p.F, Fs = p.Fs, Ft = p.Ft, Fss = p.Fss, Fst = p.Fst, Ftt = p.Ftt;
     const Interval two(2.0);
     return {
         F,
@@ -25,9 +30,12 @@ template <class T> V3<T> cross3(const V3<T>& u, const V3<T>& w) {
 
 } // namespace
 
-bool surface_jets(const PatchForms& f, const ClusterSystem& sys, const ParamBox& box,
-                  const PatchEnclosure& e, const IMat<2>& A, Interval a, Interval b,
+bool surface_jets(const CertifiedCluster& c, const IMat<2>& A, Interval a, Interval b,
                   V3<IntervalJet2>& P, V3<IntervalJet2>& N) {
+    const PatchForms& f = c.pp.forms;
+    const ClusterSystem& sys = c.sys;
+    const ParamBox& box = c.box;
+    const PatchEnclosure& e = c.e;
     const Interval det = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
     if (det.contains(0.0)) return false;
     // First partials of (s, t): A^-1 (Z, 0) and A^-1 (0, Z), Z = X_2 (times W).
@@ -68,8 +76,8 @@ bool surface_jets(const PatchForms& f, const ClusterSystem& sys, const ParamBox&
     IntervalJet2* ps[3] = {&Ps.x, &Ps.y, &Ps.z};
     IntervalJet2* pt[3] = {&Pt.x, &Pt.y, &Pt.z};
     for (int c = 0; c < 3; ++c) {
-        *ps[c] = compose(e.ds[c], d2.ss[c], d2.st[c], d3.sss[c], d3.sst[c], d3.stt[c], s, t);
-        *pt[c] = compose(e.dt[c], d2.st[c], d2.tt[c], d3.sst[c], d3.stt[c], d3.ttt[c], s, t);
+        *ps[c] = compose({e.ds[c], d2.ss[c], d2.st[c], d3.sss[c], d3.sst[c], d3.stt[c]}, s, t);
+        *pt[c] = compose({e.dt[c], d2.st[c], d2.tt[c], d3.sst[c], d3.stt[c], d3.ttt[c]}, s, t);
     }
     N = cross3(Ps, Pt);
     N.x.v = intersect(N.x.v, e.normal[0]);

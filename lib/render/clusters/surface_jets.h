@@ -28,6 +28,7 @@
 #pragma once
 
 #include <seamless/interval/interval_matrix.h>
+#include <seamless/render/scene/projection.h>
 #include <seamless/render/shading/interval_jet2.h>
 #include <seamless/render/shading/shading.h>
 #include <seamless/render/subscreen/primary_cluster.h>
@@ -35,12 +36,20 @@
 
 namespace seamless {
 
-// f: the patch's forms; sys: the cluster system of B (cluster_system(f, a, b));
-// box: its certified parameter box; e: enclose(f, box); A: the interval
-// Jacobian of G over box for every ray of B; a, b: B's screen coordinates (the
-// hull of its pixels' centres). false when A's enclosed determinant may vanish.
-bool surface_jets(const PatchForms& f, const ClusterSystem& sys, const ParamBox& box,
-                  const PatchEnclosure& e, const IMat<2>& A, Interval a, Interval b,
+// A certified cluster B (step 7): every ray of B hits patch pp exactly once
+// in `box`; sys: B's cluster system (cluster_system(pp.forms, a, b)); e:
+// enclose(pp.forms, box).
+struct CertifiedCluster {
+    const ProjectedPatch& pp;
+    const ParamBox& box;
+    const PatchEnclosure& e;
+    const ClusterSystem& sys;
+};
+
+// A: the interval Jacobian of G over c.box for every ray of B; a, b: B's
+// screen coordinates (the hull of its pixels' centres). false when A's
+// enclosed determinant may vanish.
+bool surface_jets(const CertifiedCluster& c, const IMat<2>& A, Interval a, Interval b,
                   V3<IntervalJet2>& P, V3<IntervalJet2>& N);
 
 } // namespace seamless

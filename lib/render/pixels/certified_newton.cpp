@@ -106,9 +106,7 @@ Interval depth_over(const ProjectedPatch& pp, const ParamBox& hit, double cs, do
 // Newton's step on the homogeneous system G = (X - a Z, Y - b Z) (the same
 // zeros as on X / W, W > 0): bicubic, biquadratic and bilinear patches by
 // ray_system_fixed, without the quotient rule and with the sums over two
-// combined coordinates (teapot 640x480 x 16: paint_pixels 423.7 -> 405.0 M
-// instructions, PNGs byte-identical; Newton's point only steers, the
-// certificate is below).
+// combined coordinates (Newton's point only steers, the certificate is below).
 [[gnu::always_inline]] inline bool ray_step(const BezierPatch& p, double a, double b, double& s,
                                             double& t, double& step) {
     RaySystemAt g;
@@ -207,15 +205,19 @@ bool krawczyk_hit(const MarkJacobian& J, const IVec<2>& Gc, const IVec<2>& Y, co
     return true;
 }
 
-bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
-                const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
-                const double* start, const SurfacePoint* at_start, NewtonFrame* frame) {
+bool newton_hit(RaySystem& sys, const ParamBox& box, const MarkJacobian& J, CertifiedHit& out,
+                RenderStats& st, NewtonStart from, NewtonFrame* frame) {
+    const ProjectedPatch& pp = sys.patch();
+    const double a = sys.a(), b = sys.b();
+    const double* start = from.st;
+    const SurfacePoint* at_start = from.at;
+    ParamBox& hit = out.box;
+    Interval& q = out.q;
     // At most one zero in box when A is regular: Newton in doubles from
     // `start` or the box's centre; a run whose step leaves the box (mostly
     // the ray passing beside the patch) stops there, and the ray goes on to
-    // the miss proof and the clip. (It stopped after three such steps in a
-    // row, each clamped to the box: teapot 640x480 x 16 paint_pixels 497.4 ->
-    // 486.4 M instructions stopping at the first, with PNGs byte-identical.)
+    // the miss proof and the clip (rather than after a few steps clamped to
+    // the box, which mostly lead nowhere).
     if (!J.regular) return false;
     double s = box.s.mid(), t = box.t.mid(), step = 1;
     if (start) {
@@ -277,12 +279,12 @@ bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& bo
     return true;
 }
 
-NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                               RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
-                               const MarkJacobian* given, ParamBox* rest, const double* start) {
+NewtonOutcome newton_certified(RaySystem& sys, const ParamBox& box, CertifiedHit& hit,
+                               RenderStats& st, const MarkJacobian* given, ParamBox* rest,
+                               const double* start) {
     MarkJacobian own;
     const MarkJacobian& J = given ? *given : (own = mark_jacobian(sys.forms(), box));
-    if (newton_hit(pp, a, b, box, sys, J, hit, q, st, start)) return NewtonOutcome::hit;
+    if (newton_hit(sys, box, J, hit, st, {start, nullptr})) return NewtonOutcome::hit;
     ParamBox part;
     if (!may_hold_zero(sys, J, box, part, st)) return NewtonOutcome::miss;
     if (rest) *rest = part;
@@ -317,7 +319,7 @@ bool newton_in_box(const BezierPatch& patch, double a, double b, const ParamBox&
     // 12 steps at most; 1e-9: a step this small near the regular zero (the
     // certificate's Jacobian is regular on box) leaves an error of its
     // square's order (1e-12 cost one more evaluation per pixel for the same
-    // images: teapot 640x480 x 16 1.640 -> 1.630 G instructions). Or a step
+    // images). Or a step
     // d <= 1e-5 whose successor k d^2 would be below 1e-12: the point is then
     // that close to the zero, closer than a single pixel's shading point (the
     // middle of newton_hit's Krawczyk box, inside a 2e-9 wide box). k from a

@@ -52,6 +52,10 @@ class RaySystem {
     IVec<2> at(const Interval* X) const;
     // The power forms of G, G_s, G_t, built on the first call.
     const ClusterSystem& forms();
+    // The ray's patch and screen point.
+    const ProjectedPatch& patch() const { return pp_; }
+    double a() const { return a_; }
+    double b() const { return b_; }
 
   private:
     const ProjectedPatch& pp_;
@@ -81,7 +85,7 @@ struct MarkJacobian {
     }
 };
 MarkJacobian mark_jacobian(const ClusterSystem& sys, const ParamBox& box);
-// The same from a Jacobian enclosed otherwise (subpatch_jacobian of primary_cluster.h).
+// The same from a Jacobian enclosed otherwise (subpatch_jacobian of bezier_clip.h).
 MarkJacobian mark_jacobian(const IMat<2>& A);
 
 // Krawczyk's test on a small box Y about a point c of Y with J regular over a
@@ -96,15 +100,19 @@ bool krawczyk_hit(const MarkJacobian& J, const IVec<2>& Gc, const IVec<2>& Y, co
 
 // The certified Newton solve above for the ray through screen point (a, b) and
 // patch pp in `box`; sys: the ray's system (RaySystem(pp, a, b, ...)). hit: exactly one hit
-// in box, in `hit` (local (s, t)), at depth `q` (camera z, enclosed); miss: certainly none in box
+// in box, in `hit` (hit.box: local (s, t); hit.q: camera z, enclosed); miss: certainly none in box
 // (a Hansen-Sengupta step over the box is empty, Theorem 6 ii); undecided: take the covering
 // method. J: the Jacobian over box for a sub-screen holding the ray (computed here when null).
 // rest: when undecided, the part of box that may hold hits (Theorem 6 i). start: where
 // Newton starts (clamped into box; null: box's centre).
 enum class NewtonOutcome { hit, miss, undecided };
-// The hit part alone: true (with hit and q as above) when J is regular and
+struct CertifiedHit {
+    ParamBox box; // holds exactly one zero of G
+    Interval q;   // camera depth over box
+};
+// The hit part alone: true (with hit as above) when J is regular and
 // Newton's result is certified; false leaves the ray undecided in box.
-// at_start: evaluate(pp.patch, start) when known (the first step then evaluates nothing).
+// start.at: evaluate(pp.patch, start.st) when known (the first step then evaluates nothing).
 // frame (optional): Newton's point (s, t) and the patch there (point and
 // partial derivatives), from the evaluation that encloses G there for the
 // certificate (enclose_homogeneous of bezier_patch.h): for the shading and
@@ -113,20 +121,21 @@ struct NewtonFrame {
     double s = 0, t = 0;
     SurfacePoint at{};
 };
-bool newton_hit(const ProjectedPatch& pp, double a, double b, const ParamBox& box, RaySystem& sys,
-                const MarkJacobian& J, ParamBox& hit, Interval& q, RenderStats& st,
-                const double* start = nullptr, const SurfacePoint* at_start = nullptr,
-                NewtonFrame* frame = nullptr);
+struct NewtonStart {
+    const double* st = nullptr;       // (s, t); null: the box's centre
+    const SurfacePoint* at = nullptr; // the patch evaluated there; null: unknown
+};
+bool newton_hit(RaySystem& sys, const ParamBox& box, const MarkJacobian& J, CertifiedHit& hit,
+                RenderStats& st, NewtonStart start = {}, NewtonFrame* frame = nullptr);
 // The part after Newton: false when one Hansen-Sengupta step with J over box
 // proves that the ray meets the patch nowhere in box (Theorem 6 ii); else
 // rest receives the part of box holding every hit (Theorem 6 i). Xc: X, Y, Z
 // at box's centre, enclosed, when known (SharedMarks::centre); else computed.
 bool may_hold_zero(const RaySystem& sys, const MarkJacobian& J, const ParamBox& box, ParamBox& rest,
                    RenderStats& st, const Interval* Xc = nullptr);
-NewtonOutcome newton_certified(const ProjectedPatch& pp, double a, double b, const ParamBox& box,
-                               RaySystem& sys, ParamBox& hit, Interval& q, RenderStats& st,
-                               const MarkJacobian* J = nullptr, ParamBox* rest = nullptr,
-                               const double* start = nullptr);
+NewtonOutcome newton_certified(RaySystem& sys, const ParamBox& box, CertifiedHit& hit,
+                               RenderStats& st, const MarkJacobian* J = nullptr,
+                               ParamBox* rest = nullptr, const double* start = nullptr);
 
 // One Newton step for X - aZ = 0, Y - bZ = 0 from (s, t) in doubles, sp: the
 // patch evaluated at (s, t); step: |ds| + |dt|. false where the Jacobian is singular.

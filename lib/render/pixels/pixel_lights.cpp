@@ -2,7 +2,6 @@
 #include <seamless/render/pixels/pixel_lights.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 namespace seamless {

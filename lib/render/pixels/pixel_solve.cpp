@@ -25,9 +25,22 @@ struct Nearest {
     }
 };
 
+// One ray's solve: the ray through screen point (a, b), its scene, scratch
+// and counters, and its nearest hit so far.
+struct RaySolve {
+    const ProjectedScene& ps;
+    double a, b;
+    PixelScratch& scratch;
+    RenderStats& st;
+    Nearest near;
+};
+
 // The covering method of ray_patch.h on a box still undecided.
-void cover(const ProjectedPatch& pp, double a, double b, const ParamBox& box, int patch,
-           PixelScratch& scratch, RenderStats& st, Nearest& near) {
+void cover(RaySolve& r, const ProjectedPatch& pp, const ParamBox& box, int patch) {
+    const double a = r.a, b = r.b;
+    PixelScratch& scratch = r.scratch;
+    RenderStats& st = r.st;
+    Nearest& near = r.near;
     scratch.hits.clear();
     RayPatchStats rs;
     intersect(pp.forms, ProjectedScene::primary_ray(a, b), box, scratch.hits, RayPatchOptions{},
@@ -40,13 +53,15 @@ void cover(const ProjectedPatch& pp, double a, double b, const ParamBox& box, in
 // A mark's box (or the part of it a clip left): certified Newton; where
 // undecided, on the part the Hansen-Sengupta step leaves or its halves (a
 // covering method with the cheap test, Jacobians from the ray's power forms),
-// and the full covering method only on boxes still undecided at depth 8 (depth
-// 6: teapot 640x480 x 16 paint_pixels 452.6 M, 8: 449.2 M, 12 and 16: 448.7 M;
-// 8 keeps the worst case at 256 boxes). J and start: the Jacobian over `box`
+// and the full covering method only on boxes still undecided at depth 8
+// (deeper saved little; 8 keeps the worst case at 256 boxes). J and start: the Jacobian over `box`
 // and Newton's start for the first step, when known.
-void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box0, int patch,
-               PixelScratch& scratch, RenderStats& st, Nearest& near,
+void solve_box(RaySolve& r, const ProjectedPatch& pp, const ParamBox& box0, int patch,
                const MarkJacobian* J = nullptr, const double* start = nullptr) {
+    const double a = r.a, b = r.b;
+    PixelScratch& scratch = r.scratch;
+    RenderStats& st = r.st;
+    Nearest& near = r.near;
     RaySystem sys(pp, a, b, scratch.sys, scratch.sys_of);
     ++near.best.candidates;
     ++st.pixel_patch_solves;
@@ -57,8 +72,7 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
     while (!todo.empty()) {
         const auto [popped, depth] = todo.back();
         todo.pop_back();
-        ParamBox hb;
-        Interval q;
+        CertifiedHit hit;
         const bool first = depth == 0;
         // Below the first box, the shared Jacobian (enclosed over a box
         // holding this one, so over this one too) where it is regular; a
@@ -68,9 +82,7 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
         // A shared Jacobian that is not regular still proves misses and
         // contracts the box to where the hits may be (Theorem 6 ii and i hold
         // for any enclosure of G'): its step comes before the fresh
-        // Jacobian, which is enclosed over the smaller box (teapot 640x480 x
-        // 16: paint_pixels 434.2 -> 427.8 M instructions, PNG byte-identical;
-        // the miss proof alone, over the whole box: 432.1 M).
+        // Jacobian, which is enclosed over the smaller box.
         ParamBox box = popped;
         if (J && !shared && J->preconditioned) {
             if (!may_hold_zero(sys, *J, popped, box, st)) {
@@ -79,23 +91,22 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
             }
         }
         ParamBox rest = box;
-        NewtonOutcome nc = newton_certified(pp, a, b, box, sys, hb, q, st, shared ? J : nullptr,
-                                            &rest, first ? start : nullptr);
+        NewtonOutcome nc = newton_certified(sys, box, hit, st, shared ? J : nullptr, &rest,
+                                            first ? start : nullptr);
         if (nc == NewtonOutcome::undecided && !first && shared &&
             !(rest.s.width() * rest.t.width() < 0.25 * box.s.width() * box.t.width())) {
             const ParamBox part = rest; // every zero in box is here
-            nc = newton_certified(pp, a, b, part, sys, hb, q, st, nullptr, &rest);
+            nc = newton_certified(sys, part, hit, st, nullptr, &rest);
         }
         if (nc != NewtonOutcome::undecided) {
             ++st.pixel_newton_certified;
-            if (nc == NewtonOutcome::hit) near.take(patch, hb, q);
+            if (nc == NewtonOutcome::hit) near.take(patch, hit.box, hit.q);
             continue;
         }
         if (depth < kDepth) {
             // The zeros lie in the Hansen-Sengupta step's box: a box it
             // shrank to below half its area is tried again whole, another one
-            // is halved. (Below a quarter: teapot 640x480 x 16 paint_pixels
-            // 457.2 M; a tenth 466.0 M, a half 452.6 M, 0.75 452.6 M, 0.9 454.3 M.)
+            // is halved (a half took the fewest instructions of the thresholds tried).
             if (rest.s.width() * rest.t.width() < 0.5 * box.s.width() * box.t.width()) {
                 todo.push_back({rest, depth + 1});
                 continue;
@@ -114,7 +125,7 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
             todo.push_back({lo, depth + 1});
             continue;
         }
-        cover(pp, a, b, box, patch, scratch, st, near);
+        cover(r, pp, box, patch);
     }
 }
 
@@ -124,9 +135,12 @@ void solve_box(const ProjectedPatch& pp, double a, double b, const ParamBox& box
 // the ray's own clip of the mark's subpatch (a certain miss, or a smaller box)
 // and solve_box there. (Bezier clipping all the way down, restricting the
 // subpatch for the one ray, was tried instead of solve_box: fewer
-// Hansen-Sengupta steps, but 8% more instructions for the whole render.)
-void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks& shared, size_t k,
-                       PixelScratch& scratch, RenderStats& st, Nearest& near) {
+// Hansen-Sengupta steps, but more instructions for the whole render.)
+void solve_shared_mark(RaySolve& r, SharedMarks& shared, size_t k) {
+    const double a = r.a, b = r.b;
+    PixelScratch& scratch = r.scratch;
+    RenderStats& st = r.st;
+    Nearest& near = r.near;
     if (shared.refine(k)) {
         // Mark k is now one half, the last mark the other (for the later
         // pixels of B too): this ray is solved on each that it may meet and
@@ -135,30 +149,28 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
         for (const size_t j : halves) {
             const Mark& h = shared.marks()[j];
             if (shared.may_meet_ray(j, a, b) && !(h.hull[2].lo() > near.best_q))
-                solve_shared_mark(ps, a, b, shared, j, scratch, st, near);
+                solve_shared_mark(r, shared, j);
         }
         return;
     }
     const Mark& mark = shared.marks()[k];
-    const ProjectedPatch& pp = ps.patches[mark.patch];
+    const ProjectedPatch& pp = r.ps.patches[mark.patch];
     const MarkJacobian& J = shared.jacobian(k);
     ParamBox rest = mark.box;
     // After a ray that missed this mark, the miss proof below (the
     // Hansen-Sengupta step over the box) comes before Newton: the same step
     // on the same box as after it, so the outcome is the same either way (a
     // proved miss leaves no hit to certify), without Newton's wasted run
-    // beside the patch. Teapot 640x480 x 16: 852 -> 842 M in paint_pixels.
+    // beside the patch.
     bool held = false; // the Hansen-Sengupta step over the box ran and left `rest`
     RaySystem sys(pp, a, b, scratch.sys, scratch.sys_of);
     if (shared.missed(k) && J.regular) {
         if (!may_hold_zero(sys, J, mark.box, rest, st, shared.centre(k))) return;
         held = true;
     }
-    ParamBox hb;
-    Interval q;
+    CertifiedHit hit;
     NewtonFrame at;
-    if (newton_hit(pp, a, b, mark.box, sys, J, hb, q, st, shared.start(k), shared.at_start(k),
-                   &at)) {
+    if (newton_hit(sys, mark.box, J, hit, st, {shared.start(k), shared.at_start(k)}, &at)) {
         ++near.best.candidates;
         ++st.pixel_patch_solves;
         ++st.pixel_newton_certified;
@@ -166,7 +178,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
         // evaluation gave the patch's frame too (the shading's: paint_pixels).
         shared.hit(k, at.s, at.t);
         shared.evaluated(k, at.s, at.t, at.at);
-        near.take(mark.patch, hb, q, static_cast<int>(k));
+        near.take(mark.patch, hit.box, hit.q, static_cast<int>(k));
         return;
     }
     // Newton left the box (the ray passes beside this part of the patch):
@@ -188,8 +200,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     ParamBox box;
     // Where the Hansen-Sengupta step shrank the box well (below a quarter),
     // solve_box starts on its box without the clip of the mark's whole
-    // subpatch (teapot 640x480 x 16: paint_pixels 484.7 -> 457.2 M; a
-    // tenth: 458.0 M, a half: 466.4 M, always: 514.6 M).
+    // subpatch (a quarter took the fewest instructions of the thresholds tried).
     if (rest.s.width() * rest.t.width() < 0.25 * mark.box.s.width() * mark.box.t.width()) {
         box = rest;
     } else {
@@ -198,7 +209,7 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     }
     if (box.s.is_empty() || box.t.is_empty()) return;
     const PixelHit before = near.best;
-    solve_box(pp, a, b, box, mark.patch, scratch, st, near, &J, shared.start(k));
+    solve_box(r, pp, box, mark.patch, &J, shared.start(k));
     if (near.best.patch == mark.patch &&
         (before.patch != mark.patch || before.s != near.best.s || before.t != near.best.t)) {
         shared.hit(k, near.best.s, near.best.t);
@@ -206,45 +217,44 @@ void solve_shared_mark(const ProjectedScene& ps, double a, double b, SharedMarks
     }
 }
 
-// A mark without a subpatch at hand: solve_box on its box.
-void solve_mark(const ProjectedScene& ps, double a, double b, const Mark& mark,
-                PixelScratch& scratch, RenderStats& st, Nearest& near) {
-    solve_box(ps.patches[mark.patch], a, b, mark.box, mark.patch, scratch, st, near);
-}
-
 } // namespace
 
-PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                     PixelScratch& scratch, RenderStats& st, SharedMarks* shared) {
+PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, std::span<const Mark> marks,
+                     PixelScratch& scratch, RenderStats& st) {
     // Nearest first; once a hit is found, marks that lie entirely beyond it are
     // dropped (section 5, remark 2 after Theorem 10). The ray's q is depth Z.
     scratch.sys_of = {};
-    Nearest near;
-    if (shared) {
-        // The marks in the sub-screen's depth order, those the ray may meet:
-        // the same sequence as sorting those alone (teapot 640x480 x 16:
-        // paint_pixels 449.2 -> 438.7 M instructions, PNG byte-identical).
-        // Refines during the walk change only marks already visited (and
-        // append halves, which that mark's solve handles).
-        for (const auto& [zlo, k] : shared->depth_order()) {
-            if (zlo > near.best_q) break;
-            if (shared->may_meet_ray(k, a, b))
-                solve_shared_mark(ps, a, b, *shared, k, scratch, st, near);
-        }
-        if (near.best.candidates > 0) ++st.primary_rays;
-        return near.best;
-    }
+    RaySolve r{ps, a, b, scratch, st, {}};
     auto& order = scratch.order;
     order.clear();
-    for (size_t k = 0; k < n; ++k) order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
-    if (order.empty()) return near.best;
+    for (size_t k = 0; k < marks.size(); ++k)
+        order.push_back({marks[k].hull[2].lo(), static_cast<int>(k)});
+    if (order.empty()) return r.near.best;
     std::sort(order.begin(), order.end());
     for (const auto& [zlo, k] : order) {
-        if (zlo > near.best_q) break;
-        solve_mark(ps, a, b, marks[k], scratch, st, near);
+        if (zlo > r.near.best_q) break;
+        // A mark without a subpatch at hand: solve_box on its box.
+        const Mark& mark = marks[k];
+        solve_box(r, ps.patches[mark.patch], mark.box, mark.patch);
     }
     ++st.primary_rays;
-    return near.best;
+    return r.near.best;
+}
+
+PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, SharedMarks& shared,
+                     PixelScratch& scratch, RenderStats& st) {
+    scratch.sys_of = {};
+    RaySolve r{ps, a, b, scratch, st, {}};
+    // The marks in the sub-screen's depth order, those the ray may meet:
+    // the same sequence as sorting those alone, without a sort per ray.
+    // Refines during the walk change only marks already visited (and
+    // append halves, which that mark's solve handles).
+    for (const auto& [zlo, k] : shared.depth_order()) {
+        if (zlo > r.near.best_q) break;
+        if (shared.may_meet_ray(k, a, b)) solve_shared_mark(r, shared, k);
+    }
+    if (r.near.best.candidates > 0) ++st.primary_rays;
+    return r.near.best;
 }
 
 } // namespace seamless

@@ -26,6 +26,7 @@
 
 #include <array>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -54,10 +55,12 @@ struct PixelScratch {
 
 // Step 6 with remark 1: the nearest intersection of the ray through (a, b)
 // with the marked patches, nearest marks first; marks beyond a found hit are
-// dropped (section 5, remark 2 after Theorem 10). shared: when given, the
-// marks are a small sub-screen's (marks and n are ignored): each is compared
-// with the ray by hull, then solved as the comment at the top says.
-PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, const Mark* marks, size_t n,
-                     PixelScratch& scratch, RenderStats& st, SharedMarks* shared = nullptr);
+// dropped (section 5, remark 2 after Theorem 10).
+PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, std::span<const Mark> marks,
+                     PixelScratch& scratch, RenderStats& st);
+// The same on a small sub-screen's shared marks: each is compared with the
+// ray by hull, then solved as the comment at the top says.
+PixelHit solve_pixel(const ProjectedScene& ps, double a, double b, SharedMarks& shared,
+                     PixelScratch& scratch, RenderStats& st);
 
 } // namespace seamless

@@ -39,9 +39,8 @@ struct Image {
     // Every pixel level 0, background.
     Image(int w, int h, int lv) : Image(w, h, lv, Unfilled{}) { clear(0, 0, w - 1, h - 1); }
     // Pixels unwritten: the caller clears or paints every one (render_intracy
-    // clears each part in its worker: the image's fresh pages, 2.1 MB at
-    // 640x480 and ~12 us a page fault, first touched on every thread instead
-    // of by one memset before the parts start).
+    // clears each part in its worker: the image's fresh pages are then first
+    // touched on every thread instead of by one memset before the parts start).
     struct Unfilled {};
     Image(int w, int h, int lv, Unfilled) : width(w), height(h), levels(lv) {
         level.resize(static_cast<size_t>(w) * h * 3);

@@ -33,8 +33,8 @@ struct ProjectedPatch {
 
 // The projected scene's patches in raw storage, each constructed by the
 // worker that builds it (project_scene): a vector's resize() zeroed all of
-// them on one thread first (teapot: ~370 page faults, ~4.5 ms at ~12 us a
-// fault); in the workers those faults are shared. Constructing one zeroes its
+// them on one thread first, paying every page fault there; in the workers
+// those faults are shared. Constructing one zeroes its
 // BezierPatch only, not its forms (power_form.h). Every one of the n is
 // constructed before the set is destroyed (project_scene places them all).
 class ProjectedPatches {

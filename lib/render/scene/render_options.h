@@ -22,9 +22,8 @@ struct RenderOptions {
     int prepartition = 8; // remark 4: the screen is prepartitioned into 8 x 8 parts
     // INTRACY: a sub-screen of at most this many pixels is solved pixel by
     // pixel (certified Newton) without a cluster attempt; 1: never. 20 (the
-    // 5 x 4 sub-screens of 640 x 480's quadtree) took the fewest instructions of
-    // 8, 16, 20, 80, 300 on the teapot and scene 3 at 640x480x16
-    // (bench/render/render_assessment.md, sixth round).
+    // 5 x 4 sub-screens of 640 x 480's quadtree) took the fewest instructions
+    // on the teapot and scene 3 (docs/results/render.md).
     int pixel_subscreen = 20;
     // INTRACY: a B whose step 7 certificate holds while SHADE (a light) or
     // step 9 (span) fails is painted one ray per pixel from the certificate

@@ -3,7 +3,7 @@
 // step's own cost, not the time other jobs held the core.
 //
 // The thread CPU clock is a system call (no vDSO), and INTRACY's steps are
-// short: reading it around every step cost 6% of a teapot render (perf). So a
+// short: reading it around every step cost a noticeable share of a render. So a
 // step reads the monotonic clock (vDSO, tens of ns), and a part of the screen
 // reads the thread CPU clock once at each end (PartCpuScale): the steps' wall
 // seconds are scaled by the part's CPU / wall ratio. Where other jobs preempt

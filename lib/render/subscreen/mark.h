@@ -51,7 +51,7 @@ Mark whole_patch_mark(int patch, const BezierPatch& b, SubpatchShape sh, const I
                       SubpatchArena& arena);
 
 // Narrows m for the cluster of primary rays through [a] x [b] (Theorem 10 by
-// Bezier clipping on the subpatch, clip_cluster of primary_cluster.h): up to
+// Bezier clipping on the subpatch, clip_cluster of bezier_clip.h): up to
 // three passes, each clipping and restricting the subpatch (appended to the
 // arena), while the clip shrinks the box by a fifth (a smaller shrink is not
 // restricted: m keeps its box). Returns false when no ray of the

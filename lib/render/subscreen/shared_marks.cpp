@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/subscreen/shared_marks.h>
 
+#include <seamless/render/subscreen/bezier_clip.h>
+
 #include <seamless/render/subscreen/primary_cluster.h>
 
 #include <algorithm>

@@ -15,7 +15,7 @@ namespace seamless {
 // The marks of a small sub-screen [a] x [b] as its pixels share them (INTRACY
 // step 6 for every pixel of a B of at most RenderOptions::pixel_subscreen
 // pixels): per mark, the Jacobian of G over its box for every ray of B
-// (subpatch_jacobian of primary_cluster.h, computed on first need) and the
+// (subpatch_jacobian of bezier_clip.h, computed on first need) and the
 // (s, t) of the last hit on it, where the next pixel's Newton starts. A mark
 // whose Jacobian is not regular (a silhouette may cross its box) is bisected
 // for all of B's pixels at once (covering method, section 5 remark 2): the
@@ -68,8 +68,8 @@ class SharedMarks {
         missed_[k] = 0;
     }
     // Whether the last ray solved on mark k certainly missed it (its
-    // neighbour likely misses too: the next ray tries the miss proof first;
-    // the clip first instead paid less than it cost, 842 -> 853 M on the teapot).
+    // neighbour likely misses too: the next ray tries the miss proof first,
+    // which is cheaper than the clip).
     bool missed(size_t k) const { return missed_[k] != 0; }
     // The first miss on mark k bounds it diagonally too (diagonals(); beside
     // a silhouette its neighbours miss it as well, often outside those bounds).

@@ -2,9 +2,8 @@
 // The planes of the shadow pyramids of SHADE step 2 (paper section 7; the
 // pyramid from a light over a box of points against a triangle, ray_cluster.h's
 // ApexTriangle), per light and triangle, formed on first use and kept for the
-// rest of the render. A render uses a fraction of them (the teapot scene at
-// 640x480: about a quarter of its 6,998), so forming all up front cost more
-// than it saved ("leave out what a given scene does not need").
+// rest of the render. A render uses a fraction of them (about a quarter on
+// the teapot scene), so forming all up front cost more than it saved.
 // Threads may ask for the same plane at once: each forms it (a pure function
 // of the light and the triangle's corners, so the same bits either way), the
 // first to claim the entry stores it, the others use their own copy. The
@@ -48,11 +47,9 @@ class LightPlanes {
 
   private:
     // Raw storage filled in the order planes are formed: planes_[k - 1] for
-    // slot_[i] == k, so the planes a render forms lie together. The teapot
-    // scene at 640x480 forms about a quarter of its 6,998 planes (304 bytes
-    // each); indexed by light and triangle they were spread over the 2.1 MB
-    // (perf record -e page-faults: ~260 faults of ~12 us in get), packed ~115;
-    // in huge pages (huge_pages.h) from 512 KB up: teapot 1280x1024, 136 -> 0.
+    // slot_[i] == k, so the planes a render forms lie together (indexed by
+    // light and triangle they were spread over many more pages, each a page
+    // fault); in huge pages (huge_pages.h) from 512 KB up.
     static constexpr std::uint32_t kStoring = ~std::uint32_t{0};
     std::size_t triangles_ = 0, count_ = 0;
     // slot_[i]: 0 not formed, kStoring being stored, else 1 + its place in planes_.

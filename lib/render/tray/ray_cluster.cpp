@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/tray/ray_cluster.h>
 
+#include <seamless/render/tray/interval3.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -222,20 +224,8 @@ TriangleMeeting meet_triangle(const RayCluster& c, Vec3 T1, Vec3 T2, Vec3 T3, In
 
 namespace {
 
-using IV3 = std::array<Interval, 3>;
+using namespace interval3;
 
-IV3 isub(const IV3& a, const IV3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-IV3 icross(const IV3& a, const IV3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Interval idot(const IV3& a, const IV3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-IV3 iv(Vec3 v) {
-    return {Interval(v.x), Interval(v.y), Interval(v.z)};
-}
 // x and y certainly of the same strict sign.
 bool same_side(Interval x, Interval y) {
     return (x.lo() > 0 && y.lo() > 0) || (x.hi() < 0 && y.hi() < 0);
@@ -280,123 +270,6 @@ bool pyramid_may_meet_triangle(const ApexTriangle& p, const IVec<3>& ends) {
 
 bool pyramid_may_meet_triangle(Vec3 apex, const IVec<3>& ends, Vec3 T1, Vec3 T2, Vec3 T3) {
     return pyramid_may_meet_triangle(apex_triangle(apex, T1, T2, T3), ends);
-}
-
-std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& triangles) {
-    // Directed edges bucketed by their first vertex (counting sort): per
-    // bucket entry k the edge's last vertex to[k] and its number 3 t + e (from
-    // corner e to corner e + 1 of triangle t), so a vertex's few edges are
-    // scanned for the same edge and its reverse in flat arrays. The teapot
-    // scene's 7k triangles: 0.2 MB of arrays where a hash table of every edge
-    // and its reverse touched 1.5 MB (about 380 fresh pages, each a page
-    // fault); bucket-ordered last vertices instead of recomputing them from
-    // the edge's number: 8.8 -> 2.6 M instructions (callgrind).
-    const size_t n = triangles.size() * 3;
-    int nv = 0;
-    for (const auto& t : triangles) nv = std::max({nv, t[0] + 1, t[1] + 1, t[2] + 1});
-    std::vector<int> start(static_cast<size_t>(nv) + 1, 0);
-    for (const auto& t : triangles)
-        for (int e = 0; e < 3; ++e) ++start[t[e] + 1];
-    for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<int> edge(n), to(n), cursor(start.begin(), start.end() - 1);
-    for (size_t t = 0, h = 0; t < triangles.size(); ++t)
-        for (int e = 0; e < 3; ++e, ++h) {
-            const int k = cursor[triangles[t][e]]++;
-            edge[k] = static_cast<int>(h);
-            to[k] = triangles[t][e == 2 ? 0 : e + 1];
-        }
-    std::vector<int> out(n, -1);
-    for (int u = 0; u < nv; ++u)
-        for (int k = start[u]; k < start[u + 1]; ++k) {
-            // The edge from u to v: traversed by this triangle alone, and the
-            // edge from v to u by exactly one triangle.
-            const int v = to[k];
-            int same = 0;
-            for (int j = start[u]; j < start[u + 1]; ++j) same += to[j] == v;
-            if (same != 1) continue; // several triangles traverse it: not a manifold edge
-            int other = -1, count = 0;
-            for (int j = start[v]; j < start[v + 1]; ++j)
-                if (to[j] == u) other = edge[j], ++count;
-            if (count == 1) out[edge[k]] = other / 3;
-        }
-    return out;
-}
-
-bool pyramid_blocked_by_surface(Vec3 apex, const IVec<3>& ends, double q_max, int seed,
-                                const std::vector<Vec3>& positions,
-                                const std::vector<std::array<int, 3>>& triangles,
-                                const std::vector<int>& neighbours, const std::vector<int>& group,
-                                int skip, int max_size, SurfaceScratch& scratch) {
-    if (group[seed] == skip) return false;
-    const IV3 L = iv(apex), E{ends[0], ends[1], ends[2]};
-    const Vec3 mid{ends[0].mid(), ends[1].mid(), ends[2].mid()};
-    // The plane across the pyramid: normal n towards the midpoint; a point X
-    // on the ray to P in the box lies at q = n.(X - L) / n.(P - L).
-    const IV3 n = isub(iv(mid), L);
-    const Interval reach = idot(n, isub(E, L));
-    if (!(reach.lo() > 0)) return false;
-    const double depth_max = (Interval(q_max) * Interval(reach.lo())).lo();
-    auto vertex = [&](int t, int k) { return positions[triangles[t][k]]; };
-    // c) first: the ray to the midpoint meets the seed.
-    RayCluster ray;
-    for (int i = 0; i < 3; ++i) {
-        ray.origin[i] = L[i];
-        ray.direction[i] = n[i];
-    }
-    Interval q;
-    if (!covers_triangle(ray, vertex(seed, 0), vertex(seed, 1), vertex(seed, 2), q)) return false;
-    // The seed's orientation seen from the apex.
-    auto facing = [&](int t) {
-        const IV3 A = iv(vertex(t, 0)), B = iv(vertex(t, 1)), C = iv(vertex(t, 2));
-        const Interval f = idot(icross(isub(B, A), isub(C, A)), isub(A, L));
-        return f.lo() > 0 ? 1 : f.hi() < 0 ? -1 : 0;
-    };
-    // a)'s depth: n.(X - L) over the triangle's bounding box (each coordinate
-    // enters once, so the range is exact up to rounding).
-    auto between = [&](int t) {
-        const Vec3 A = vertex(t, 0), B = vertex(t, 1), C = vertex(t, 2);
-        const IV3 X{Interval(std::min({A.x, B.x, C.x}), std::max({A.x, B.x, C.x})),
-                    Interval(std::min({A.y, B.y, C.y}), std::max({A.y, B.y, C.y})),
-                    Interval(std::min({A.z, B.z, C.z}), std::max({A.z, B.z, C.z}))};
-        const Interval d = idot(n, isub(X, L));
-        return d.lo() > 0 && d.hi() < depth_max;
-    };
-    const int sigma = facing(seed);
-    if (sigma == 0 || !between(seed)) return false;
-    // An edge U V misses the pyramid when the box lies strictly on one side of
-    // the plane through the apex, U and V: that plane meets the pyramid only at
-    // the apex, which is then not on the line U V.
-    auto edge_misses = [&](int t, int e) {
-        const IV3 U = iv(vertex(t, e)), V = iv(vertex(t, (e + 1) % 3));
-        const IV3 m = icross(isub(U, L), isub(V, L));
-        const Interval side = idot(m, isub(E, L));
-        return side.lo() > 0 || side.hi() < 0;
-    };
-    auto& stamp = scratch.stamp;
-    if (stamp.size() != triangles.size() || scratch.epoch == ~0u) {
-        stamp.assign(triangles.size(), 0);
-        scratch.epoch = 0;
-    }
-    const unsigned in_s = ++scratch.epoch;
-    auto& stack = scratch.stack;
-    stack.assign(1, seed);
-    stamp[seed] = in_s;
-    int size = 1;
-    while (!stack.empty()) {
-        const int t = stack.back();
-        stack.pop_back();
-        for (int e = 0; e < 3; ++e) {
-            if (edge_misses(t, e)) continue; // a border of S that the pyramid misses
-            const int nb = neighbours[3 * static_cast<size_t>(t) + e];
-            if (nb < 0) return false;
-            if (stamp[nb] == in_s) continue;
-            if (group[nb] == skip || ++size > max_size || facing(nb) != sigma || !between(nb))
-                return false;
-            stamp[nb] = in_s;
-            stack.push_back(nb);
-        }
-    }
-    return true;
 }
 
 } // namespace seamless

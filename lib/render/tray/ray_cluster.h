@@ -92,41 +92,4 @@ ApexTriangle apex_triangle(Vec3 apex, Vec3 T1, Vec3 T2, Vec3 T3);
 // T1, T2, T3): the same interval operations, so the same answer.
 bool pyramid_may_meet_triangle(const ApexTriangle& p, const IVec<3>& ends);
 
-// Neighbours across the edges of a triangle mesh: out[3 t + e] is the triangle
-// traversing edge e of triangle t (its vertices e and e + 1 mod 3) in the
-// opposite direction, or -1 where there is none, or where the edge is not a
-// manifold, consistently oriented one (more than two triangles on it, or two
-// traversing it in the same direction).
-std::vector<int> triangle_neighbours(const std::vector<std::array<int, 3>>& triangles);
-
-// A light certainly blocked by a surface of triangles rather than by one (SHADE
-// step 2; Proposition 11 and Theorem 6 iii prove coverage by one triangle,
-// which fails wherever the light's pyramid crosses a triangle's edge). The
-// surface S grows from `seed` across every edge of the mesh (neighbours:
-// triangle_neighbours) that may meet the pyramid from `apex` over the box
-// `ends`; true when
-//  a) every triangle of S faces the apex with the seed's strict orientation
-//     and lies strictly between the apex and a plane across the pyramid,
-//     beyond which the box lies, at ray parameters q < q_max; no triangle t
-//     of S has group[t] == skip (a surface that may not block: the lit patch);
-//  b) so every edge on the border of S (no consistently oriented neighbour in
-//     S across it) certainly misses the pyramid;
-//  c) the ray to the box's midpoint certainly meets the seed (Theorem 6 iii).
-// Then every ray meets S before q_max: seen from the apex, S maps to the
-// sphere of directions preserving orientation triangle by triangle, and by
-// the consistent orientation across inner edges the map is open inside S, so
-// the border of S's image lies in the image of S's border edges. The
-// connected set of the pyramid's directions misses those by b) and meets the
-// image by c), so it lies inside the image. max_size bounds S (false beyond).
-struct SurfaceScratch {
-    std::vector<unsigned> stamp; // per triangle: == epoch when in S
-    unsigned epoch = 0;
-    std::vector<int> stack;
-};
-bool pyramid_blocked_by_surface(Vec3 apex, const IVec<3>& ends, double q_max, int seed,
-                                const std::vector<Vec3>& positions,
-                                const std::vector<std::array<int, 3>>& triangles,
-                                const std::vector<int>& neighbours, const std::vector<int>& group,
-                                int skip, int max_size, SurfaceScratch& scratch);
-
 } // namespace seamless

@@ -35,8 +35,7 @@ struct TriangleRay {
 // [0, t_max]; false when empty. Robust for axis-parallel rays (a zero direction
 // component tests the origin against the slab) and widened by a few ulps
 // (pbrt's 1 + 2 gamma(3)), so rounding never loses a grazing hit. Inline: a
-// shadow ray tests about 80 boxes on scene 3 (callgrind, 640x480: shadow rays
-// 2.51 G -> 2.04 G instructions when the test was no longer a call).
+// shadow ray tests tens of boxes, and the call cost more than the test.
 inline bool ray_hits_box(const TriangleRay& ray, const Box3& box, double t_max) {
     // pbrt-v4: t1 *= 1 + 2 gamma(3) makes the slab test conservative.
     constexpr double eps = std::numeric_limits<double>::epsilon() * 0.5;

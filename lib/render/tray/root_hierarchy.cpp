@@ -119,6 +119,7 @@ RootHierarchy build_root_hierarchy(const PatchTrees& trees) {
     if (patches.empty()) return h;
     h.nodes.reserve(2 * patches.size());
     b.build(patches.data(), patches.data() + patches.size(), 0, h.depth);
+    SEAMLESS_CHECK(h.depth < RootHierarchy::kStack - 2, "the hierarchy fits visit_roots' stack");
     return h;
 }
 

@@ -7,10 +7,10 @@
 // misses it misses every triangle below (remark 1: hulls are conservative).
 #pragma once
 
+#include <seamless/base/check.h>
 #include <seamless/base/vec.h>
 #include <seamless/tessellate/subdivision/patch_tree.h>
 
-#include <cassert>
 #include <vector>
 
 namespace seamless {
@@ -24,6 +24,8 @@ struct RootNode {
 struct RootHierarchy {
     std::vector<RootNode> nodes; // nodes[0] the top; empty when no root has triangles
     int depth = 0;               // levels below the top, the stack a traversal needs
+    // visit_roots' stack; build_root_hierarchy checks that depth fits it.
+    static constexpr int kStack = 256;
 };
 
 // Surface area heuristic splits of the roots sorted by hull centre (the cut
@@ -39,9 +41,8 @@ RootHierarchy build_root_hierarchy(const PatchTrees& trees);
 // returns true to stop (then true). h must not be empty.
 template <class BoxPred, class Meet>
 bool visit_roots(const RootHierarchy& h, int skip_patch, BoxPred&& box_pred, Meet&& meet) {
-    constexpr int kStack = 256;
-    assert(h.depth < kStack - 2);
-    int stack[kStack];
+    SEAMLESS_DCHECK(h.depth < RootHierarchy::kStack - 2, "the hierarchy fits visit_roots' stack");
+    int stack[RootHierarchy::kStack];
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/render/tray/trace.h>
 
+#include <seamless/base/check.h>
+
 #include <seamless/render/shading/optics.h>
 #include <seamless/render/shading/shading.h>
 #include <seamless/render/tray/ray_triangle.h>
 
 #include <algorithm>
-#include <cassert>
 #include <limits>
 
 namespace seamless {
@@ -41,8 +42,7 @@ bool visit_roots_met(const RootHierarchy& h, const TriangleRay& ray, const doubl
 // visited and their order are those of the plain loop over the roots.
 // visit_triangles' roots met by a ray, per thread, through one call whose
 // result the caller keeps (as shade_scratch below: a thread_local's address
-// is otherwise recomputed, a __tls_get_addr call each time; scene 3
-// 640x480 x 16: 230,877 calls in nearest_hit).
+// is otherwise recomputed, a __tls_get_addr call each time).
 [[gnu::noinline]] std::vector<int>& met_roots() {
     thread_local std::vector<int> met;
     return met;
@@ -85,9 +85,9 @@ bool visit_triangles_any_order(const TriangleScene& ts, const TriangleRay& ray, 
 std::array<double, 3> trace_secondary(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 dir,
                                       int patch, int depth, long long* tests) {
     TraceHit h;
-    if (!nearest_hit(ts, P, dir, ts.ray_epsilon, kInf, patch, h, tests))
+    if (!nearest_hit(ts, {P, dir, ts.ray_epsilon, kInf, patch}, h, tests))
         return {scene.background.x, scene.background.y, scene.background.z};
-    return shade_ray(scene, ts, h.point, h.normal, h.material, h.patch, -dir, depth, tests);
+    return shade_ray(scene, ts, {h.point, h.normal, h.material, h.patch, -dir}, depth, tests);
 }
 
 } // namespace
@@ -148,15 +148,17 @@ bool light_pyramid_may_meet(const TriangleScene& ts, int l, Vec3 apex, const IVe
         const ApexTriangle& p = ts.light_planes.get(
             static_cast<size_t>(l), static_cast<size_t>(f), apex, mesh.positions[tri[0]],
             mesh.positions[tri[1]], mesh.positions[tri[2]], scratch);
-        assert(p.apex == apex);
+        SEAMLESS_DCHECK(p.apex == apex, "light l's planes are formed from its position");
         return pyramid_may_meet_triangle(p, ends);
     }
     return pyramid_may_meet_triangle(apex, ends, mesh.positions[tri[0]], mesh.positions[tri[1]],
                                      mesh.positions[tri[2]]);
 }
 
-bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-                 int skip_patch, TraceHit& hit, long long* tests) {
+bool nearest_hit(const TriangleScene& ts, const TraceRay& r, TraceHit& hit, long long* tests) {
+    const Vec3 origin = r.origin, dir = r.dir;
+    const double t_min = r.t_min, t_max = r.t_max;
+    const int skip_patch = r.skip_patch;
     const TriangleMesh& mesh = ts.tess.mesh;
     const TriangleRay ray(origin, dir);
     double best_t = t_max;
@@ -195,8 +197,10 @@ bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, d
     return true;
 }
 
-bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-             int skip_patch, long long* tests, int* blocker) {
+bool any_hit(const TriangleScene& ts, const TraceRay& r, long long* tests, int* blocker) {
+    const Vec3 origin = r.origin, dir = r.dir;
+    const double t_min = r.t_min, t_max = r.t_max;
+    const int skip_patch = r.skip_patch;
     const TriangleMesh& mesh = ts.tess.mesh;
     const TriangleRay ray(origin, dir);
     RayTriangleHit h;
@@ -226,9 +230,8 @@ bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, doubl
 namespace {
 
 // shade_ray's per-thread scratch, one thread_local: in the shared library
-// each access to a thread_local is a __tls_get_addr call (three objects,
-// their guards, recomputed after calls: 2.04 M calls, 22 M instructions, on
-// the teapot at 1280x1024 x 256, one thread).
+// each access to a thread_local is a __tls_get_addr call (three objects
+// and their guards would each be recomputed after calls).
 struct ShadeScratch {
     // Step 2: the lights that reach P (lights_reaching), so the hot loop
     // does not allocate; done with before the recursion reuses it.
@@ -251,9 +254,10 @@ struct ShadeScratch {
 
 } // namespace
 
-std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 N,
-                                int material, int patch, Vec3 view, int depth, long long* tests,
-                                const char* lit) {
+std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, const ShadePoint& at,
+                                int depth, long long* tests, const char* lit) {
+    const Vec3 P = at.P, N = at.N, view = at.view;
+    const int material = at.material, patch = at.patch;
     const Material& m = scene.materials[material];
     const double cos_v = dot(N, view);
     const Vec3 Nf = cos_v < 0 ? -N : N; // towards the viewer (surfaces have two sides)
@@ -275,7 +279,7 @@ std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec
     }
     lights_reaching(scene, m, P, Nf, lighting, [&](Vec3 dir, double dist, int light) {
         if (lit && lit[light]) return false;
-        return any_hit(ts, P, dir, ts.ray_epsilon, dist, patch, tests,
+        return any_hit(ts, {P, dir, ts.ray_epsilon, dist, patch}, tests,
                        depth_blocker ? depth_blocker + light : nullptr);
     });
     std::array<double, 3> I = shade<double>(lighting, m, to_v3(P), to_v3(N), P + view);

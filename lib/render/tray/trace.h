@@ -75,19 +75,26 @@ struct TraceHit {
     int patch = -1;
 };
 
-// Nearest hit with t in (t_min, t_max) of origin + t dir; the triangles of
-// patch `skip_patch` (>= 0) are not tested (SHADE step 1: the marked patch,
-// which keeps a point from shadowing itself). Ties keep the first triangle in
-// the fixed traversal order. `tests` (optional) counts ray-triangle tests.
-bool nearest_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-                 int skip_patch, TraceHit& hit, long long* tests = nullptr);
+// The points origin + t dir with t in (t_min, t_max); the triangles of patch
+// `skip_patch` (>= 0) are not tested (SHADE step 1: the marked patch, which
+// keeps a point from shadowing itself).
+struct TraceRay {
+    Vec3 origin, dir;
+    double t_min, t_max;
+    int skip_patch = -1;
+};
 
-// Any hit with t in (t_min, t_max) (shadow rays; stops at the first). With
-// `blocker` (a shadow cache entry, Haines and Greenberg 1986), the triangle
-// *blocker (when it is one of ts's and not on skip_patch) is tested first, and
-// the triangle found is stored there: a hint only, the answer is the same.
-bool any_hit(const TriangleScene& ts, Vec3 origin, Vec3 dir, double t_min, double t_max,
-             int skip_patch, long long* tests = nullptr, int* blocker = nullptr);
+// The ray's nearest hit. Ties keep the first triangle in the fixed traversal
+// order. `tests` (optional) counts ray-triangle tests.
+bool nearest_hit(const TriangleScene& ts, const TraceRay& ray, TraceHit& hit,
+                 long long* tests = nullptr);
+
+// Any hit of the ray (shadow rays; stops at the first). With `blocker` (a
+// shadow cache entry, Haines and Greenberg 1986), the triangle *blocker (when
+// it is one of ts's and not on skip_patch) is tested first, and the triangle
+// found is stored there: a hint only, the answer is the same.
+bool any_hit(const TriangleScene& ts, const TraceRay& ray, long long* tests = nullptr,
+             int* blocker = nullptr);
 
 // SHADE step 2 for one ray: into `lighting` (its ambient and the lights that
 // reach P), every light that is on, in front of the surface (Nf: the normal
@@ -116,18 +123,24 @@ void lights_reaching(const Scene& scene, const Material& m, Vec3 P, Vec3 Nf, Sce
     }
 }
 
-// SHADE for one ray (section 7): intensity per channel in [0, 1] at surface
-// point P with unit normal N of material `material` on Bezier patch `patch`,
-// seen from unit direction `view` (from P towards the viewer), at recursion
-// depth `depth` (0 at the primary hit). Ambient; per light that is on and in
+// A point SHADE shades: surface point P with unit normal N of material
+// `material` on Bezier patch `patch`, seen from unit direction `view` (from P
+// towards the viewer).
+struct ShadePoint {
+    Vec3 P, N;
+    int material, patch;
+    Vec3 view;
+};
+
+// SHADE for one ray (section 7): intensity per channel in [0, 1] at `at`, at
+// recursion depth `depth` (0 at the primary hit). Ambient; per light that is on and in
 // front of the surface, a shadow ray (step 2); the local terms by shade<double>
 // with the visible lights (the illumination model of INTRACY); then
 // reflect * the reflected ray and transmit * the refracted ray (steps 3-4, up
 // to scene.max_depth; the background where they hit nothing). lit
 // (optional, one per light): lit[l] != 0 where light l is known to reach P
 // (a certificate for many points, pixel_lights.h): no shadow ray to it.
-std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, Vec3 P, Vec3 N,
-                                int material, int patch, Vec3 view, int depth,
-                                long long* tests = nullptr, const char* lit = nullptr);
+std::array<double, 3> shade_ray(const Scene& scene, const TriangleScene& ts, const ShadePoint& at,
+                                int depth, long long* tests = nullptr, const char* lit = nullptr);
 
 } // namespace seamless

@@ -4,7 +4,7 @@
 // triangle each, so INTRACY paints mirror and glass by clusters, and the
 // result matches the exact per-pixel reference (which traces the same
 // reflected and refracted rays) within one level.
-#include "render_compare.h"
+#include "render/render_compare.h"
 #include "test_util.h"
 
 #include <seamless/render/render.h>

@@ -5,8 +5,8 @@
 // certified corner enclosures hold the exact corner intensities, and where the
 // criterion paints, every painted level lies within one level of the pixel's
 // own; INTRACY using it still agrees with the per-pixel reference.
-#include "cluster_samples.h"
-#include "render_compare.h"
+#include "render/clusters/cluster_samples.h"
+#include "render/render_compare.h"
 #include "test_util.h"
 
 #include <seamless/render/clusters/second_order.h>
@@ -75,8 +75,11 @@ Tally check_clusters(const Scene& scene, int w, int h, int block, std::vector<in
                     exact[static_cast<size_t>((block - 1) * block)], exact.back()};
                 for (const int n : levels)
                     for (const bool dither : {true, false}) {
-                        const SecondOrder so = second_order(pp, ps.lighting, mat, box, e, sys, ca,
-                                                            cb, n, dither, scratch, st);
+                        const CertifiedCluster cluster{pp, box, e, sys};
+                        const ClusterLight light{ps.lighting, mat};
+                        const SecondOrder so =
+                            second_order(cluster, light, {{ca[0], ca[1]}, {cb[0], cb[1]}},
+                                         {n, dither}, scratch, st);
                         if (!std::isfinite(so.bound[0]) || !std::isfinite(so.bound[1]) ||
                             !std::isfinite(so.bound[2]))
                             continue;
@@ -86,8 +89,8 @@ Tally check_clusters(const Scene& scene, int w, int h, int block, std::vector<in
                         // The certified corner enclosures hold the exact corner intensities.
                         std::array<Interval, 3> Ic;
                         for (int k = 0; k < 4 && so.paint; ++k) {
-                            REQUIRE(corner_intensity(pp, ps.lighting, mat, ca[k & 1], cb[k >> 1],
-                                                     box, mark_jacobian(A), scratch, st, Ic));
+                            REQUIRE(corner_intensity(cluster, light, RVec<2>{ca[k & 1], cb[k >> 1]},
+                                                     mark_jacobian(A), scratch, st, Ic));
                             for (int c = 0; c < 3; ++c)
                                 tally.corner_misses +=
                                     !Ic[c].contains(corner[k][c]) || Ic[c].mid() != so.corner[k][c];
@@ -117,8 +120,8 @@ Tally check_clusters(const Scene& scene, int w, int h, int block, std::vector<in
                                 for (int c = 0; c < 3; ++c) {
                                     const int q = quantise(Ix[c], n);
                                     for (double d = -0.5; d < 0.5; d += dither ? 0.125 : 1.0) {
-                                        const int p = bilinear_level(so.corner, c, fx, fy,
-                                                                     dither ? d : 0.0, n, 0, n - 1);
+                                        const int p = BilinearForm{so.corner, n}.level(
+                                            c, fx, fy, dither ? d : 0.0, 0, n - 1);
                                         tally.level_misses += std::abs(p - q) > 1;
                                     }
                                 }
@@ -182,7 +185,8 @@ TEST_CASE("INTRACY with the second-order step 9 agrees with the per-pixel refere
     CHECK(d.surface_mismatch == 0);
 }
 
-TEST_CASE("bilinear_level rounds as std::lround within the enclosure's levels", "[second_order]") {
+TEST_CASE("BilinearForm::level rounds as std::lround within the enclosure's levels",
+          "[second_order]") {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> U(-0.1, 1.1), D(-0.5, 0.5);
     const int levels[] = {2, 16, 256, 65536};
@@ -203,6 +207,6 @@ TEST_CASE("bilinear_level rounds as std::lround within the enclosure's levels", 
         const double v = (1 - fy) * ((1 - fx) * corner[0][0] + fx * corner[1][0]) +
                          fy * ((1 - fx) * corner[2][0] + fx * corner[3][0]);
         const long want = std::clamp<long>(std::lround(clamp01(v) * (L - 1) + d), lo, hi);
-        CHECK(bilinear_level(corner, 0, fx, fy, d, L, lo, hi) == want);
+        CHECK(BilinearForm{corner, L}.level(0, fx, fy, d, lo, hi) == want);
     }
 }

@@ -86,8 +86,8 @@ struct TwinSolves {
     RenderStats st;
     SharedMarks plain, other;
     PixelHit both(double a, double b) {
-        const PixelHit h0 = solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &plain);
-        const PixelHit h1 = solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &other);
+        const PixelHit h0 = solve_pixel(tm.ps, a, b, plain, scratch, st);
+        const PixelHit h1 = solve_pixel(tm.ps, a, b, other, scratch, st);
         REQUIRE(h0.patch == h1.patch);
         if (h1.patch >= 0) {
             CHECK(h0.s == h1.s);
@@ -113,8 +113,8 @@ TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each
     RenderStats st;
     int surface = 0, background = 0;
     const int bisected = tm.subscreens(17, 120, shared, [&](double a, double b, const auto& marks) {
-        const PixelHit h = solve_pixel(ps, a, b, nullptr, 0, scratch, st, &shared);
-        const PixelHit ref = solve_pixel(ps, a, b, marks.data(), marks.size(), scratch, st);
+        const PixelHit h = solve_pixel(ps, a, b, shared, scratch, st);
+        const PixelHit ref = solve_pixel(ps, a, b, marks, scratch, st);
         REQUIRE((h.patch < 0) == (ref.patch < 0));
         if (ref.patch < 0) {
             ++background;
@@ -245,7 +245,7 @@ TEST_CASE("A mark's kept centre enclosure decides may_hold_zero as the ray's own
     RenderStats st;
     int compared = 0, misses = 0;
     const int bisected = tm.subscreens(29, 60, shared, [&](double a, double b, const auto&) {
-        solve_pixel(ps, a, b, nullptr, 0, scratch, st, &shared); // bisects marks
+        solve_pixel(ps, a, b, shared, scratch, st); // bisects marks
         for (size_t k = 0; k < shared.size(); ++k) {
             const Mark& m = shared.marks()[k];
             const MarkJacobian& J = shared.jacobian(k);
@@ -279,7 +279,7 @@ TEST_CASE("SharedMarks' depth order holds every mark once, nearest first, after 
     RenderStats st;
     int checked = 0;
     const int bisected = tm.subscreens(31, 60, shared, [&](double a, double b, const auto&) {
-        solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &shared); // bisects marks
+        solve_pixel(tm.ps, a, b, shared, scratch, st); // bisects marks
         const auto& order = shared.depth_order();
         REQUIRE(order.size() == shared.size());
         std::vector<int> seen(shared.size(), 0);
@@ -313,7 +313,7 @@ TEST_CASE("A mark's diagonal bounds reject only rays that miss it", "[pixel_solv
     const double pb = 2.0 * tm.ps.frame.tan_half / tm.H;
     int diagonal = 0, compared = 0;
     tm.subscreens(41, 80, shared, [&](double a, double b, const auto&) {
-        solve_pixel(tm.ps, a, b, nullptr, 0, scratch, st, &shared); // marks missed
+        solve_pixel(tm.ps, a, b, shared, scratch, st); // marks missed
         for (int r = 0; r < 4; ++r) {
             const double ra = a + U(rng) * pa, rb = b + U(rng) * pb;
             for (size_t k = 0; k < shared.size(); ++k) {

@@ -50,8 +50,10 @@ TEST_CASE("A light certified for a box of hit points reaches every point of the 
                     const Vec3 d = f.to_world_direction(
                         {f.screen_a(x + i + 0.5), f.screen_b(y + j + 0.5), 1.0});
                     TraceHit h;
-                    if (!nearest_hit(ts, f.eye, normalize(d), 0,
-                                     std::numeric_limits<double>::infinity(), -1, h) ||
+                    if (!nearest_hit(
+                            ts,
+                            {f.eye, normalize(d), 0, std::numeric_limits<double>::infinity(), -1},
+                            h) ||
                         (patch >= 0 && h.patch != patch)) {
                         one = false;
                         break;
@@ -74,7 +76,7 @@ TEST_CASE("A light certified for a box of hit points reaches every point of the 
                     const Vec3 L = scene.lights[l].position - P;
                     const double dist = norm(L);
                     const bool blocked =
-                        any_hit(ts, P, L / dist, ts.ray_epsilon, dist, patch, nullptr, nullptr);
+                        any_hit(ts, {P, L / dist, ts.ray_epsilon, dist, patch}, nullptr, nullptr);
                     any_blocked |= blocked;
                     if (lit[l]) CHECK_FALSE(blocked);
                 }

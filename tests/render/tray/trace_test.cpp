@@ -3,7 +3,7 @@
 // tessellation: shadows, a mirror, refraction through a plane-parallel plate
 // as Snell's law predicts, the recursion limit, lights that are off; TRAY on
 // the scenes of section 8 (data/scenes): sequential == parallel, all load and render.
-#include "render_compare.h"
+#include "render/render_compare.h"
 #include "test_util.h"
 
 #include <seamless/render/render.h>
@@ -105,8 +105,9 @@ Scene shadow_scene(const std::string& tag, const json& lights) {
 std::array<double, 3> shade_along(const Scene& scene, const TriangleScene& ts, Vec3 origin,
                                   Vec3 dir, long long* tests = nullptr) {
     TraceHit h;
-    REQUIRE(nearest_hit(ts, origin, dir, 0, kInf, -1, h));
-    return shade_ray(scene, ts, h.point, h.normal, h.material, h.patch, -normalize(dir), 0, tests);
+    REQUIRE(nearest_hit(ts, {origin, dir, 0, kInf, -1}, h));
+    return shade_ray(scene, ts, {h.point, h.normal, h.material, h.patch, -normalize(dir)}, 0,
+                     tests);
 }
 
 // Pixel (column, row) of the world point p in a render of `scene` at W x H.
@@ -187,18 +188,18 @@ TEST_CASE("A mirror shows the object at the mirrored position", "[trace]") {
     const TriangleScene ts = build_triangle_scene(scene);
     const Vec3 Qm{Q.x, 2 * 1 - Q.y, Q.z}; // Q mirrored in y = 1
     TraceHit m;
-    REQUIRE(nearest_hit(ts, eye, Qm - eye, 0, kInf, -1, m));
+    REQUIRE(nearest_hit(ts, {eye, Qm - eye, 0, kInf, -1}, m));
     CHECK(m.point.y == Approx(1));
     CHECK(scene.materials[m.material].name == "mirror");
     // The reflected ray, traced on with the mirror's patch marked, meets Q.
     const Vec3 d = normalize(Qm - eye);
     const Vec3 R = d - 2 * dot(d, m.normal) * m.normal;
     TraceHit t;
-    REQUIRE(nearest_hit(ts, m.point, R, ts.ray_epsilon, kInf, m.patch, t));
+    REQUIRE(nearest_hit(ts, {m.point, R, ts.ray_epsilon, kInf, m.patch}, t));
     CHECK(scene.materials[t.material].name == "red");
     CHECK(distance(t.point, Q) < 1e-9);
     // SHADE sees the target's colour in the mirror, and the background beside it.
-    const auto I = shade_ray(scene, ts, m.point, m.normal, m.material, m.patch, -d, 0);
+    const auto I = shade_ray(scene, ts, {m.point, m.normal, m.material, m.patch, -d}, 0);
     CHECK(I[0] == Approx(0.9));
     CHECK(I[1] == Approx(0.1));
     CHECK(I[2] == Approx(0.2));
@@ -207,7 +208,7 @@ TEST_CASE("A mirror shows the object at the mirrored position", "[trace]") {
 
     SECTION("max_depth 0 disables reflection") {
         const Scene flat = make(0);
-        const auto I0 = shade_ray(flat, ts, m.point, m.normal, m.material, m.patch, -d, 0);
+        const auto I0 = shade_ray(flat, ts, {m.point, m.normal, m.material, m.patch, -d}, 0);
         CHECK(I0 == std::array<double, 3>{0, 0, 0});
     }
 }

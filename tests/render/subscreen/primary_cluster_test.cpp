@@ -3,13 +3,14 @@
 // of a sampled cluster that meets the patch does so inside the narrowed box,
 // and a certified box holds exactly one hit of every ray.
 #include <seamless/render/scene/projection.h>
+#include <seamless/render/subscreen/bezier_clip.h>
 #include <seamless/render/subscreen/mark.h>
 #include <seamless/render/subscreen/primary_cluster.h>
 #include <seamless/spline/ray_patch.h>
 
 #include <catch2/catch.hpp>
 
-#include "dome_patch.h"
+#include "render/dome_patch.h"
 
 #include <random>
 #include <vector>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Proposition 11: a cluster declared to miss a triangle never has a ray that hits it.
+#include <seamless/render/tray/blocking_surface.h>
 #include <seamless/render/tray/ray_cluster.h>
 
 #include <catch2/catch.hpp>
@@ -382,11 +383,11 @@ TEST_CASE("A light blocked by a surface of triangles has every segment crossing 
                     seed = static_cast<int>(t);
             }
             if (seed < 0) continue;
-            const bool b = pyramid_blocked_by_surface(L, ends, q_max, seed, s.positions,
-                                                      s.triangles, nb, group, -1, 4096, scratch);
+            const BlockerMesh mesh{s.positions, s.triangles, nb, group};
+            const bool b =
+                pyramid_blocked_by_surface({L, ends, q_max}, seed, mesh, -1, 4096, scratch);
             // The lit surface may not block: the same surface marked `skip` never does.
-            CHECK_FALSE(pyramid_blocked_by_surface(L, ends, q_max, seed, s.positions, s.triangles,
-                                                   nb, group, 0, 4096, scratch));
+            CHECK_FALSE(pyramid_blocked_by_surface({L, ends, q_max}, seed, mesh, 0, 4096, scratch));
             bool all = true;
             for (int k = 0; k < 200; ++k) {
                 Vec3 e;

@@ -3,7 +3,7 @@
 // (interval/lanes.h) equal the scalar interval code bit for bit, on random
 // subpatch coefficients of every shape, magnitude and sign; beyond the lanes'
 // magnitude limit clip_cluster takes the scalar code.
-#include <seamless/render/subscreen/primary_cluster.h>
+#include <seamless/render/subscreen/bezier_clip.h>
 
 #include <catch2/catch.hpp>
 

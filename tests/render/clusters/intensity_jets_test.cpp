@@ -7,8 +7,8 @@
 // light, under a light at the eye (highlights facing the viewer), under a
 // grazing light (the diffuse term's terminator crosses clusters), with no light
 // reaching it (a shadowed cluster: only ambient), and a rational cylinder.
-#include "cluster_samples.h"
-#include "scene_fixtures.h"
+#include "render/clusters/cluster_samples.h"
+#include "render/scene_fixtures.h"
 #include "test_util.h"
 
 #include <seamless/render/clusters/second_order.h>
@@ -103,8 +103,8 @@ JetTally check_jets(const ProjectedScene& ps, const Scene& lighting, int w, int 
                 ++tally.clusters;
                 const Material& mat = lighting.materials[pp.material];
                 const PatchEnclosure e = enclose(pp.forms, box);
-                const std::array<IntervalJet2, 3> I =
-                    intensity_jets(pp, lighting, mat, sys, box, e, mark_jacobian(sys, box).A, a, b);
+                const std::array<IntervalJet2, 3> I = intensity_jets(
+                    {pp, box, e, sys}, {lighting, mat}, mark_jacobian(sys, box).A, a, b);
                 for (int c = 0; c < 3; ++c) tally.kinks += !I[c].daa.is_finite();
                 // Steps of 1/16 of B (truncation ~ h^2 I'''' / 12), halved for
                 // the estimate of the truncation; samples at least 1/8 inside B.
@@ -129,8 +129,9 @@ JetTally check_jets(const ProjectedScene& ps, const Scene& lighting, int w, int 
                         ParamBox pbox;
                         if (!test::certified_cluster(pp, pa, pb, psys, pbox)) continue;
                         const PatchEnclosure pe = enclose(pp.forms, pbox);
-                        const std::array<IntervalJet2, 3> J = intensity_jets(
-                            pp, lighting, mat, psys, pbox, pe, mark_jacobian(psys, pbox).A, pa, pb);
+                        const std::array<IntervalJet2, 3> J =
+                            intensity_jets({pp, pbox, pe, psys}, {lighting, mat},
+                                           mark_jacobian(psys, pbox).A, pa, pb);
                         JetTally point;
                         tally.point_misses += misses(J, d1, d2, point, I, true);
                         tally.point_checked += point.checked_second;

@@ -5,7 +5,7 @@
 // sub-screens one ray per pixel; its image stays within one level of the
 // image that splits them, and of TRAY and the exact reference as the
 // agreement tests require.
-#include "render_compare.h"
+#include "render/render_compare.h"
 #include "test_util.h"
 
 #include <seamless/render/render.h>

@@ -74,15 +74,15 @@ TEST_CASE("Shadow and nearest rays through the root hierarchy agree with the pla
         const double dist = to_light ? full : 0.99 * full;
         const int skip = ts.triangle_patch[f];
         const bool want = any_hit_every_triangle(ts, P, dir, ts.ray_epsilon, dist, skip);
-        CHECK(any_hit(ts, P, dir, ts.ray_epsilon, dist, skip) == want);
-        CHECK(any_hit(plain, P, dir, ts.ray_epsilon, dist, skip) == want);
+        CHECK(any_hit(ts, {P, dir, ts.ray_epsilon, dist, skip}) == want);
+        CHECK(any_hit(plain, {P, dir, ts.ray_epsilon, dist, skip}) == want);
         int hint = pick(rng); // any triangle as the cached blocker
-        CHECK(any_hit(ts, P, dir, ts.ray_epsilon, dist, skip, nullptr, &hint) == want);
+        CHECK(any_hit(ts, {P, dir, ts.ray_epsilon, dist, skip}, nullptr, &hint) == want);
         (want ? blocked : lit)++;
 
         TraceHit a, b;
-        const bool ha = nearest_hit(ts, P, dir, ts.ray_epsilon, kInf, skip, a);
-        const bool hb = nearest_hit(plain, P, dir, ts.ray_epsilon, kInf, skip, b);
+        const bool ha = nearest_hit(ts, {P, dir, ts.ray_epsilon, kInf, skip}, a);
+        const bool hb = nearest_hit(plain, {P, dir, ts.ray_epsilon, kInf, skip}, b);
         REQUIRE(ha == hb);
         if (ha) {
             CHECK(a.triangle == b.triangle);
@@ -159,8 +159,8 @@ TEST_CASE("shade_ray's shadow cache per recursion depth changes no intensity (sc
         const Material& m = scene.materials[material];
         secondary += m.reflect > 0 || m.transmit > 0;
         long long tests = 0; // counted: no cache
-        const auto plain = shade_ray(scene, ts, P, N, material, patch, view, 0, &tests);
-        const auto cached = shade_ray(scene, ts, P, N, material, patch, view, 0);
+        const auto plain = shade_ray(scene, ts, {P, N, material, patch, view}, 0, &tests);
+        const auto cached = shade_ray(scene, ts, {P, N, material, patch, view}, 0);
         for (int c = 0; c < 3; ++c) CHECK(plain[c] == cached[c]);
     }
     CHECK(secondary > 50);

@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "dome_patch.h"
+#include "render/dome_patch.h"
 
 #include <random>
 
@@ -80,10 +80,9 @@ TEST_CASE("Certified Newton agrees with the covering method", "[certified_newton
         ClusterSystem storage;
         RaySystem sys(pp, a, b, storage);
         RenderStats st;
-        ParamBox hb;
-        Interval q;
-        const NewtonOutcome r = newton_certified(pp, a, b, box, sys, hb, q, st);
-        check_outcome(pp, a, b, box, r, hb, q, nullptr, counts);
+        CertifiedHit h;
+        const NewtonOutcome r = newton_certified(sys, box, h, st);
+        check_outcome(pp, a, b, box, r, h.box, h.q, nullptr, counts);
     }
     CHECK(counts[0] > 50);
     CHECK(counts[1] > 50);
@@ -116,10 +115,10 @@ TEST_CASE("Certified Newton with a sub-screen's Jacobian: no hit lost, none inve
         const MarkJacobian J = mark_jacobian(sub, box);
         RaySystem sys(pp, a, b, storage);
         RenderStats st;
-        ParamBox hb, rest;
-        Interval q;
-        const NewtonOutcome r = newton_certified(pp, a, b, box, sys, hb, q, st, &J, &rest);
-        check_outcome(pp, a, b, box, r, hb, q, &rest, counts);
+        ParamBox rest;
+        CertifiedHit h;
+        const NewtonOutcome r = newton_certified(sys, box, h, st, &J, &rest);
+        check_outcome(pp, a, b, box, r, h.box, h.q, &rest, counts);
     }
     CHECK(counts[0] > 50);
     CHECK(counts[1] > 50);
@@ -151,10 +150,10 @@ TEST_CASE("Certified Newton's depth encloses the patch's depth, polynomial and r
         ClusterSystem storage;
         RaySystem sys(pp, a, b, storage);
         RenderStats st;
-        ParamBox hb;
-        Interval q;
-        if (newton_certified(pp, a, b, box, sys, hb, q, st, nullptr) != NewtonOutcome::hit)
-            continue;
+        CertifiedHit h;
+        if (newton_certified(sys, box, h, st, nullptr) != NewtonOutcome::hit) continue;
+        const ParamBox& hb = h.box;
+        const Interval& q = h.q;
         ++hits;
         for (double s : {hb.s.lo(), hb.s.mid(), hb.s.hi()})
             for (double t : {hb.t.lo(), hb.t.mid(), hb.t.hi()}) {
