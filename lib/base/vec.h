@@ -25,16 +25,22 @@ struct Vec3 {
     friend constexpr bool operator==(Vec3 a, Vec3 b) = default;
 };
 
-constexpr double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr double dot(Vec3 a, Vec3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 constexpr Vec3 cross(Vec3 a, Vec3 b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
+inline double norm(Vec3 a) {
+    return std::sqrt(dot(a, a));
+}
 inline Vec3 normalize(Vec3 a) {
     double n = norm(a);
     return n > 0 ? a / n : Vec3{};
 }
-inline double distance(Vec3 a, Vec3 b) { return norm(a - b); }
+inline double distance(Vec3 a, Vec3 b) {
+    return norm(a - b);
+}
 inline bool is_finite(Vec3 a) {
     return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
@@ -65,7 +71,9 @@ constexpr HPoint lerp(HPoint a, HPoint b, double t) {
     return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z),
             a.w + t * (b.w - a.w)};
 }
-constexpr Vec3 lerp(Vec3 a, Vec3 b, double t) { return a + t * (b - a); }
+constexpr Vec3 lerp(Vec3 a, Vec3 b, double t) {
+    return a + t * (b - a);
+}
 
 // Axis-aligned box; empty when lo > hi in some coordinate (the default).
 struct Box3 {

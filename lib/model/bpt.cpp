@@ -30,7 +30,9 @@ std::vector<Token> tokenize(const std::string& text) {
             ++k;
         } else {
             size_t e = k;
-            while (e < text.size() && !std::isspace(static_cast<unsigned char>(text[e])) && text[e] != ',' && text[e] != '#') ++e;
+            while (e < text.size() && !std::isspace(static_cast<unsigned char>(text[e])) &&
+                   text[e] != ',' && text[e] != '#')
+                ++e;
             out.push_back({std::string_view(text).substr(k, e - k), line});
             k = e;
         }
@@ -44,10 +46,12 @@ Model parse_bpt(const std::string& text, const std::string& file, const ModelLim
     const std::vector<Token> tok = tokenize(text);
     size_t at = 0;
     auto where = [&](size_t k) {
-        return "line " + std::to_string(k < tok.size() ? tok[k].line : (tok.empty() ? 1 : tok.back().line));
+        return "line " +
+               std::to_string(k < tok.size() ? tok[k].line : (tok.empty() ? 1 : tok.back().line));
     };
     auto number = [&](const std::string& what) {
-        if (at >= tok.size()) throw InputError(file, where(at), "unexpected end of file, expected " + what);
+        if (at >= tok.size())
+            throw InputError(file, where(at), "unexpected end of file, expected " + what);
         std::string s(tok[at].text);
         char* end = nullptr;
         double x = std::strtod(s.c_str(), &end);
@@ -62,7 +66,8 @@ Model parse_bpt(const std::string& text, const std::string& file, const ModelLim
         double x = number(what);
         if (x != std::floor(x) || x < static_cast<double>(lo) || x > static_cast<double>(hi))
             throw InputError(file, where(here),
-                             what + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+                             what + " must be an integer in " + std::to_string(lo) + ".." +
+                                 std::to_string(hi));
         return static_cast<long long>(x);
     };
     if (tok.empty()) throw InputError(file, "line 1", "empty file, expected the patch count");
@@ -97,7 +102,8 @@ Model parse_bpt(const std::string& text, const std::string& file, const ModelLim
         m.surfaces.push_back(std::move(s));
     }
     if (at != tok.size())
-        throw InputError(file, where(at), "unexpected '" + std::string(tok[at].text) + "' after the last patch");
+        throw InputError(file, where(at),
+                         "unexpected '" + std::string(tok[at].text) + "' after the last patch");
     return m;
 }
 

@@ -52,7 +52,7 @@ void check_against_reference(const Renders& r) {
 
 } // namespace
 
-TEST_CASE("INTRACY agrees with the per-pixel reference on the default scene", "[intracy]") {
+TEST_CASE("INTRACY agrees with the per-pixel reference on the default scene", "[intracy][heavy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
     const Renders r = render_all(scene, 96, 72);
     check_against_reference(r);
@@ -60,7 +60,7 @@ TEST_CASE("INTRACY agrees with the per-pixel reference on the default scene", "[
     CHECK(r.stats.single_pixel_fraction() < 0.6);
 }
 
-TEST_CASE("INTRACY on single patches: face-on, edge-on, grazing", "[intracy]") {
+TEST_CASE("INTRACY on single patches: face-on, edge-on, grazing", "[intracy][heavy]") {
     auto dir = test::scratch_dir("intracy-patch");
     SECTION("face-on") {
         check_against_reference(render_all(
@@ -76,7 +76,7 @@ TEST_CASE("INTRACY on single patches: face-on, edge-on, grazing", "[intracy]") {
     }
 }
 
-TEST_CASE("INTRACY with a pole of the teapot in view", "[intracy]") {
+TEST_CASE("INTRACY with a pole of the teapot in view", "[intracy][heavy]") {
     auto dir = test::scratch_dir("intracy-pole");
     const Model teapot = load_model(test::model_path("teapot.json"));
     Model lid;
@@ -86,7 +86,7 @@ TEST_CASE("INTRACY with a pole of the teapot in view", "[intracy]") {
         render_all(test::one_model_scene(dir, to_json(lid), {0.3, -0.4, 5}, {0, 0, 3}), 64, 48));
 }
 
-TEST_CASE("INTRACY gives the same image sequentially and in parallel", "[intracy]") {
+TEST_CASE("INTRACY gives the same image sequentially and in parallel", "[intracy][heavy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
     test::check_threads_agree(scene, RenderMethod::intracy, 80, 60);
 }
@@ -111,7 +111,7 @@ nlohmann::json plate(const std::string& name, double x0, double x1, double y0, d
 } // namespace
 
 TEST_CASE("INTRACY with a thin plate lying just above another and casting its shadow",
-          "[intracy]") {
+          "[intracy][heavy]") {
     // Depths of the floor and the mat overlap over a sub-screen (step 7 needs
     // the separating plane), and the floating roof's shadow on the floor is
     // blocked by a surface of its triangles, not by one.

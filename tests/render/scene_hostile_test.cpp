@@ -63,7 +63,7 @@ TEST_CASE("Scene coordinates beyond the render limit are refused", "[scene][host
     CHECK(error_of(dir / "ok.json").empty());
 }
 
-TEST_CASE("100,000 scene objects naming one model read it once", "[scene][hostile]") {
+TEST_CASE("100,000 scene objects naming one model read it once", "[scene][hostile][heavy]") {
     const auto dir = test::scratch_dir("scene-many-objects");
     std::filesystem::create_directories(dir / "sub");
     test::write_file(dir / "m.json", kModel);

@@ -25,7 +25,7 @@ Image draw(const Scene& s, RenderMethod m, bool dither = true) {
 
 } // namespace
 
-TEST_CASE("INTRACY and TRAY agree on the paper's scenes", "[scenes]") {
+TEST_CASE("INTRACY and TRAY agree on the paper's scenes", "[scenes][heavy]") {
     for (const char* name : {"scene1.json", "scene2.json", "scene2a.json", "scene3.json"}) {
         INFO(name);
         const Scene scene = load_scene(test::data_dir() / "scenes" / name);
@@ -38,7 +38,8 @@ TEST_CASE("INTRACY and TRAY agree on the paper's scenes", "[scenes]") {
     }
 }
 
-TEST_CASE("INTRACY without dither matches the exact reference on the paper's scenes", "[scenes]") {
+TEST_CASE("INTRACY without dither matches the exact reference on the paper's scenes",
+          "[scenes][heavy]") {
     for (const char* name : {"scene1.json", "scene3.json"}) {
         INFO(name);
         const Scene scene = load_scene(test::data_dir() / "scenes" / name);

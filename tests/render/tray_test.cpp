@@ -146,7 +146,7 @@ TEST_CASE("Watertight ray-triangle test", "[tray]") {
     CHECK(missed == 0);
 }
 
-TEST_CASE("TRAY agrees with INTRACY on the default scene", "[tray]") {
+TEST_CASE("TRAY agrees with INTRACY on the default scene", "[tray][heavy]") {
     check_tray_against_intracy(load_scene(test::data_dir() / "scenes" / "teapot.json"), 96, 72);
 }
 
@@ -162,7 +162,7 @@ TEST_CASE("TRAY agrees with INTRACY on single patches: face-on, grazing", "[tray
     }
 }
 
-TEST_CASE("TRAY agrees with INTRACY with a pole of the teapot in view", "[tray]") {
+TEST_CASE("TRAY agrees with INTRACY with a pole of the teapot in view", "[tray][heavy]") {
     auto dir = test::scratch_dir("tray-pole");
     const Model teapot = load_model(test::model_path("teapot.json"));
     Model lid;
@@ -171,7 +171,7 @@ TEST_CASE("TRAY agrees with INTRACY with a pole of the teapot in view", "[tray]"
                                64, 48);
 }
 
-TEST_CASE("TRAY gives the same image sequentially and in parallel", "[tray]") {
+TEST_CASE("TRAY gives the same image sequentially and in parallel", "[tray][heavy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
     test::check_threads_agree(scene, RenderMethod::tray, 80, 60);
 }

@@ -44,7 +44,8 @@ TEST_CASE("Partial derivatives agree with central differences", "[bspline]") {
             double v = s.v_min() + A(rng) * (s.v_max() - s.v_min());
             // Stay inside one knot span so the difference quotient is smooth.
             const double h = 1e-6;
-            int ku = find_span(3, s.size_u, s.knots_u, u), kv = find_span(4, s.size_v, s.knots_v, v);
+            int ku = find_span(3, s.size_u, s.knots_u, u),
+                kv = find_span(4, s.size_v, s.knots_v, v);
             if (u - h < s.knots_u[ku] || u + h > s.knots_u[ku + 1]) continue;
             if (v - h < s.knots_v[kv] || v + h > s.knots_v[kv + 1]) continue;
             SurfacePoint p = evaluate(s, u, v);
@@ -76,7 +77,8 @@ TEST_CASE("Surface normals of the bundled closed models point outward", "[bsplin
         INFO(name);
         const Model m = load_model(test::model_path(name));
         for (const BSplineSurface& s : m.surfaces) {
-            double u = 0.5 * (s.u_min() + s.u_max()) + 0.01, v = 0.5 * (s.v_min() + s.v_max()) + 0.02;
+            double u = 0.5 * (s.u_min() + s.u_max()) + 0.01,
+                   v = 0.5 * (s.v_min() + s.v_max()) + 0.02;
             SurfacePoint p = evaluate(s, u, v);
             Vec3 outward = p.point;
             if (std::string(name) != "sphere.json") { // away from the tube's core circle

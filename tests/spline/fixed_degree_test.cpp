@@ -59,7 +59,7 @@ TEST_CASE("evaluate() of a bicubic, biquadratic or bilinear patch gives the gene
 
 TEST_CASE("enclose_homogeneous() of a bicubic, biquadratic or bilinear patch gives the generic "
           "loops' enclosures, bit for bit",
-          "[spline][fixed_degree]") {
+          "[spline][fixed_degree][heavy]") {
     std::mt19937 rng(12);
     std::uniform_real_distribution<double> U(0.0, 1.0);
     const double special[] = {0.0, -0.0, 1e-310, -1e300, 1e308, std::nan("")};
@@ -119,7 +119,7 @@ TEST_CASE("ray_system_fixed (bicubic, biquadratic, bilinear) gives G = (X - a Z,
 
 TEST_CASE("enclose_homogeneous() with the frame: the same enclosures, and evaluate()'s point and "
           "derivatives up to rounding",
-          "[spline][fixed_degree]") {
+          "[spline][fixed_degree][heavy]") {
     // Bicubic, biquadratic, bilinear (de Casteljau's levels), and degree
     // (3, 2) patches (evaluate()'s frame), rational or not; the corners and
     // random points.

@@ -38,14 +38,15 @@ double extraction_error(const BSplineSurface& s, std::mt19937& rng, int samples)
 
 } // namespace
 
-TEST_CASE("Bezier extraction reproduces the teapot", "[knot_insertion]") {
+TEST_CASE("Bezier extraction reproduces the teapot", "[knot_insertion][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     REQUIRE(bezier_patches(m).size() == 32);
     std::mt19937 rng(1);
     for (const BSplineSurface& s : m.surfaces) CHECK(extraction_error(s, rng, 1000) <= 1e-12);
 }
 
-TEST_CASE("Bezier extraction reproduces random surfaces of degree 1 to 5", "[knot_insertion]") {
+TEST_CASE("Bezier extraction reproduces random surfaces of degree 1 to 5",
+          "[knot_insertion][heavy]") {
     std::mt19937 rng(2);
     for (int p = 1; p <= 5; ++p)
         for (int q = 1; q <= 5; ++q)

@@ -127,21 +127,22 @@ void check_closed(const std::string& name, long long euler) {
 
 } // namespace
 
-TEST_CASE("torus.igs tessellates closed, Euler characteristic 0", "[tessellation][cad]") {
+TEST_CASE("torus.igs tessellates closed, Euler characteristic 0", "[tessellation][cad][heavy]") {
     check_closed("torus.igs", 0);
 }
 
 TEST_CASE("rounded_cube.iges (seams within 7.8e-15) tessellates closed, Euler characteristic 2",
-          "[tessellation][cad]") {
+          "[tessellation][cad][heavy]") {
     check_closed("rounded_cube.iges", 2);
 }
 
 TEST_CASE("bug28366_fuselage.stp (pole, knife edge) tessellates closed, Euler characteristic 2",
-          "[tessellation][cad]") {
+          "[tessellation][cad][heavy]") {
     check_closed("bug28366_fuselage.stp", 2);
 }
 
-TEST_CASE("sunglasses_lens.igs is one open shell with one border loop", "[tessellation][cad]") {
+TEST_CASE("sunglasses_lens.igs is one open shell with one border loop",
+          "[tessellation][cad][heavy]") {
     for (double factor : {1.0, 100.0}) {
         INFO("1/" << factor);
         const Result r = tessellate_cad("sunglasses_lens.igs", factor);
@@ -152,7 +153,7 @@ TEST_CASE("sunglasses_lens.igs is one open shell with one border loop", "[tessel
     }
 }
 
-TEST_CASE("splinecage.stp tessellates as four separate sheets", "[tessellation][cad]") {
+TEST_CASE("splinecage.stp tessellates as four separate sheets", "[tessellation][cad][heavy]") {
     for (double factor : {1.0, 100.0}) {
         INFO("1/" << factor);
         const Result r = tessellate_cad("splinecage.stp", factor);
@@ -164,7 +165,7 @@ TEST_CASE("splinecage.stp tessellates as four separate sheets", "[tessellation][
 }
 
 TEST_CASE("tire.iges --skip-trimmed: no crack along a seam its surfaces share",
-          "[tessellation][cad]") {
+          "[tessellation][cad][heavy]") {
     for (double factor : {1.0, 100.0}) {
         INFO("1/" << factor);
         const Result r = tessellate_cad("tire.iges", factor, TrimmedFaces::skip, false);
@@ -173,7 +174,8 @@ TEST_CASE("tire.iges --skip-trimmed: no crack along a seam its surfaces share",
     }
 }
 
-TEST_CASE("generated box, sphere and torus STEP files tessellate closed", "[tessellation][cad]") {
+TEST_CASE("generated box, sphere and torus STEP files tessellate closed",
+          "[tessellation][cad][heavy]") {
     check_closed("generated/box.step", 2);
     check_closed("generated/sphere.step", 2);
     check_closed("generated/torus.step", 0);

@@ -9,7 +9,7 @@
 #include "test_util.h"
 
 #include <seamless/model/model.h>
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>
@@ -31,7 +31,7 @@ Model transformed(const Model& m, double scale, Vec3 offset) {
 
 } // namespace
 
-TEST_CASE("Huge and tiny coordinates tessellate to the same mesh, scaled", "[stiff]") {
+TEST_CASE("Huge and tiny coordinates tessellate to the same mesh, scaled", "[stiff][heavy]") {
     const Model teapot = load_model(test::model_path("teapot.json"));
     const Tessellation base = tessellate(teapot);
     for (int e : {-500, 500}) {
@@ -68,7 +68,7 @@ TEST_CASE("Huge and tiny coordinates tessellate to the same mesh, scaled", "[sti
     }
 }
 
-TEST_CASE("Enclosures hold sampled points at huge and tiny scales", "[stiff]") {
+TEST_CASE("Enclosures hold sampled points at huge and tiny scales", "[stiff][heavy]") {
     const Model teapot = load_model(test::model_path("teapot.json"));
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> U(0.0, 1.0);
@@ -96,7 +96,7 @@ TEST_CASE("Enclosures hold sampled points at huge and tiny scales", "[stiff]") {
     }
 }
 
-TEST_CASE("A model far from the origin stays crack-free", "[stiff]") {
+TEST_CASE("A model far from the origin stays crack-free", "[stiff][heavy]") {
     const Model m = transformed(load_model(test::model_path("torus.json")), 1.0, {1e6, -2e6, 3e6});
     const Tessellation t = tessellate(m);
     const test::MeshReport r = test::analyse_mesh(t.mesh, t.stats.d_max, false);
@@ -107,7 +107,8 @@ TEST_CASE("A model far from the origin stays crack-free", "[stiff]") {
     CHECK(r.euler() == 0);
 }
 
-TEST_CASE("Seams matched by geometry scale exactly and survive far from the origin", "[stiff]") {
+TEST_CASE("Seams matched by geometry scale exactly and survive far from the origin",
+          "[stiff][heavy]") {
     // The closed seam case with every mismatch at once (seam_cases.h).
     const std::vector<test::SeamCase> cases = test::closed_seam_cases();
     const auto it = std::find_if(cases.begin(), cases.end(), [](const test::SeamCase& c) {

@@ -99,24 +99,24 @@ void check_thread_counts(const std::string& model, double tolerance_of_d_max,
 } // namespace
 
 TEST_CASE("Tessellation output is the same on 1, 2 and 3 threads: teapot with a tolerance",
-          "[tessellation][parallel]") {
+          "[tessellation][parallel][heavy]") {
     check_thread_counts("teapot.json", 1e-3);
 }
 
 TEST_CASE("Tessellation output is the same on 1, 2 and 3 threads: CAD fuselage",
-          "[tessellation][parallel]") {
+          "[tessellation][parallel][heavy]") {
     check_thread_counts("cad/bug28366_fuselage.json", 1e-4);
 }
 
 TEST_CASE("Tessellation output is the same on 1, 2 and 3 threads: planarity test",
-          "[tessellation][parallel]") {
+          "[tessellation][parallel][heavy]") {
     // tolerance_of_d_max 0: the paper's planarity tolerances.
     check_thread_counts("teapot.json", 0);
     check_thread_counts("cad/rounded_cube.json", 0);
 }
 
 TEST_CASE("Tessellation output is the same on 1, 2 and 3 threads: naive rule",
-          "[tessellation][parallel]") {
+          "[tessellation][parallel][heavy]") {
     // Every vertex its exact point: numbered in parallel, also without a tolerance.
     check_thread_counts("teapot.json", 0, false);
     check_thread_counts("cad/bug28366_fuselage.json", 1e-4, false);

@@ -36,7 +36,7 @@ TEST_CASE("PassProgress: the first pass spans 0..0.9, each later one half of wha
 }
 
 TEST_CASE("TessellationOptions::progress: from 0 to 1 over the passes, the same mesh",
-          "[tessellation]") {
+          "[tessellation][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     TessellationOptions o;
     o.tolerance = 0.001; // two passes on the teapot

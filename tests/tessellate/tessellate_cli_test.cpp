@@ -13,7 +13,7 @@
 
 using namespace seamless;
 
-TEST_CASE("seamless tessellate writes a mesh and --stats JSON", "[cli]") {
+TEST_CASE("seamless tessellate writes a mesh and --stats JSON", "[cli][heavy]") {
     const auto dir = test::scratch_dir("tessellate-cli");
     const auto model = test::model_path("teacup.json");
     const auto out = dir / "cup.obj", stats = dir / "cup.json";
@@ -55,7 +55,8 @@ TEST_CASE("seamless tessellate rejects a missing model with status 2", "[cli]") 
     CHECK_FALSE(std::filesystem::exists(dir / "x.obj"));
 }
 
-TEST_CASE("seamless tessellate --seam-tolerance stitches surfaces that meet within it", "[cli]") {
+TEST_CASE("seamless tessellate --seam-tolerance stitches surfaces that meet within it",
+          "[cli][heavy]") {
     const auto dir = test::scratch_dir("tessellate-cli-seam");
     const auto model = dir / "two_sheets.json";
     test::write_file(model, to_json(test::two_sheets(0.3, 1e-6)));

@@ -123,7 +123,7 @@ void check_crack_free(const Case& c, double factor, bool t_junctions) {
 
 } // namespace
 
-TEST_CASE("crack-free tessellation at the default tolerances", "[tessellation]") {
+TEST_CASE("crack-free tessellation at the default tolerances", "[tessellation][heavy]") {
     for (const Case& c : cases()) check_crack_free(c, 1, true);
 }
 
@@ -131,7 +131,8 @@ TEST_CASE("crack-free tessellation at the default tolerances", "[tessellation]")
 // so that ctest runs them in parallel; every topology check and the geometric
 // T-junction search.
 #define CRACK_FREE_100X(file)                                                                      \
-    TEST_CASE("crack-free tessellation at 100x finer tolerances: " file, "[tessellation][fine]") { \
+    TEST_CASE("crack-free tessellation at 100x finer tolerances: " file,                           \
+              "[tessellation][fine][heavy]") {                                                     \
         check_crack_free(model_case(file), 100, true);                                             \
     }
 CRACK_FREE_100X("models/teapot.json")
@@ -147,7 +148,8 @@ CRACK_FREE_100X("models/repeated_knot.json")
 CRACK_FREE_100X("models/bilinear.json")
 CRACK_FREE_100X("models/extreme_weights.json")
 
-TEST_CASE("finer tolerances give more triangles and a smaller error bound", "[tessellation]") {
+TEST_CASE("finer tolerances give more triangles and a smaller error bound",
+          "[tessellation][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     const Tessellation coarse = tessellate(m, {});
     TessellationOptions fine_opt;
@@ -165,7 +167,7 @@ TEST_CASE("finer tolerances give more triangles and a smaller error bound", "[te
 }
 
 TEST_CASE("the naive curve-midpoint rule leaves cracks, the straight-midpoint rule none",
-          "[tessellation]") {
+          "[tessellation][heavy]") {
     for (const char* name : {"torus.json", "rounded_cube.json"}) {
         const Model m = load_model(test::shared_dir() / "models/cad" / name);
         TessellationOptions opt;
@@ -186,7 +188,7 @@ TEST_CASE("the naive curve-midpoint rule leaves cracks, the straight-midpoint ru
     }
 }
 
-TEST_CASE("poles give one vertex and no degenerate triangles", "[tessellation]") {
+TEST_CASE("poles give one vertex and no degenerate triangles", "[tessellation][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     const Tessellation t = tessellate(m, {});
     int at_top = 0, at_bottom = 0;
@@ -204,7 +206,7 @@ TEST_CASE("poles give one vertex and no degenerate triangles", "[tessellation]")
 }
 
 TEST_CASE("corner uvs lie on the source surface's domain and map to the vertices",
-          "[tessellation]") {
+          "[tessellation][heavy]") {
     const Model m = load_model(test::shared_dir() / "models/cad/torus.json");
     const Tessellation t = tessellate(m, {});
     double worst = 0;
@@ -223,7 +225,7 @@ TEST_CASE("corner uvs lie on the source surface's domain and map to the vertices
     CHECK(worst <= t.stats.max_error_bound);
 }
 
-TEST_CASE("certify = false leaves out the bound and nothing else", "[tessellation]") {
+TEST_CASE("certify = false leaves out the bound and nothing else", "[tessellation][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     TessellationOptions opt;
     const Tessellation with = tessellate(m, opt);

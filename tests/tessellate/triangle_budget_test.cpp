@@ -16,7 +16,8 @@
 
 using namespace seamless;
 
-TEST_CASE("max_triangles: the mesh's own count passes, one less is refused", "[tessellation]") {
+TEST_CASE("max_triangles: the mesh's own count passes, one less is refused",
+          "[tessellation][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     for (const double tolerance : {0.0, 0.01}) {
         TessellationOptions o;
@@ -37,7 +38,7 @@ TEST_CASE("max_triangles: the mesh's own count passes, one less is refused", "[t
 }
 
 TEST_CASE("max_triangles: an absurd tolerance is refused, not run out of memory",
-          "[tessellation]") {
+          "[tessellation][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     TessellationOptions o;
     o.tolerance = 1e-300;
@@ -52,7 +53,7 @@ TEST_CASE("max_triangles: an absurd tolerance is refused, not run out of memory"
     }
 }
 
-TEST_CASE("seamless tessellate --max-triangles: exit 2, one line, no output", "[cli]") {
+TEST_CASE("seamless tessellate --max-triangles: exit 2, one line, no output", "[cli][heavy]") {
     const auto dir = test::scratch_dir("tessellate-budget");
     const auto out = dir / "t.off";
     const auto r = test::run_cli("tessellate \"" + test::model_path("teapot.json").string() +

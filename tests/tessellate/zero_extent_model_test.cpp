@@ -34,7 +34,7 @@ TEST_CASE("A zero-extent model is an error at once, not a split to max_depth",
 }
 
 TEST_CASE("An extent below the rounding of the coordinates is an error at once",
-          "[tessellate][hostile]") {
+          "[tessellate][hostile][heavy]") {
     // Extent 1e-6 at distance 1e6 from the origin: 1e-12 of the magnitude.
     const Model far = parse_model_json(
         test::bilinear_model("[[1e6,0,0],[1e6,1e-12,0],[1.000000000001e6,0,0],[1e6,0,1e-12]]"),

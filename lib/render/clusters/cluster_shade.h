@@ -16,7 +16,7 @@
 #include <seamless/render/tray/blocking_surface.h>
 #include <seamless/render/tray/ray_cluster.h>
 #include <seamless/render/tray/trace.h>
-#include <seamless/spline/subpatch.h>
+#include <seamless/spline/enclosure/subpatch.h>
 
 #include <array>
 #include <vector>

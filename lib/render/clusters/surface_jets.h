@@ -32,7 +32,7 @@
 #include <seamless/render/shading/interval_jet2.h>
 #include <seamless/render/shading/shading.h>
 #include <seamless/render/subscreen/primary_cluster.h>
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 
 namespace seamless {
 

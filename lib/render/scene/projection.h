@@ -7,9 +7,9 @@
 #include <seamless/base/raw_array.h>
 #include <seamless/render/scene/camera.h>
 #include <seamless/render/scene/scene.h>
-#include <seamless/spline/enclosure.h>
-#include <seamless/spline/ray_patch.h>
-#include <seamless/spline/subpatch.h>
+#include <seamless/spline/enclosure/enclosure.h>
+#include <seamless/spline/enclosure/ray_patch.h>
+#include <seamless/spline/enclosure/subpatch.h>
 
 #include <cstddef>
 #include <memory>

@@ -7,8 +7,8 @@
 #pragma once
 
 #include <seamless/interval/interval_matrix.h>
-#include <seamless/spline/enclosure.h>
-#include <seamless/spline/subpatch.h>
+#include <seamless/spline/enclosure/enclosure.h>
+#include <seamless/spline/enclosure/subpatch.h>
 
 namespace seamless {
 

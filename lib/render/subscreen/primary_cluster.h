@@ -8,9 +8,9 @@
 // same narrowing on a mark's Bernstein coefficients is bezier_clip.h's.
 #pragma once
 
-#include <seamless/spline/enclosure.h>
-#include <seamless/spline/power_form.h>
-#include <seamless/spline/subpatch.h>
+#include <seamless/spline/enclosure/enclosure.h>
+#include <seamless/spline/enclosure/power_form.h>
+#include <seamless/spline/enclosure/subpatch.h>
 
 namespace seamless {
 

@@ -40,7 +40,7 @@ TEST_CASE("huge pages: huge_array holds n objects", "[base][huge_pages]") {
     }
 }
 
-TEST_CASE("reserve_huge keeps the elements and reserves at least n", "[base][huge_pages]") {
+TEST_CASE("reserve_huge keeps the elements and reserves at least n", "[base][huge_pages][heavy]") {
     // threads 2: the new storage is first touched by two workers (touch_pages).
     for (int threads : {1, 2})
         for (std::size_t size : {0u, 1u, 1000u, 300000u})
@@ -71,7 +71,7 @@ long minor_faults() {
 } // namespace
 
 TEST_CASE("keep_freed_memory: a freed 16 MB block's pages serve the next one",
-          "[base][huge_pages]") {
+          "[base][huge_pages][native-allocator]") {
     keep_freed_memory();
     constexpr std::size_t n = std::size_t{16} << 20; // 4,096 pages of 4 KB
     auto fill = [] {

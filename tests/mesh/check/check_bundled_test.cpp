@@ -112,7 +112,7 @@ CheckReport check_round_trip(const Model& m, const Case& c, const std::string& e
 } // namespace
 
 TEST_CASE("bundled models tessellate into meshes check passes, through .glb and .off",
-          "[check][bundled]") {
+          "[check][bundled][heavy]") {
     const std::vector<Case> cases{{"torus", true, 0},       {"sphere", true, 2},
                                   {"torus_exact", true, 0}, {"quarter_cylinder"},
                                   {"repeated_knot"},        {"bilinear"}};
@@ -144,7 +144,8 @@ TEST_CASE("bundled models tessellate into meshes check passes, through .glb and 
         }
 }
 
-TEST_CASE("teapot and teacup pass: the handles are shells touching the body", "[check][bundled]") {
+TEST_CASE("teapot and teacup pass: the handles are shells touching the body",
+          "[check][bundled][heavy]") {
     // shared/models/README.md: one handle end is a body corner (one welded
     // vertex where the handle's and the body's shells touch: a shell contact),
     // the other end (the teapot: both) pokes into the body. Shells touch only

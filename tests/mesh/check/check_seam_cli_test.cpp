@@ -70,7 +70,7 @@ std::string tessellate(const std::filesystem::path& dir, double dz, const std::s
 } // namespace
 
 TEST_CASE("check CLI: two sheets, one with an extra knot, stitched by the tessellator, pass",
-          "[check][seam][cli]") {
+          "[check][seam][cli][heavy]") {
     const auto dir = test::scratch_dir("check_seam_cli_stitched");
     for (const char* options : {"", "--eps1 0.00002 --eps2 0.0004"}) {
         const auto mesh = tessellate(dir, 0, options);

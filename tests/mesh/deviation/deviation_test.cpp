@@ -43,7 +43,7 @@ void check_within_bound(const Model& m, const Tessellation& t, const Deviation& 
 
 } // namespace
 
-TEST_CASE("measured deviation stays below the error bound", "[deviation]") {
+TEST_CASE("measured deviation stays below the error bound", "[deviation][heavy]") {
     for (const char* name : {"teapot.json", "torus.json", "torus_exact.json", "bilinear.json"}) {
         const Model m = load_model(test::model_path(name));
         for (double factor : {10.0, 1.0}) {
@@ -53,7 +53,7 @@ TEST_CASE("measured deviation stays below the error bound", "[deviation]") {
     }
 }
 
-TEST_CASE("finer tolerances measure a smaller deviation", "[deviation]") {
+TEST_CASE("finer tolerances measure a smaller deviation", "[deviation][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     const Tessellation coarse = at_factor(m, 1), fine = at_factor(m, 0.1);
     const Deviation dc = measure_deviation(m, coarse), df = measure_deviation(m, fine);
@@ -61,7 +61,7 @@ TEST_CASE("finer tolerances measure a smaller deviation", "[deviation]") {
     CHECK(df.surface_to_mesh.rms < dc.surface_to_mesh.rms / 4);
 }
 
-TEST_CASE("the result does not depend on the thread count", "[deviation]") {
+TEST_CASE("the result does not depend on the thread count", "[deviation][heavy]") {
     const Model m = load_model(test::model_path("torus.json"));
     const Tessellation t = at_factor(m, 1);
     DeviationOptions one, two;
@@ -109,7 +109,7 @@ TEST_CASE("a flat patch deviates by rounding only; Newton finds it, the paramete
     CHECK(d.max() <= t.stats.max_error_bound);
 }
 
-TEST_CASE("a sweep scales both tolerances and stops at the triangle limit", "[deviation]") {
+TEST_CASE("a sweep scales both tolerances and stops at the triangle limit", "[deviation][heavy]") {
     const Model m = load_model(test::model_path("torus.json"));
     SweepOptions opt;
     opt.first_decade = 1;
@@ -134,7 +134,7 @@ TEST_CASE("a sweep scales both tolerances and stops at the triangle limit", "[de
     }
 }
 
-TEST_CASE("measured deviation stays below the error bound across seams", "[deviation]") {
+TEST_CASE("measured deviation stays below the error bound across seams", "[deviation][heavy]") {
     // Seam vertices of the other side sit at their projected parameter (and,
     // within a gap, off this side's surface): the bound must still hold.
     for (const test::SeamCase& c : test::closed_seam_cases()) {

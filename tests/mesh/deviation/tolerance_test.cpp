@@ -71,7 +71,7 @@ void check_tolerance(const Model& m, double relative, bool tight) {
 
 } // namespace
 
-TEST_CASE("a requested tolerance is certified and met within a factor 2", "[tolerance]") {
+TEST_CASE("a requested tolerance is certified and met within a factor 2", "[tolerance][heavy]") {
     for (const char* name : {"teapot.json", "teacup.json", "teaspoon.json", "torus.json",
                              "sphere.json", "torus_exact.json"})
         for (double relative : {1e-2, 1e-3}) {
@@ -80,7 +80,8 @@ TEST_CASE("a requested tolerance is certified and met within a factor 2", "[tole
         }
 }
 
-TEST_CASE("tolerances from 1e-1 to 1e-5 of d_max stay certified and crack-free", "[tolerance]") {
+TEST_CASE("tolerances from 1e-1 to 1e-5 of d_max stay certified and crack-free",
+          "[tolerance][heavy]") {
     const Model sphere = load_model(test::model_path("sphere.json"));
     for (double relative : {1e-1, 1e-4, 1e-5}) check_tolerance(sphere, relative, false);
     // The fuselage, whose cylinder rulings are straight but unevenly
@@ -99,7 +100,8 @@ TEST_CASE("tolerances from 1e-1 to 1e-5 of d_max stay certified and crack-free",
 // the tolerance whose final bound, with a neighbour's vertex on a side, came
 // out a few percent above it (teacup, fuselage). The pass loop must end with
 // every subpatch within the tolerance.
-TEST_CASE("the tolerance is reached where earlier passes left subpatches above it", "[tolerance]") {
+TEST_CASE("the tolerance is reached where earlier passes left subpatches above it",
+          "[tolerance][heavy]") {
     const Model teapot = load_model(test::model_path("teapot.json"));
     check_tolerance(teapot, 1e-4, false);
     const Model teacup = load_model(test::model_path("teacup.json"));
@@ -112,7 +114,7 @@ TEST_CASE("the tolerance is reached where earlier passes left subpatches above i
 // its knob and lid (patches 20 to 27: the knob's pole, and the lid's seams
 // where neighbours ended a level apart) are the hard part, in seconds.
 TEST_CASE("the teapot's lid and knob at 1e-5 d_max: certified, welded, no T-junctions",
-          "[tolerance]") {
+          "[tolerance][heavy]") {
     const Model teapot = load_model(test::model_path("teapot.json"));
     const std::vector<BezierPatch> all = bezier_patches(teapot);
     REQUIRE(all.size() == 32);

@@ -30,7 +30,7 @@ Image draw(const Scene& s, RenderMethod m, bool dither, bool fill, RenderStats* 
 
 TEST_CASE("Pixels painted from a cluster certificate agree with split sub-screens, TRAY and the "
           "reference",
-          "[certified_pixels]") {
+          "[certified_pixels][heavy]") {
     for (const char* name : {"scene3.json", "teapot.json"}) {
         INFO(name);
         const Scene scene = load_scene(test::data_dir() / "scenes" / name);
@@ -69,7 +69,7 @@ TEST_CASE("Pixels painted from a cluster certificate agree with split sub-screen
 }
 
 TEST_CASE("Pixels painted from a cluster certificate are the same sequentially and in parallel",
-          "[certified_pixels]") {
+          "[certified_pixels][heavy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "scene3.json");
     test::check_threads_agree(scene, RenderMethod::intracy, 160, 120);
 }

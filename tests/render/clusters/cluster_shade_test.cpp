@@ -31,7 +31,7 @@ bool holds(Interval h, double x) {
 } // namespace
 
 TEST_CASE("restricted subpatches hold the patch's points in camera and world coordinates",
-          "[cluster_shade]") {
+          "[cluster_shade][heavy]") {
     int rational = 0; // derivatives checked on rational patches (scene 1's pan and glass)
     for (const char* name : {"teapot.json", "scene1.json"}) {
         const Scene scene = load_scene(test::data_dir() / "scenes" / name);

@@ -176,13 +176,13 @@ std::string read_text(const std::filesystem::path& p) {
 } // namespace
 
 TEST_CASE("Intensity jets hold the sampled partials: teapot under its own light",
-          "[second_order]") {
+          "[second_order][heavy]") {
     const JetTally t = teapot_jets(0);
     check_common(t);
     CHECK(t.checked_second > 5000);
 }
 
-TEST_CASE("Intensity jets hold the sampled partials: highlights", "[second_order]") {
+TEST_CASE("Intensity jets hold the sampled partials: highlights", "[second_order][heavy]") {
     // A light beside the eye: highlights face the viewer.
     const JetTally t = teapot_jets(1, {0.05, -0.05, 0.0});
     check_common(t);
@@ -190,7 +190,7 @@ TEST_CASE("Intensity jets hold the sampled partials: highlights", "[second_order
     CHECK(t.checked_second > 5000);
 }
 
-TEST_CASE("Intensity jets hold the sampled partials: grazing light", "[second_order]") {
+TEST_CASE("Intensity jets hold the sampled partials: grazing light", "[second_order][heavy]") {
     // Far to the side at the teapot's depth (about 9 in camera coordinates):
     // the diffuse term's terminator runs down the teapot's visible side.
     const JetTally t = teapot_jets(1, {1000.0, 0.0, 9.0});
@@ -199,7 +199,7 @@ TEST_CASE("Intensity jets hold the sampled partials: grazing light", "[second_or
     CHECK(t.checked_second > 2000);
 }
 
-TEST_CASE("Intensity jets of a shadowed cluster are constant", "[second_order]") {
+TEST_CASE("Intensity jets of a shadowed cluster are constant", "[second_order][heavy]") {
     // No light: what SHADE passes when no light reaches the cluster.
     const JetTally t = teapot_jets(2);
     check_common(t);
@@ -207,7 +207,8 @@ TEST_CASE("Intensity jets of a shadowed cluster are constant", "[second_order]")
     CHECK(t.checked_second > 1000);
 }
 
-TEST_CASE("Intensity jets hold the sampled partials: a rational cylinder", "[second_order]") {
+TEST_CASE("Intensity jets hold the sampled partials: a rational cylinder",
+          "[second_order][heavy]") {
     const auto dir = test::scratch_dir("intensity-jets-cylinder");
     const Scene scene =
         test::one_model_scene(dir, read_text(test::model_path("quarter_cylinder.json")),

@@ -99,7 +99,7 @@ Scene glass_scene(const std::filesystem::path& dir) {
 
 } // namespace
 
-TEST_CASE("A glass plate is painted by refracted clusters", "[mirror]") {
+TEST_CASE("A glass plate is painted by refracted clusters", "[mirror][heavy]") {
     const Scene scene = glass_scene(test::scratch_dir("glass-cluster"));
     RenderOptions o;
     o.dither = false;
@@ -118,7 +118,7 @@ TEST_CASE("A glass plate is painted by refracted clusters", "[mirror]") {
     CHECK(dithered.secondary_clusters > 0);
 }
 
-TEST_CASE("A mirror facing a wall is painted by reflected clusters", "[mirror]") {
+TEST_CASE("A mirror facing a wall is painted by reflected clusters", "[mirror][heavy]") {
     const Scene scene = mirror_scene(test::scratch_dir("mirror-cluster"));
     RenderOptions o;
     o.dither = false;

@@ -137,7 +137,7 @@ Tally check_clusters(const Scene& scene, int w, int h, int block, std::vector<in
 
 } // namespace
 
-TEST_CASE("The second-order bound holds against per-pixel intensities", "[second_order]") {
+TEST_CASE("The second-order bound holds against per-pixel intensities", "[second_order][heavy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
     Tally t = check_clusters(scene, 320, 240, 8, {16, 256});
     std::sort(t.ratios.begin(), t.ratios.end());
@@ -159,7 +159,7 @@ TEST_CASE("The second-order bound holds against per-pixel intensities", "[second
 }
 
 TEST_CASE("INTRACY with the second-order step 9 agrees with the per-pixel reference",
-          "[second_order]") {
+          "[second_order][heavy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "teapot.json");
     RenderOptions o;
     o.width = 96;

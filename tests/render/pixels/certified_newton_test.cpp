@@ -3,7 +3,7 @@
 // covering method: a box it declares missed holds no hit, a hit it certifies
 // is the only hit in the box and lies in its small box.
 #include <seamless/render/pixels/certified_newton.h>
-#include <seamless/spline/ray_patch.h>
+#include <seamless/spline/enclosure/ray_patch.h>
 
 #include <catch2/catch.hpp>
 
@@ -55,7 +55,7 @@ void check_outcome(const ProjectedPatch& pp, double a, double b, const ParamBox&
 
 } // namespace
 
-TEST_CASE("Certified Newton agrees with the covering method", "[certified_newton]") {
+TEST_CASE("Certified Newton agrees with the covering method", "[certified_newton][heavy]") {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> U(-0.25, 0.25), S(0.0, 1.0);
     int counts[3] = {0, 0, 0}; // hits, misses, undecided
@@ -219,7 +219,7 @@ TEST_CASE("Krawczyk's test certifies only where the covering method finds the on
 }
 
 TEST_CASE("A mark Jacobian's C A and |I - C A| enclose every matrix of A preconditioned",
-          "[certified_newton]") {
+          "[certified_newton][heavy]") {
     // C A is formed in doubles with a relative slack: for matrices drawn from
     // A (corners and inner points), C A~ lies in CA and |delta - (C A~)| <= E.
     std::mt19937 rng(5);

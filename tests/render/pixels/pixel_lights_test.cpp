@@ -19,7 +19,7 @@
 using namespace seamless;
 
 TEST_CASE("A light certified for a box of hit points reaches every point of the box",
-          "[pixel_lights]") {
+          "[pixel_lights][heavy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "scene3.json");
     const TriangleScene ts = build_triangle_scene(scene);
     // The light planes kept for the render (add_light_planes, formed on first

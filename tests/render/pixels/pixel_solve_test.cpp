@@ -6,7 +6,7 @@
 #include <seamless/render/pixels/pixel_solve.h>
 #include <seamless/render/scene/scene.h>
 #include <seamless/render/subscreen/shared_marks.h>
-#include <seamless/spline/ray_patch.h>
+#include <seamless/spline/enclosure/ray_patch.h>
 
 #include <catch2/catch.hpp>
 
@@ -101,7 +101,7 @@ struct TwinSolves {
 } // namespace
 
 TEST_CASE("Pixels of a small sub-screen solved with shared marks agree with each pixel alone",
-          "[pixel_solve]") {
+          "[pixel_solve][heavy]") {
     // paint_pixels' path (SharedMarks: Newton on the mark's whole box from the
     // previous pixel's hit, the ray's clip only where that fails, one Jacobian
     // per mark for the sub-screen) against every mark solved for the pixel on

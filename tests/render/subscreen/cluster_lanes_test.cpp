@@ -23,7 +23,8 @@ std::vector<Interval> random_coefficients(std::mt19937& rng, SubpatchShape sh, i
 
 } // namespace
 
-TEST_CASE("Lane clipping ranges equal the scalar ones bit for bit", "[primary_cluster][lanes]") {
+TEST_CASE("Lane clipping ranges equal the scalar ones bit for bit",
+          "[primary_cluster][lanes][heavy]") {
     constexpr int K = BezierPatch::kMaxOrder;
     std::mt19937 rng(77);
     std::uniform_int_distribution<int> deg(0, K - 1), dim(3, 4);

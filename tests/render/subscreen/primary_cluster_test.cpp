@@ -6,7 +6,7 @@
 #include <seamless/render/subscreen/bezier_clip.h>
 #include <seamless/render/subscreen/mark.h>
 #include <seamless/render/subscreen/primary_cluster.h>
-#include <seamless/spline/ray_patch.h>
+#include <seamless/spline/enclosure/ray_patch.h>
 
 #include <catch2/catch.hpp>
 
@@ -45,7 +45,7 @@ void for_sampled_rays(std::mt19937& rng, const PatchForms& f, Interval a, Interv
 
 } // namespace
 
-TEST_CASE("Theorem 10 narrowing keeps every hit of the cluster", "[primary_cluster]") {
+TEST_CASE("Theorem 10 narrowing keeps every hit of the cluster", "[primary_cluster][heavy]") {
     std::mt19937 rng(21);
     int certified = 0, narrowed = 0;
     for (int n = 0; n < 200; ++n) {
@@ -165,7 +165,8 @@ NarrowCounts narrow_and_separate(std::mt19937& rng, MakePatch make_patch,
 
 } // namespace
 
-TEST_CASE("Subpatch narrowing, bisection and separation keep every hit", "[primary_cluster]") {
+TEST_CASE("Subpatch narrowing, bisection and separation keep every hit",
+          "[primary_cluster][heavy]") {
     std::mt19937 rng(33);
     const NarrowCounts domes = narrow_and_separate(rng, dome, random_cluster);
     CHECK(domes.narrowed > 50);

@@ -41,7 +41,7 @@ void mixed_case(std::mt19937& rng, bool wide, Vec3& a, Vec3& b, Vec3& c, RayClus
 
 } // namespace
 
-TEST_CASE("Clusters declared to miss a triangle have no ray that hits it", "[ray_cluster]") {
+TEST_CASE("Clusters declared to miss a triangle have no ray that hits it", "[ray_cluster][heavy]") {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.2);
     int misses = 0, hits_seen = 0;
@@ -97,7 +97,8 @@ TEST_CASE("A thin cluster is decided exactly away from the triangle's edges", "[
     CHECK_FALSE(may_hit_triangle(cl, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
 }
 
-TEST_CASE("ClusterHull rejects only boxes that no ray of the cluster enters", "[ray_cluster]") {
+TEST_CASE("ClusterHull rejects only boxes that no ray of the cluster enters",
+          "[ray_cluster][heavy]") {
     std::mt19937 rng(12);
     std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.1);
     int rejected = 0;
@@ -230,7 +231,7 @@ TEST_CASE("may_cover_triangle refutes only triangles that the cluster does not c
 }
 
 TEST_CASE("A light's pyramid declared to miss a triangle has no segment that hits it",
-          "[ray_cluster]") {
+          "[ray_cluster][heavy]") {
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.3);
     int misses = 0, hits_seen = 0, tighter = 0;
@@ -348,7 +349,7 @@ TEST_CASE("Mesh neighbours agree with a count of every directed edge on a messy 
 }
 
 TEST_CASE("A light blocked by a surface of triangles has every segment crossing it",
-          "[ray_cluster]") {
+          "[ray_cluster][heavy]") {
     std::mt19937 rng(23);
     std::uniform_real_distribution<double> U(-1, 1), W(0.0, 0.25);
     int blocked = 0, beyond_one = 0, open = 0;

@@ -43,7 +43,7 @@ bool any_hit_every_triangle(const TriangleScene& ts, Vec3 o, Vec3 d, double t_mi
 } // namespace
 
 TEST_CASE("Shadow and nearest rays through the root hierarchy agree with the plain traversal",
-          "[trace]") {
+          "[trace][heavy]") {
     const Scene scene = load_scene(test::data_dir() / "scenes" / "scene3.json");
     const TriangleScene ts = build_triangle_scene(scene);
     TriangleScene plain = ts; // no hierarchy: the roots one after another
@@ -95,7 +95,7 @@ TEST_CASE("Shadow and nearest rays through the root hierarchy agree with the pla
 }
 
 TEST_CASE("The root hierarchy holds every root with triangles once, inside its parents",
-          "[trace]") {
+          "[trace][heavy]") {
     for (const char* name : {"scene2.json", "scene3.json", "teapot.json"}) {
         const Scene scene = load_scene(test::data_dir() / "scenes" / name);
         const TriangleScene ts = build_triangle_scene(scene);

@@ -55,7 +55,10 @@ json material(Vec3 color, double diffuse, double specular, double reflect = 0, d
 
 struct ObjectSpec {
     std::string name;
-    json surfaces;
+    // A vector, not a json: `json{x}` of one json x is x itself under clang
+    // and [x] under gcc (CWG 2137), so a braced list of one surface would be
+    // written as an object by one compiler.
+    std::vector<json> surfaces;
     std::string material;
 };
 
@@ -66,7 +69,7 @@ Scene make_scene(const std::filesystem::path& dir, const std::vector<ObjectSpec>
     json objs = json::array();
     for (const ObjectSpec& o : objects) {
         test::write_file(dir / (o.name + ".json"),
-                         json{{"version", 1}, {"surfaces", o.surfaces}}.dump());
+                         json{{"version", 1}, {"surfaces", json(o.surfaces)}}.dump());
         objs.push_back({{"model", o.name + ".json"}, {"material", o.material}});
     }
     const json s = {{"version", 1},
@@ -263,7 +266,7 @@ TEST_CASE("TRAY with SHADE gives the same image sequentially and in parallel on 
     test::check_threads_agree(scene, RenderMethod::tray, 80, 60);
 }
 
-TEST_CASE("The scenes of section 8 load and render with TRAY", "[trace]") {
+TEST_CASE("The scenes of section 8 load and render with TRAY", "[trace][heavy]") {
     struct Expect {
         const char* file;
         size_t objects, lights_on;

@@ -193,7 +193,7 @@ void check_subpatches(const Model& m, const TessellationOptions& opt, int grid, 
 } // namespace
 
 TEST_CASE("the error bound holds by sampling on the teapot, spoon, torus and cylinder",
-          "[error_bound]") {
+          "[error_bound][heavy]") {
     for (auto path : {test::model_path("teapot.json"), test::model_path("teaspoon.json"),
                       test::shared_dir() / "models/cad/torus.json"}) {
         const Model m = load_model(path);
@@ -227,7 +227,7 @@ BezierPatch drifting_paraboloid(double h) {
 } // namespace
 
 TEST_CASE("fan_bound is tight on a curved patch with a non-uniform parametrisation",
-          "[error_bound]") {
+          "[error_bound][heavy]") {
     // (Smaller h: the tangential remainder grows like 1/h against the normal
     // deviation and the bound loosens, as error_bound.h says.)
     for (double h : {0.4, 0.1}) {
@@ -284,7 +284,7 @@ TEST_CASE("certified_fan_bound counts a side vertex off the straight side", "[er
 
 TEST_CASE("certified_fan_bound with a target: still a bound, and at or below the target "
           "wherever the untargeted one is",
-          "[error_bound]") {
+          "[error_bound][heavy]") {
     // The drifting paraboloid patch above (tangential drift: the coarse
     // refinements and the feet-free first try are looser than the tightest).
     for (double h : {0.4, 0.1}) {

@@ -17,7 +17,7 @@
 using namespace seamless;
 
 TEST_CASE("bounds kept with their rings are found again, kept without computed again the same",
-          "[fan_certification]") {
+          "[fan_certification][heavy]") {
     const test::TeapotPass in;
     const auto& patches = in.patches;
     const int np = static_cast<int>(patches.size());

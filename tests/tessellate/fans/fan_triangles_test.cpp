@@ -16,7 +16,7 @@
 
 using namespace seamless;
 
-TEST_CASE("fan normals are unit_normal at every slot and centre", "[fan_triangles]") {
+TEST_CASE("fan normals are unit_normal at every slot and centre", "[fan_triangles][heavy]") {
     const test::TeapotPass in;
     const auto& patches = in.patches;
     const auto& t = in.t;

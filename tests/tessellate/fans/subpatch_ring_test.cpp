@@ -31,7 +31,8 @@ void check_same(const SubpatchRings& a, const SubpatchRings& b) {
 
 } // namespace
 
-TEST_CASE("rings copied from a previous pass are the rings collected afresh", "[subpatch_ring]") {
+TEST_CASE("rings copied from a previous pass are the rings collected afresh",
+          "[subpatch_ring][heavy]") {
     const test::TeapotPass in;
     const auto& patches = in.patches;
     const auto& t = in.t;

@@ -14,7 +14,7 @@
 using namespace seamless;
 
 TEST_CASE("vertices of rings kept from a previous pass keep their numbers and positions",
-          "[vertex_numbering]") {
+          "[vertex_numbering][heavy]") {
     const test::TeapotPass in;
     const auto& patches = in.patches;
     const auto& t = in.t;

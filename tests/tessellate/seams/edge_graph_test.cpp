@@ -58,14 +58,14 @@ const test::SeamCase& closed_case(size_t i) {
 
 } // namespace
 
-TEST_CASE("closed seam cases tessellate closed at the default tolerances", "[edge_graph]") {
+TEST_CASE("closed seam cases tessellate closed at the default tolerances", "[edge_graph][heavy]") {
     for (const test::SeamCase& c : test::closed_seam_cases()) check_closed(c, 1);
 }
 
 // 100x finer: one test case each, so that ctest runs them in parallel.
 #define SEAM_CASE_100X(i)                                                                          \
     TEST_CASE("closed seam case " #i " tessellates closed at 100x finer tolerances",               \
-              "[edge_graph][fine]") {                                                              \
+              "[edge_graph][fine][heavy]") {                                                       \
         check_closed(closed_case(i), 100);                                                         \
     }
 SEAM_CASE_100X(0)
@@ -126,7 +126,7 @@ TEST_CASE("the same box with a gap of 1e-6 is not stitched at the default seam t
 }
 
 TEST_CASE("two sheets sharing x = 1, one with an extra knot along it, are one shell",
-          "[edge_graph]") {
+          "[edge_graph][heavy]") {
     for (double knot : {0.3, 0.5, std::sqrt(0.5)})
         for (double factor : {1.0, 100.0}) {
             const Model m = test::two_sheets(knot);
@@ -184,7 +184,7 @@ TEST_CASE("boundaries that only cross or touch are no seam", "[edge_graph]") {
     CHECK(test::count_shells(t.mesh) == 2); // A and C share a corner vertex, B apart
 }
 
-TEST_CASE("a chain of edges on one edge: both sides get the same vertices", "[edge_graph]") {
+TEST_CASE("a chain of edges on one edge: both sides get the same vertices", "[edge_graph][heavy]") {
     // A T: the lower sheet's top edge against the edges of two upper sheets
     // (one upper sheet split at an irrational parameter), the left one refined
     // by two knots, the right one by one.
@@ -219,7 +219,7 @@ TEST_CASE("a chain of edges on one edge: both sides get the same vertices", "[ed
 }
 
 TEST_CASE("a patch corner of one side is inserted into the other at its own parameter",
-          "[edge_graph]") {
+          "[edge_graph][heavy]") {
     // two_sheets: both sides of x = 1 run in v with the same parametrisation,
     // so the right sheet's patch corner at the knot lands on the left sheet's
     // edge at that parameter, and the left sheet's grid vertices are either
@@ -249,7 +249,7 @@ TEST_CASE("a patch corner of one side is inserted into the other at its own para
     for (const SeamPoint& p : seam) CHECK(p.key.kind != 2);
 }
 
-TEST_CASE("edges that overlap in part share the overlap only", "[edge_graph]") {
+TEST_CASE("edges that overlap in part share the overlap only", "[edge_graph][heavy]") {
     // Lower sheet over x in [0, 1.5], upper over [0.5, 2], both cut from
     // sheets over [0, 2] that share the curve y = 1: the edges overlap on
     // [0.5, 1.5], where neither edge's end lies inside the other's range.

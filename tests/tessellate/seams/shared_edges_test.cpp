@@ -52,7 +52,7 @@ TEST_CASE("a periodic torus matches its own seams and welds its corners", "[shar
 }
 
 TEST_CASE("vertices inside a coarse side lie on its straight segment (Q0 = (Q1+Q2)/2)",
-          "[shared_edges]") {
+          "[shared_edges][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     const auto patches = bezier_patches(m);
     const Tessellation t = tessellate(m, patches, {});
@@ -114,7 +114,7 @@ std::vector<std::array<int, 3>> segments_of(const EdgeRegistry& reg, int line) {
 } // namespace
 
 TEST_CASE("the edge registry is the same for any thread count and subpatch order",
-          "[shared_edges]") {
+          "[shared_edges][heavy]") {
     const test::TeapotPass in;
     const auto& t = in.t;
     const auto& bm = in.match;
@@ -157,7 +157,7 @@ TEST_CASE("the edge registry is the same for any thread count and subpatch order
 }
 
 TEST_CASE("a registry taking patches from a previous pass's is the registry built afresh",
-          "[shared_edges]") {
+          "[shared_edges][heavy]") {
     const test::TeapotPass in;
     const EdgeRegistry& fresh = in.reg;
     const int np = static_cast<int>(in.patches.size());

@@ -39,7 +39,7 @@ Oriented tessellate_box(const std::vector<int>& reversed, bool orient) {
 } // namespace
 
 TEST_CASE("surface orientation: faces reversed against their neighbours are flipped back",
-          "[tessellate][orientation]") {
+          "[tessellate][orientation][heavy]") {
     const Oriented raw = tessellate_box({1, 3}, false);
     CHECK(raw.report.misoriented_edges > 0);
     const Oriented fixed = tessellate_box({1, 3}, true);
@@ -51,7 +51,7 @@ TEST_CASE("surface orientation: faces reversed against their neighbours are flip
 }
 
 TEST_CASE("surface orientation: a closed model facing inward is turned outward",
-          "[tessellate][orientation]") {
+          "[tessellate][orientation][heavy]") {
     const Oriented raw = tessellate_box({0, 1, 2, 3, 4, 5}, false);
     CHECK(raw.report.misoriented_edges == 0);
     CHECK(raw.volume < 0);

@@ -29,7 +29,7 @@ Box3 triangle_box(const TriangleMesh& m, int f) {
 
 } // namespace
 
-TEST_CASE("patch tree hulls contain their triangles, sons and subpatches", "[patch_tree]") {
+TEST_CASE("patch tree hulls contain their triangles, sons and subpatches", "[patch_tree][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     const auto patches = bezier_patches(m);
     const Tessellation t = tessellate(m, patches, {});
@@ -73,7 +73,8 @@ TEST_CASE("patch tree hulls contain their triangles, sons and subpatches", "[pat
     }
 }
 
-TEST_CASE("traversal visits exactly the triangles whose hulls meet the query", "[patch_tree]") {
+TEST_CASE("traversal visits exactly the triangles whose hulls meet the query",
+          "[patch_tree][heavy]") {
     const Model m = load_model(test::model_path("teacup.json"));
     const Tessellation t = tessellate(m, {});
     for (const Box3& q : {Box3{{-0.2, 0.3, -1}, {0.1, 0.5, 1}}, Box3{{0.9, 0, -0.1}, {1, 0.1, 0.1}},

@@ -42,7 +42,7 @@ BezierPatch subpatch_of(BezierPatch b, ParamRect r) {
 
 } // namespace
 
-TEST_CASE("subpatches tile each patch and pass the planarity test", "[subdivision]") {
+TEST_CASE("subpatches tile each patch and pass the planarity test", "[subdivision][heavy]") {
     const Model m = load_model(test::model_path("teapot.json"));
     const auto patches = bezier_patches(m);
     const double dm = d_max(m);
@@ -110,7 +110,7 @@ TEST_CASE("the tolerance criterion accepts a subpatch only with its fan bound wi
     CHECK(out2.front().depth > out[0].depth);
 }
 
-TEST_CASE("an angle criterion splits further", "[subdivision]") {
+TEST_CASE("an angle criterion splits further", "[subdivision][heavy]") {
     const Model m = load_model(test::model_path("torus.json"));
     const auto patches = bezier_patches(m);
     SubdivisionOptions coarse;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 
 #include "spline/patch_samples.h"
 #include "test_util.h"
@@ -111,7 +111,7 @@ double overestimation_slope(const BezierPatch& b, const PatchForms& f, double s0
 
 } // namespace
 
-TEST_CASE("enclosures of teapot patches contain sampled values", "[enclosure]") {
+TEST_CASE("enclosures of teapot patches contain sampled values", "[enclosure][heavy]") {
     std::mt19937_64 rng(31);
     const auto patches = bezier_patches(load_model(test::model_path("teapot.json")));
     long long checked = 0;
@@ -123,7 +123,8 @@ TEST_CASE("enclosures of teapot patches contain sampled values", "[enclosure]") 
     CHECK(checked == 32 * 7 * 10000);
 }
 
-TEST_CASE("enclosures of random patches of degree 1 to 5 contain sampled values", "[enclosure]") {
+TEST_CASE("enclosures of random patches of degree 1 to 5 contain sampled values",
+          "[enclosure][heavy]") {
     std::mt19937_64 rng(32);
     for (int p = 1; p <= 5; ++p)
         for (int q = 1; q <= 5; ++q)
@@ -195,7 +196,7 @@ TEST_CASE("Lemma 2: range of a polynomial with interval coefficients over u >= 0
 }
 
 TEST_CASE("mean value form: the overestimation shrinks quadratically (Proposition 1)",
-          "[enclosure]") {
+          "[enclosure][heavy]") {
     std::mt19937_64 rng(35);
     for (bool rational : {false, true})
         for (int trial = 0; trial < 3; ++trial) {

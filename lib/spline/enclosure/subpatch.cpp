@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/spline/subpatch.h>
+#include <seamless/spline/enclosure/subpatch.h>
 
 #include <seamless/base/check.h>
 #include <seamless/interval/lanes.h>

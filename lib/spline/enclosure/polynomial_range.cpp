@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/check.h>
 #include <seamless/interval/lanes.h>
-#include <seamless/spline/polynomial_range.h>
-#include <seamless/spline/subpatch.h>
+#include <seamless/spline/enclosure/polynomial_range.h>
+#include <seamless/spline/enclosure/subpatch.h>
 
 #include <algorithm>
 #include <cmath>

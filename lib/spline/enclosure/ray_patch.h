@@ -13,7 +13,7 @@
 #pragma once
 
 #include <seamless/base/vec.h>
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 
 #include <optional>
 #include <vector>

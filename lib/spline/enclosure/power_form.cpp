@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/spline/power_form.h>
+#include <seamless/spline/enclosure/power_form.h>
 
 #include <seamless/base/check.h>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/check.h>
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/spline/power_form.h>
+#include <seamless/spline/enclosure/power_form.h>
 
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 
 #include "spline/patch_samples.h"
 #include "test_util.h"
@@ -70,7 +70,7 @@ void check_patch(const BezierPatch& b, std::mt19937_64& rng) {
 
 } // namespace
 
-TEST_CASE("power form of random patches agrees with de Casteljau", "[power_form]") {
+TEST_CASE("power form of random patches agrees with de Casteljau", "[power_form][heavy]") {
     std::mt19937_64 rng(21);
     for (int p = 0; p <= 6; ++p)
         for (int q = 0; q <= 6; ++q)
@@ -78,7 +78,7 @@ TEST_CASE("power form of random patches agrees with de Casteljau", "[power_form]
                 check_patch(test::random_patch(rng, p, q, rational), rng);
 }
 
-TEST_CASE("power form of the teapot patches", "[power_form]") {
+TEST_CASE("power form of the teapot patches", "[power_form][heavy]") {
     std::mt19937_64 rng(22);
     const auto patches = bezier_patches(load_model(test::model_path("teapot.json")));
     REQUIRE(patches.size() == 32);

@@ -8,7 +8,7 @@
 #pragma once
 
 #include <seamless/interval/interval.h>
-#include <seamless/spline/power_form.h>
+#include <seamless/spline/enclosure/power_form.h>
 
 namespace seamless {
 

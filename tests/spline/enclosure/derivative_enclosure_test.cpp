@@ -3,7 +3,7 @@
 // derivatives of the point, enclosed over parameter boxes of random polynomial
 // and rational patches, contain the derivatives sampled at points of the box
 // (long double reference by differenced control nets and Leibniz's rule).
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 
 #include "spline/patch_samples.h"
 
@@ -90,7 +90,7 @@ bool holds(Interval x, long double v, long double scale) {
 } // namespace
 
 TEST_CASE("second and third derivative enclosures contain sampled derivatives",
-          "[enclosure][second_order]") {
+          "[enclosure][second_order][heavy]") {
     std::mt19937_64 rng(20261202);
     std::uniform_real_distribution<double> u(0, 1);
     long double widest = 0; // not vacuous: the third derivatives are not all zero

@@ -2,11 +2,11 @@
 // Subpatches (de Casteljau restriction with interval ends): the hull of the
 // restricted coefficients holds every point of the patch over the box, the
 // screen enclosure every projected point, and both shrink with the box.
-#include <seamless/spline/subpatch.h>
+#include <seamless/spline/enclosure/subpatch.h>
 
 #include <catch2/catch.hpp>
 
-#include "patch_samples.h"
+#include "spline/patch_samples.h"
 
 #include <bit>
 #include <cmath>
@@ -26,7 +26,7 @@ Interval local(double x, double D0, double D1) {
 
 } // namespace
 
-TEST_CASE("Restricted subpatches enclose the patch over their box", "[subpatch]") {
+TEST_CASE("Restricted subpatches enclose the patch over their box", "[subpatch][heavy]") {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> U(0.0, 1.0);
     int tight = 0, cases = 0;
@@ -138,7 +138,7 @@ void reference_row(Interval* c, int n, Interval u0, Interval u1) {
 // below 2^1000 and the scalar passes above: both must give exactly what plain
 // interval arithmetic gives, at every magnitude, with zeros of both signs,
 // subnormals, wide and thin coefficients, in both directions.
-TEST_CASE("Restriction equals plain interval de Casteljau bit for bit", "[subpatch]") {
+TEST_CASE("Restriction equals plain interval de Casteljau bit for bit", "[subpatch][heavy]") {
     std::mt19937_64 rng(13);
     std::uniform_real_distribution<double> U(0.0, 1.0), M(-1.0, 1.0);
     std::uniform_int_distribution<int> ex(-1074, 1020);
@@ -261,7 +261,7 @@ TEST_CASE("Subpatch hulls and screen enclosures equal plain interval code bit fo
     CHECK(lane_like > 1000);
 }
 
-TEST_CASE("A split gives both restrictions bit for bit", "[subpatch]") {
+TEST_CASE("A split gives both restrictions bit for bit", "[subpatch][heavy]") {
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> U(0.0, 1.0), M(-1.0, 1.0);
     std::uniform_int_distribution<int> ex(-1074, 1020);

@@ -5,7 +5,7 @@
 // two: the result must still contain every polynomial with coefficients in the
 // intervals, at every sampled point, and be wider than the midpoint
 // polynomial's range only by the coefficients' widths.
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 
 #include <catch2/catch.hpp>
 

@@ -6,7 +6,7 @@
 // inside [0,1]^2, thin boxes, and the generic fallbacks (a parameter below 0
 // or above 1, huge coefficients); and the enclosures must contain sampled
 // values of polynomials with coefficients in the intervals.
-#include <seamless/spline/enclosure.h>
+#include <seamless/spline/enclosure/enclosure.h>
 
 #include <catch2/catch.hpp>
 
@@ -78,7 +78,7 @@ long double sample(const Interval* c, int n, int stride, long double x, std::mt1
 } // namespace
 
 TEST_CASE("fast polynomial ranges give the generic code's bits and contain samples",
-          "[enclosure]") {
+          "[enclosure][heavy]") {
     std::mt19937_64 rng(2026);
     std::uniform_real_distribution<double> g(-1, 1), v(0, 1);
     for (int trial = 0; trial < 40000; ++trial) {
@@ -107,7 +107,7 @@ TEST_CASE("fast polynomial ranges give the generic code's bits and contain sampl
 }
 
 TEST_CASE("fast horner on power forms gives the generic code's bits and contains samples",
-          "[enclosure]") {
+          "[enclosure][heavy]") {
     std::mt19937_64 rng(77);
     std::uniform_real_distribution<double> g(-1, 1), v(0, 1);
     for (int trial = 0; trial < 6000; ++trial) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/spline/ray_patch.h>
+#include <seamless/spline/enclosure/ray_patch.h>
 
 #include "spline/patch_samples.h"
 #include "test_util.h"
@@ -45,7 +45,7 @@ bool box_contains(const RayPatchHit& h, double s, double t, double slack = 1e-12
 
 } // namespace
 
-TEST_CASE("a ray through a known patch point hits once, certified", "[ray_patch]") {
+TEST_CASE("a ray through a known patch point hits once, certified", "[ray_patch][heavy]") {
     std::mt19937_64 rng(41);
     std::uniform_real_distribution<double> u(0.02, 0.98);
     RayPatchStats stats;
@@ -74,7 +74,7 @@ TEST_CASE("a ray through a known patch point hits once, certified", "[ray_patch]
     CHECK(stats.iterations < 200 * 40);
 }
 
-TEST_CASE("teapot: rays from an eye through patch points", "[ray_patch]") {
+TEST_CASE("teapot: rays from an eye through patch points", "[ray_patch][heavy]") {
     std::mt19937_64 rng(42);
     std::uniform_real_distribution<double> u(0.05, 0.95);
     const auto patches = bezier_patches(load_model(test::model_path("teapot.json")));
@@ -179,7 +179,7 @@ TEST_CASE("grazing rays near the silhouette", "[ray_patch]") {
     CHECK(intersect(f, Ray{{-3.0, 0.1, -1e-6}, {1.0, 0.0, 0.0}}).empty());
 }
 
-TEST_CASE("a pole (collapsed edge) of the teapot still works", "[ray_patch]") {
+TEST_CASE("a pole (collapsed edge) of the teapot still works", "[ray_patch][heavy]") {
     const auto patches = bezier_patches(load_model(test::model_path("teapot.json")));
     int poles = 0;
     for (const auto& b : patches) {

@@ -16,8 +16,8 @@
 #include <seamless/interval/interval.h>
 #include <seamless/interval/interval_matrix.h>
 #include <seamless/spline/bezier_patch.h>
-#include <seamless/spline/polynomial_range.h>
-#include <seamless/spline/power_form.h>
+#include <seamless/spline/enclosure/polynomial_range.h>
+#include <seamless/spline/enclosure/power_form.h>
 
 namespace seamless {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/spline/ray_patch.h>
+#include <seamless/spline/enclosure/ray_patch.h>
 
 #include <seamless/base/check.h>
 #include <seamless/interval/hansen_sengupta.h>
