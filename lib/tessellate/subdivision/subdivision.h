@@ -67,7 +67,7 @@ struct SubdivisionOptions {
     // shared by the workers of a pass and counted down by their leaves (in
     // batches of kLeafBatch, the rest when subdivide returns); once it is below
     // zero no subpatch is split further and the caller refuses the pass
-    // (subdivide_patches). Not owned; null: no budget.
+    // (PatchSubdivision::subdivide). Not owned; null: no budget.
     std::atomic<std::int64_t>* leaves_left = nullptr;
 };
 
