@@ -3,8 +3,8 @@
 # Installs what is missing, builds (Release) and runs every test through ctest;
 # then one clang build with ASan+UBSan and assertions on (build-san/) serves
 # (a) every stage's tests but the [heavy] ones and (b) every libFuzzer target
-# but STEP/IGES, each 10 s on its seed corpus. Any failure, sanitizer report or fuzzer crash fails the
-# script. The last line is "N passed, N failed" over all parts.
+# but STEP/IGES, each 10 s on its seed corpus. Any failure, sanitizer report
+# or fuzzer crash fails the script. The last line is "N passed, N failed" over all parts.
 #
 # Time: .ci/run must stay under 20 minutes on 2 cores. Each part prints
 # "test.sh: <part> took N s (CPU M s; load ...)"; the measured parts and the
@@ -77,12 +77,12 @@ release_part() {
 # float-cast-overflow, -fno-sanitize-recover=all, and fuzzer-no-link for the
 # fuzzer's coverage); the chosen Catch2 tests link it as they are, the fuzz_*
 # harnesses link it with -fsanitize=fuzzer (tests/fuzz/CMakeLists.txt,
-# SEAMLESS_FUZZ_LINK_LIBRARY). No NDEBUG: every assert is live. Compile time
+# SEAMLESS_FUZZ_LINK_LIBRARY). No NDEBUG: every SEAMLESS_DCHECK is live. Compile time
 # is most of this part: line tables only (stack traces keep file:line) and
 # the CLI and the tests at -O0 (SEAMLESS_CLI_TEST_COMPILE_OPTIONS) halve it.
 # (a) runs the tests of every stage (base, interval, spline, model,
-# tessellate, mesh, render) and the CLI, so that every SEAMLESS_DCHECK and
-# assert is live once, but for the test cases tagged [heavy] (fine
+# tessellate, mesh, render) and the CLI, so that every SEAMLESS_DCHECK runs
+# under its tests, but for the test cases tagged [heavy] (fine
 # tessellations and sweeps: ASan makes them 50-100 times slower; they run in
 # the Release part) and [native-allocator] (they measure glibc's malloc,
 # which ASan replaces): SEAMLESS_TEST_SPEC, tests/CMakeLists.txt.
