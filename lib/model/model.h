@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
-// A model: the B-spline surfaces of one file. Readers for the version-1 JSON
-// model format, the Newell Bezier patch format (.bpt) and, through
+// A model: the B-spline surfaces of one file and, for CAD files with trimmed
+// faces, their boundary representation (brep.h). Readers for the JSON model
+// format (version 1: surfaces; version 2: surfaces and a B-rep), the Newell Bezier patch format (.bpt) and, through
 // OpenCASCADE, STEP and IGES (step_iges.h); docs/formats.md documents them and
 // their error messages.
 #pragma once
 
 #include <seamless/base/vec.h>
+#include <seamless/model/brep.h>
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/spline/bspline_surface.h>
 
@@ -30,6 +32,9 @@ struct Model {
     std::vector<BSplineSurface> surfaces;
     std::vector<SurfaceOrigin> origins; // one per surface for STEP/IGES, empty otherwise
     std::vector<std::string> warnings;  // what the reader left out or approximated, one line each
+    // Empty: the surfaces are the model, each its whole (u,v) rectangle. Else
+    // the model is the B-rep's faces, each a trimmed part of its surface.
+    BRep brep;
 };
 
 // Limits that reject absurd sizes before anything is allocated for them.
@@ -37,6 +42,8 @@ struct ModelLimits {
     long long max_surfaces = 1'000'000;
     long long max_control_points = 50'000'000;               // per surface, nu * nv
     std::uintmax_t max_file_bytes = std::uintmax_t(1) << 30; // 1 GiB
+    long long max_brep_items = 10'000'000; // B-rep faces, edges, vertices, curves, coedges each
+    long long max_curve_points = 1'000'000; // control points per curve or pcurve
 };
 
 // Largest magnitude of a control point coordinate, 2^510 (about 3.4e153).
@@ -55,6 +62,7 @@ inline constexpr double kMaxWeight = 0x1p256;
 // What to do with a STEP/IGES face whose boundary is not its surface's
 // parameter rectangle (a trimmed face).
 enum class TrimmedFaces {
+    brep,          // the file is read as a B-rep (Model::brep) when it has trimmed faces
     refuse,        // the file is refused with one line naming the trimmed faces
     skip,          // they are left out (a warning names them)
     whole_surface, // their whole underlying surfaces are taken (a warning names them)
@@ -62,7 +70,7 @@ enum class TrimmedFaces {
 
 struct ModelLoadOptions {
     ModelLimits limits;
-    TrimmedFaces trimmed = TrimmedFaces::refuse;
+    TrimmedFaces trimmed = TrimmedFaces::brep;
     // Surfaces without an exact NURBS form (offset surfaces, revolutions of
     // offset curves, degrees above kMaxDegree) are approximated within this
     // fraction of their bounding box diagonal; the error reached is reported.
@@ -83,7 +91,15 @@ Model parse_bpt(const std::string& text, const std::string& file, const ModelLim
 // messages, e.g. "surfaces[2]".
 void validate_surface(const BSplineSurface& s, const std::string& file, const std::string& field);
 
-// Version-1 JSON text of a model (17 significant digits: reads back bit-identical).
+// Checks a B-rep against the model's surfaces: indices in range, sizes
+// within `limits`, curves valid (degree, knots, finiteness, weights), edge
+// ranges inside their curves' domains, loops closed chains in (u,v) within
+// tolerance, seams used twice by one face. `field` prefixes messages
+// ("brep"), e.g. "brep.faces[3].loops[0].coedges[2]".
+void validate_brep(const Model& m, const std::string& file, const ModelLimits& limits = {});
+
+// JSON text of a model: version 1 (surfaces) without a B-rep, version 2 with
+// one (17 significant digits: reads back bit-identical).
 std::string to_json(const Model& m);
 
 // Bounding box of every control point; its largest extent is the paper's d_max.

@@ -115,6 +115,7 @@ class FaceReader {
                                      (trimmed_.size() == 1 ? "" : "s") + " (" +
                                      list_names(trimmed_) + ")";
             switch (options_.trimmed) {
+            case TrimmedFaces::brep: // not read yet: refused as before
             case TrimmedFaces::refuse:
                 throw InputError(file_, "",
                                  what + ": trimmed faces are not supported (--skip-trimmed "
