@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // seamless convert MODEL -o OUT.json: any model the program reads (STEP, IGES,
-// .bpt, JSON) as a version-1 JSON model.
+// .bpt, JSON) as a JSON model: version 1 (surfaces), or version 2 when the
+// model is a B-rep (trimmed faces).
 #include "commands.h"
 #include "model_options.h"
 
@@ -18,14 +19,15 @@ namespace seamless::cli {
 
 void add_convert(CLI::App& app, Action& action) {
     auto* cmd = app.add_subcommand(
-        "convert", "Write a model (STEP, IGES, .bpt or JSON) as a version-1 JSON model");
+        "convert", "Write a model (STEP, IGES, .bpt or JSON) as a JSON model (version 2 with "
+                   "its B-rep when it has trimmed faces)");
     struct Args {
         std::string model, out;
         ModelLoadOptions load;
     };
     auto args = std::make_shared<Args>();
     cmd->add_option("MODEL", args->model,
-                    "model file (.json version 1, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
+                    "model file (.json, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
         ->required();
     cmd->add_option("-o,--output", args->out, "JSON model file to write (.json)")->required();
     add_model_options(cmd, args->load);
@@ -48,6 +50,9 @@ void add_convert(CLI::App& app, Action& action) {
             if (!m.origins.empty())
                 std::cout << " (" << m.surfaces.size() - approximated << " exact, " << approximated
                           << " approximated)";
+            if (!m.brep.empty())
+                std::cout << ", " << m.brep.faces.size() << " B-rep face"
+                          << (m.brep.faces.size() == 1 ? "" : "s");
             std::cout << " -> " << args->out << "\n";
             return 0;
         };

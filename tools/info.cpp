@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "model_options.h"
 
+#include <seamless/model/brep_counts.h>
 #include <seamless/model/model.h>
 #include <seamless/spline/knot_insertion.h>
 
@@ -41,16 +42,53 @@ std::string summarise_knots(const std::vector<double>& U) {
     return os.str();
 }
 
+std::string plural(int n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+nlohmann::json brep_json(const BRep& b) {
+    const BRepCounts c = count(b);
+    nlohmann::json solids = nlohmann::json::array();
+    for (const BRepSolid& s : b.solids) solids.push_back({{"name", s.name}, {"shells", s.shells}});
+    return {{"solids", solids},
+            {"shells", c.shells},
+            {"closed_shells", c.closed_shells},
+            {"faces", c.faces},
+            {"faces_with_holes", c.faces_with_holes},
+            {"loops", c.loops},
+            {"edges", c.edges},
+            {"seam_edges", c.seam_edges},
+            {"degenerate_edges", c.degenerate_edges},
+            {"vertices", c.vertices},
+            {"max_edge_tolerance", c.max_edge_tolerance},
+            {"max_vertex_tolerance", c.max_vertex_tolerance}};
+}
+
+void print_brep(const BRep& b) {
+    const BRepCounts c = count(b);
+    std::cout << "B-rep: " << plural(c.solids, "solid", "solids") << ", "
+              << plural(c.shells, "shell", "shells") << " (" << c.closed_shells << " closed), "
+              << plural(c.faces, "face", "faces") << " (" << c.faces_with_holes << " with holes), "
+              << plural(c.loops, "loop", "loops") << ", " << plural(c.edges, "edge", "edges")
+              << " (" << c.seam_edges << " seam, " << c.degenerate_edges << " degenerate), "
+              << plural(c.vertices, "vertex", "vertices") << "; largest edge tolerance "
+              << c.max_edge_tolerance << "\n";
+    for (size_t k = 0; k < b.solids.size(); ++k)
+        if (!b.solids[k].name.empty())
+            std::cout << "solid " << k << ": " << b.solids[k].name << "\n";
+}
+
 } // namespace
 
 void add_info(CLI::App& app, Action& action) {
     auto* cmd = app.add_subcommand("info", "Describe a model: surfaces, degrees, knots, Bezier "
-                                           "patches, bounding box and d_max");
+                                           "patches, B-rep solids, faces, loops and edges, "
+                                           "bounding box and d_max");
     auto model = std::make_shared<std::string>();
     auto as_json = std::make_shared<bool>(false);
     auto load = std::make_shared<ModelLoadOptions>();
     cmd->add_option("MODEL", *model,
-                    "model file (.json version 1, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
+                    "model file (.json, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
         ->required();
     cmd->add_flag("--json", *as_json, "print the report as JSON");
     add_model_options(cmd, *load);
@@ -106,6 +144,7 @@ void add_info(CLI::App& app, Action& action) {
                 js["bbox"] = {{"min", {box.lo.x, box.lo.y, box.lo.z}},
                               {"max", {box.hi.x, box.hi.y, box.hi.z}}};
                 js["d_max"] = dmax;
+                if (!m.brep.empty()) js["brep"] = brep_json(m.brep);
                 js["warnings"] = m.warnings;
                 std::cout << js.dump(2) << "\n";
             } else {
@@ -116,6 +155,7 @@ void add_info(CLI::App& app, Action& action) {
                           << box.lo.z << "] .. [" << box.hi.x << ", " << box.hi.y << ", "
                           << box.hi.z << "]\n"
                           << "d_max: " << dmax << "\n";
+                if (!m.brep.empty()) print_brep(m.brep);
             }
             return 0;
         };

@@ -37,7 +37,7 @@ struct TessellateArgs {
 
 void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
     cmd->add_option("MODEL", args.model,
-                    "model file (.json version 1, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
+                    "model file (.json, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
         ->required();
     cmd->add_option("-o,--output", args.out,
                     "mesh file; format by extension (" + mesh_extensions() + ")")
