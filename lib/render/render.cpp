@@ -2,6 +2,8 @@
 // render(): the method's entry, with the sizes, levels and time it records.
 #include <seamless/render/render.h>
 
+#include <seamless/base/error.h>
+
 #include <chrono>
 
 namespace seamless {
@@ -14,6 +16,15 @@ Image render(const Scene& scene, const RenderOptions& opt, RenderStats* stats) {
     st.height = opt.height > 0 ? opt.height : scene.camera.height;
     st.levels = opt.levels > 0 ? opt.levels : scene.levels;
     st.threads = opt.threads;
+    // INTRACY and the reference trace the Bezier patches, which know nothing
+    // of trims; TRAY traces the trimmed faces' triangles.
+    if (opt.method != RenderMethod::tray && !scene.model.brep.empty())
+        throw InputError(
+            scene.source, "objects",
+            std::string(opt.method == RenderMethod::intracy ? "INTRACY" : "the reference") +
+                " renders untrimmed surfaces only, and the scene holds " +
+                std::to_string(scene.model.brep.faces.size()) +
+                " trimmed B-rep faces: render it with TRAY (--method tray)");
     const auto t0 = std::chrono::steady_clock::now();
     Image im;
     switch (opt.method) {

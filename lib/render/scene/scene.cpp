@@ -2,8 +2,10 @@
 #include <seamless/render/scene/scene.h>
 
 #include <seamless/base/files/input_file.h>
+#include <seamless/model/brep_placement.h>
 #include <seamless/model/json_fields.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -190,6 +192,11 @@ class ObjectReader {
             }
             sc.model.surfaces.push_back(std::move(s));
             sc.surface_material.push_back(so.material);
+        }
+        if (!m.brep.empty()) {
+            AffineMap map;
+            std::copy(T, T + 12, map.m);
+            append_brep(sc.model.brep, m.brep, so.first_surface, map);
         }
         // A model collapsed to one point (all its control points equal, or a
         // zero transform) has nothing to render and no scale to work at.
