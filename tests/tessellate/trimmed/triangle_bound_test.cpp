@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/tessellate/trimmed/chord_bound.h>
 #include <seamless/tessellate/trimmed/triangle_bound.h>
 
 #include <catch2/catch.hpp>
@@ -113,4 +114,27 @@ TEST_CASE("the triangle bound counts corners off the surface in full") {
     Q[1] = Q[1] + Vec3{0, 0, 0.25};
     CHECK(bound(x, Q) >= 0.25);
     CHECK(bound(x, Q) <= on + 0.25 + 1e-12);
+}
+
+TEST_CASE("the chord bound holds on a rational quarter circle and is tight") {
+    BSplineCurve c;
+    c.degree = 2;
+    c.knots = {0, 0, 0, 1, 1, 1};
+    c.points = {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    c.weights = {1, std::sqrt(0.5), 1};
+    const ChordBound bound(c);
+    for (double h : {0.5, 0.1, 0.01}) {
+        const double ta = 0.3, tb = 0.3 + h;
+        const Vec3 Pa = evaluate(c, ta).point, Pb = evaluate(c, tb).point;
+        const double B = bound(ta, tb, Pa, Pb);
+        double largest = 0;
+        for (int k = 1; k < 100; ++k) {
+            const double l = k / 100.0;
+            largest =
+                std::max(largest, distance(evaluate(c, ta + l * h).point, (1 - l) * Pa + l * Pb));
+        }
+        INFO("h " << h << ": bound " << B << ", sampled " << largest);
+        CHECK(largest <= B);
+        CHECK(B <= 4 * largest);
+    }
 }

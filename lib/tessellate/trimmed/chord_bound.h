@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// A certified bound on how far an edge's polyline lies from its 3D curve:
+// over [ta, tb] the chord from Pa to Pb (linear in t) and the curve C are
+// within M h^2 / 8 + J h / 2 + max(|C(ta) - Pa|, |C(tb) - Pb|) of each other,
+// h = tb - ta, M a bound of |C''| and J of the jumps of C' at C0 knots (the
+// one-dimensional case of triangle_bound.h). The curve is bounded as the
+// surface S(t, s) = C(t), linear in s, by TriangleBound on a triangle of
+// negligible height over [ta, tb].
+#pragma once
+
+#include <seamless/spline/bspline_curve.h>
+#include <seamless/tessellate/trimmed/triangle_bound.h>
+
+namespace seamless {
+
+class ChordBound {
+  public:
+    explicit ChordBound(const BSplineCurve& c);
+    ChordBound(const ChordBound&) = delete; // bound_ refers to surface_
+    ChordBound& operator=(const ChordBound&) = delete;
+
+    double operator()(double ta, double tb, Vec3 Pa, Vec3 Pb) const;
+
+  private:
+    BSplineSurface surface_;
+    TriangleBound bound_;
+};
+
+} // namespace seamless
