@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A model: the B-spline surfaces of one file and, for CAD files with trimmed
 // faces, their boundary representation (brep.h). Readers for the JSON model
-// format (version 1: surfaces; version 2: surfaces and a B-rep), the Newell Bezier patch format (.bpt) and, through
-// OpenCASCADE, STEP and IGES (step_iges.h); docs/formats.md documents them and
+// format (version 1: surfaces; version 2: surfaces and a B-rep), the Newell Bezier patch format
+// (.bpt) and, through OpenCASCADE, STEP and IGES (step_iges.h); docs/formats.md documents them and
 // their error messages.
 #pragma once
 
@@ -42,7 +42,7 @@ struct ModelLimits {
     long long max_surfaces = 1'000'000;
     long long max_control_points = 50'000'000;               // per surface, nu * nv
     std::uintmax_t max_file_bytes = std::uintmax_t(1) << 30; // 1 GiB
-    long long max_brep_items = 10'000'000; // B-rep faces, edges, vertices, curves, coedges each
+    long long max_brep_items = 10'000'000;  // B-rep faces, edges, vertices, curves, coedges each
     long long max_curve_points = 1'000'000; // control points per curve or pcurve
 };
 
@@ -90,6 +90,10 @@ Model parse_bpt(const std::string& text, const std::string& file, const ModelLim
 // domain), finiteness, coordinate magnitude (kMaxCoordinate) and weights. `field` prefixes
 // messages, e.g. "surfaces[2]".
 void validate_surface(const BSplineSurface& s, const std::string& file, const std::string& field);
+// The same checks for a curve (a B-rep edge's curve or a pcurve) of at most
+// `max_points` control points: e.g. "brep.curves[4].knots".
+void validate_curve(const BSplineCurve& c, const std::string& file, const std::string& field,
+                    long long max_points);
 
 // Checks a B-rep against the model's surfaces: indices in range, sizes
 // within `limits`, curves valid (degree, knots, finiteness, weights), edge
