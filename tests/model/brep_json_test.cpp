@@ -10,6 +10,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
 using namespace seamless;
 
 namespace {
@@ -254,4 +258,19 @@ TEST_CASE("The CLI refuses a bad version-2 model with exit status 2 and one line
     CHECK_THAT(r.err, Catch::Contains("bad.json: brep.faces[0].loops[1].coedges[2]: starts at "
                                       "vertex 5 but coedges[1] ends at vertex 6"));
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+TEST_CASE("The version-2 example of docs/formats.md reads and validates", "[model][brep]") {
+    std::ifstream in(test::data_dir() / ".." / "docs" / "formats.md");
+    std::stringstream doc;
+    doc << in.rdbuf();
+    const std::string text = doc.str();
+    const auto at = text.find("```json\n", text.find("## Model: JSON, version 2 (B-rep)"));
+    REQUIRE(at != std::string::npos);
+    const auto start = at + 8, end = text.find("```", start);
+    const Model m = parse_model_json(text.substr(start, end - start), "formats.md");
+    REQUIRE(m.brep.faces.size() == 1);
+    CHECK(m.brep.faces[0].loops.size() == 2);
+    CHECK(m.brep.edges.size() == 8);
+    CHECK(m.brep.faces[0].loops[1].coedges[0].reversed);
 }
