@@ -5,6 +5,7 @@
 #include <seamless/base/files/input_file.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace seamless {
@@ -91,6 +92,21 @@ std::string element_field(const std::string& array, std::size_t k) {
     return array + "[" + std::to_string(k) + "]";
 }
 
+void write_json_number(std::ostream& os, double x) {
+    if (x == 0 && std::signbit(x)) {
+        os << "-0.0";
+        return;
+    }
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    os << buf;
+}
+
+void write_json_string(std::ostream& os, const std::string& s) {
+    // Invalid UTF-8 (a hostile STEP name) is replaced, never thrown on.
+    os << Json(s).dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
 void JsonFields::fail(const std::string& field, const std::string& message) const {
     throw InputError(file_, field, message);
 }
@@ -114,10 +130,17 @@ Json JsonFields::parse_object(const std::string& text) const {
     return root;
 }
 
-void JsonFields::check_version(const Json& root) const {
+int JsonFields::check_version(const Json& root, int newest) const {
     const Json& version = member(root, "version", "version");
-    if (integer(version, "version", 0, 1'000'000) != 1)
-        fail("version", "unsupported version " + version.dump() + " (this reader knows 1)");
+    const long long v = integer(version, "version", 0, 1'000'000);
+    if (v < 1 || v > newest) {
+        std::string known = "1";
+        for (int k = 2; k <= newest; ++k)
+            known += (k == newest ? " and " : ", ") + std::to_string(k);
+        fail("version",
+             "unsupported version " + version.dump() + " (this reader knows " + known + ")");
+    }
+    return static_cast<int>(v);
 }
 
 const Json& JsonFields::member(const Json& obj, const std::string& key,
@@ -194,6 +217,11 @@ Vec3 JsonFields::vec3(const Json& j, const std::string& field) const {
     if (!j.is_array() || j.size() != 3) fail(field, "expected [x, y, z]");
     return {number(j[0], element_field(field, 0)), number(j[1], element_field(field, 1)),
             number(j[2], element_field(field, 2))};
+}
+
+Vec3 JsonFields::uv(const Json& j, const std::string& field) const {
+    if (!j.is_array() || j.size() != 2) fail(field, "expected [u, v]");
+    return {number(j[0], element_field(field, 0)), number(j[1], element_field(field, 1)), 0};
 }
 
 std::vector<double> JsonFields::numbers(const Json& j, const std::string& field) const {

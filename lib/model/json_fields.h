@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,12 @@ std::string member_field(const std::string& parent, const std::string& key);
 // An element's field name: ("surfaces", 2) -> "surfaces[2]".
 std::string element_field(const std::string& array, std::size_t k);
 
+// The writers' side (model_json.cpp, brep_json.cpp): x with 17 significant
+// digits, which reads back bit-identical (-0 as "-0.0": "-0" reads back +0);
+// a string quoted and escaped.
+void write_json_number(std::ostream& os, double x);
+void write_json_string(std::ostream& os, const std::string& s);
+
 // Reads the fields of one file's document; every defect throws an InputError
 // naming the file and the field.
 class JsonFields {
@@ -42,8 +49,8 @@ class JsonFields {
     // The document, which must be an object. A syntax error is named by line
     // and column, a number that overflows a double by its field.
     Json parse_object(const std::string& text) const;
-    // The root's "version": present, an integer, and 1 (the only version).
-    void check_version(const Json& root) const;
+    // The root's "version": present, an integer in 1..newest; returned.
+    int check_version(const Json& root, int newest = 1) const;
 
     // The member `key` of obj, whose field name is `field`; "missing" if absent.
     const Json& member(const Json& obj, const std::string& key, const std::string& field) const;
@@ -63,6 +70,8 @@ class JsonFields {
     long long integer(const Json& j, const std::string& field, long long lo, long long hi) const;
     // [x, y, z] of finite numbers.
     Vec3 vec3(const Json& j, const std::string& field) const;
+    // [u, v] of finite numbers, as (u, v, 0): a point of a pcurve.
+    Vec3 uv(const Json& j, const std::string& field) const;
     // An array of finite numbers.
     std::vector<double> numbers(const Json& j, const std::string& field) const;
 

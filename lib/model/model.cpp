@@ -8,7 +8,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <sstream>
 
 namespace seamless {
 
@@ -53,6 +52,38 @@ void validate_knots(int degree, int n, const std::vector<double>& U, const std::
                              std::to_string(degree) + "] must be below knots[" + std::to_string(n) +
                              "])");
 }
+// Finite control points within kMaxCoordinate; `field` names the array.
+void validate_points(const std::vector<Vec3>& points, const std::string& file,
+                     const std::string& field) {
+    for (size_t k = 0; k < points.size(); ++k) {
+        const Vec3 p = points[k];
+        const std::string fk = field + "[" + std::to_string(k) + "]";
+        if (!is_finite(p)) throw InputError(file, fk, "not a finite point");
+        for (int i = 0; i < 3; ++i)
+            if (std::abs(p[i]) > kMaxCoordinate)
+                throw InputError(file, fk + "[" + std::to_string(i) + "]",
+                                 "coordinate " + fmt(p[i]) + " beyond the limit of " +
+                                     fmt(kMaxCoordinate) + " (docs/formats.md, Limits)");
+    }
+}
+
+// No weights, or n of them in [1/kMaxWeight, kMaxWeight].
+void validate_weights(const std::vector<double>& w, size_t n, const std::string& file,
+                      const std::string& field) {
+    if (w.empty()) return;
+    if (w.size() != n)
+        throw InputError(file, field,
+                         "expected " + std::to_string(n) + " numbers, got " +
+                             std::to_string(w.size()));
+    for (size_t k = 0; k < n; ++k)
+        if (!std::isfinite(w[k]) || !(w[k] > 0))
+            throw InputError(file, field + "[" + std::to_string(k) + "]",
+                             "weight " + fmt(w[k]) + " is not a positive finite number");
+        else if (w[k] > kMaxWeight || w[k] < 1 / kMaxWeight)
+            throw InputError(file, field + "[" + std::to_string(k) + "]",
+                             "weight " + fmt(w[k]) + " outside " + fmt(1 / kMaxWeight) + ".." +
+                                 fmt(kMaxWeight) + " (docs/formats.md, Limits)");
+}
 } // namespace
 
 void validate_surface(const BSplineSurface& s, const std::string& file, const std::string& f) {
@@ -73,34 +104,28 @@ void validate_surface(const BSplineSurface& s, const std::string& file, const st
         throw InputError(file, pre + "control_points",
                          "expected " + std::to_string(n) + " points, got " +
                              std::to_string(s.points.size()));
-    for (size_t k = 0; k < n; ++k) {
-        const Vec3 p = s.points[k];
-        if (!is_finite(p))
-            throw InputError(file, pre + "control_points[" + std::to_string(k) + "]",
-                             "not a finite point");
-        for (int i = 0; i < 3; ++i)
-            if (std::abs(p[i]) > kMaxCoordinate)
-                throw InputError(file,
-                                 pre + "control_points[" + std::to_string(k) + "][" +
-                                     std::to_string(i) + "]",
-                                 "coordinate " + fmt(p[i]) + " beyond the limit of " +
-                                     fmt(kMaxCoordinate) + " (docs/formats.md, Limits)");
-    }
-    if (!s.weights.empty()) {
-        if (s.weights.size() != n)
-            throw InputError(file, pre + "weights",
-                             "expected " + std::to_string(n) + " numbers, got " +
-                                 std::to_string(s.weights.size()));
-        for (size_t k = 0; k < n; ++k)
-            if (!std::isfinite(s.weights[k]) || !(s.weights[k] > 0))
-                throw InputError(file, pre + "weights[" + std::to_string(k) + "]",
-                                 "weight " + fmt(s.weights[k]) +
-                                     " is not a positive finite number");
-            else if (s.weights[k] > kMaxWeight || s.weights[k] < 1 / kMaxWeight)
-                throw InputError(file, pre + "weights[" + std::to_string(k) + "]",
-                                 "weight " + fmt(s.weights[k]) + " outside " + fmt(1 / kMaxWeight) +
-                                     ".." + fmt(kMaxWeight) + " (docs/formats.md, Limits)");
-    }
+    validate_points(s.points, file, pre + "control_points");
+    validate_weights(s.weights, n, file, pre + "weights");
+}
+
+void validate_curve(const BSplineCurve& c, const std::string& file, const std::string& f,
+                    long long max_points) {
+    const std::string pre = f.empty() ? "" : f + ".";
+    if (c.degree < 1 || c.degree > kMaxDegree)
+        throw InputError(file, pre + "degree",
+                         "degree " + std::to_string(c.degree) + " outside 1.." +
+                             std::to_string(kMaxDegree));
+    if (c.size() > max_points)
+        throw InputError(file, pre + "points",
+                         std::to_string(c.size()) + " control points exceed the limit of " +
+                             std::to_string(max_points));
+    if (c.size() < c.degree + 1)
+        throw InputError(file, pre + "points",
+                         std::to_string(c.size()) + " control points too few for degree " +
+                             std::to_string(c.degree) + " (need at least degree+1)");
+    validate_knots(c.degree, c.size(), c.knots, file, pre + "knots");
+    validate_points(c.points, file, pre + "points");
+    validate_weights(c.weights, c.points.size(), file, pre + "weights");
 }
 
 Model load_model(const std::filesystem::path& path, const ModelLimits& limits) {
@@ -122,38 +147,6 @@ Model load_model(const std::filesystem::path& path, const ModelLoadOptions& opti
     });
     m.source = file;
     return m;
-}
-
-std::string to_json(const Model& m) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "{\"version\": 1,\n \"surfaces\": [";
-    for (size_t k = 0; k < m.surfaces.size(); ++k) {
-        const BSplineSurface& s = m.surfaces[k];
-        auto list = [&](const std::vector<double>& v) {
-            os << '[';
-            for (size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
-            os << ']';
-        };
-        os << (k ? ",\n" : "\n") << "  {\"name\": \"" << s.name << "\", \"degree\": [" << s.degree_u
-           << ", " << s.degree_v << "], \"size\": [" << s.size_u << ", " << s.size_v << "],\n";
-        os << "   \"knots_u\": ";
-        list(s.knots_u);
-        os << ",\n   \"knots_v\": ";
-        list(s.knots_v);
-        os << ",\n   \"control_points\": [";
-        for (size_t i = 0; i < s.points.size(); ++i)
-            os << (i ? ", " : "") << '[' << s.points[i].x << ", " << s.points[i].y << ", "
-               << s.points[i].z << ']';
-        os << ']';
-        if (s.rational()) {
-            os << ",\n   \"weights\": ";
-            list(s.weights);
-        }
-        os << '}';
-    }
-    os << "\n ]}\n";
-    return os.str();
 }
 
 Box3 control_box(const Model& m) {

@@ -90,6 +90,10 @@ Model parse_bpt(const std::string& text, const std::string& file, const ModelLim
 // domain), finiteness, coordinate magnitude (kMaxCoordinate) and weights. `field` prefixes
 // messages, e.g. "surfaces[2]".
 void validate_surface(const BSplineSurface& s, const std::string& file, const std::string& field);
+// The same checks for a curve (a B-rep edge's curve or a pcurve) of at most
+// `max_points` control points: e.g. "brep.curves[4].knots".
+void validate_curve(const BSplineCurve& c, const std::string& file, const std::string& field,
+                    long long max_points);
 
 // Checks a B-rep against the model's surfaces: indices in range, sizes
 // within `limits`, curves valid (degree, knots, finiteness, weights), edge

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Reader of the version-1 JSON model format (docs/formats.md).
+// Reader and writer of the JSON model format (docs/formats.md): version 1,
+// surfaces; version 2, surfaces and a B-rep (brep_json.cpp).
+#include <seamless/model/brep_json.h>
 #include <seamless/model/json_fields.h>
 #include <seamless/model/model.h>
+
+#include <sstream>
 
 namespace seamless {
 namespace {
@@ -77,7 +81,7 @@ Model parse_model_json(const std::string& text, const std::string& file,
                        const ModelLimits& limits) {
     const JsonFields r(file);
     const Json root = r.parse_object(text);
-    r.check_version(root);
+    const int version = r.check_version(root, 2);
     const Json& surfaces = r.array(r.member(root, "surfaces", "surfaces"), "surfaces");
     if (surfaces.empty()) r.fail("surfaces", "expected at least one surface");
     if (static_cast<long long>(surfaces.size()) > limits.max_surfaces)
@@ -98,7 +102,59 @@ Model parse_model_json(const std::string& text, const std::string& file,
         validate_surface(s, file, f);
         m.surfaces.push_back(std::move(s));
     }
+    const Json* brep = JsonFields::find(root, "brep");
+    if (version == 1) {
+        // Ignoring it, as other unknown members are, would drop the trims.
+        if (brep) r.fail("brep", "a B-rep needs \"version\": 2");
+        return m;
+    }
+    if (!brep) r.fail("brep", "missing (version 2 is surfaces and a B-rep)");
+    read_brep_json(r, *brep, limits, m.brep);
+    if (m.brep.empty()) r.fail("brep.faces", "expected at least one face");
+    validate_brep(m, file, limits);
     return m;
+}
+
+std::string to_json(const Model& m) {
+    std::ostringstream os;
+    os << "{\"version\": " << (m.brep.empty() ? 1 : 2) << ",\n \"surfaces\": [";
+    for (size_t k = 0; k < m.surfaces.size(); ++k) {
+        const BSplineSurface& s = m.surfaces[k];
+        auto list = [&](const std::vector<double>& v) {
+            os << '[';
+            for (size_t i = 0; i < v.size(); ++i) {
+                if (i) os << ", ";
+                write_json_number(os, v[i]);
+            }
+            os << ']';
+        };
+        os << (k ? ",\n" : "\n") << "  {\"name\": ";
+        write_json_string(os, s.name);
+        os << ", \"degree\": [" << s.degree_u << ", " << s.degree_v << "], \"size\": [" << s.size_u
+           << ", " << s.size_v << "],\n";
+        os << "   \"knots_u\": ";
+        list(s.knots_u);
+        os << ",\n   \"knots_v\": ";
+        list(s.knots_v);
+        os << ",\n   \"control_points\": [";
+        for (size_t i = 0; i < s.points.size(); ++i) {
+            os << (i ? ", " : "");
+            list({s.points[i].x, s.points[i].y, s.points[i].z});
+        }
+        os << ']';
+        if (s.rational()) {
+            os << ",\n   \"weights\": ";
+            list(s.weights);
+        }
+        os << '}';
+    }
+    os << "\n ]";
+    if (!m.brep.empty()) {
+        os << ",\n \"brep\": ";
+        write_brep_json(os, m.brep);
+    }
+    os << "}\n";
+    return os.str();
 }
 
 } // namespace seamless
