@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -124,4 +125,69 @@ TEST_CASE("trimmed faces: the solids at 1e-4 of the diagonal", "[brep][heavy]") 
         o.tolerance = 1e-4 * norm(control_box(c.model).extent());
         check_case(c, o);
     }
+}
+
+TEST_CASE("trimmed faces: adjacent faces share their boundary vertices", "[brep]") {
+    const BRepCase c = cylinder_solid();
+    const Tessellation t = tessellate(c.model, {});
+    const TriangleMesh& m = t.mesh;
+    // Every mesh vertex on a circle edge is used by triangles of the lateral
+    // face and of the disk: one index, not a copy per face.
+    std::vector<std::vector<int>> faces_at(m.vertex_count());
+    for (int i = 0; i < m.triangle_count(); ++i)
+        for (int k : m.triangles[i]) faces_at[k].push_back(m.triangle_surface[i]);
+    int on_edges = 0;
+    for (int v = 0; v < m.vertex_count(); ++v) {
+        const Vec3 p = m.positions[v];
+        if (!((p.z == 0 || p.z == 2) && std::abs(std::hypot(p.x, p.y) - 1) < 1e-9)) continue;
+        ++on_edges;
+        std::vector<int>& f = faces_at[v];
+        std::sort(f.begin(), f.end());
+        f.erase(std::unique(f.begin(), f.end()), f.end());
+        CHECK(f.size() == 2);
+    }
+    CHECK(on_edges == t.stats.brep.edge_points + 2);
+    CHECK(analyse_mesh(m, 1).border_edges == 0);
+}
+
+TEST_CASE("trimmed faces: a face whose loops cross fails by name, or is left out",
+          "[brep][heavy]") {
+    const BRepCase c = crossing_loops();
+    REQUIRE_THROWS_WITH(tessellate(c.model, {}), Catch::Contains("#crossing"));
+    TessellationOptions o;
+    o.allow_holes = true;
+    const Tessellation t = tessellate(c.model, o);
+    CHECK(t.mesh.triangle_count() == 0);
+    CHECK(t.stats.brep.faces_left_out == 1);
+    REQUIRE(t.stats.brep.warnings.size() == 1);
+    CHECK_THAT(t.stats.brep.warnings[0], Catch::Contains("#crossing"));
+}
+
+TEST_CASE("trimmed faces: a sliver's coincident chords are re-split on both sides", "[brep]") {
+    // The arc's first chord is the line: the loop's two segments overlap.
+    TessellationOptions o;
+    o.tolerance = 1e-2;
+    const Tessellation t = tessellate(sliver_face(1e-3).model, o);
+    CHECK(t.stats.brep.resplit_rounds >= 1);
+    const MeshReport r = analyse_mesh(t.mesh, 1);
+    CHECK(r.zero_area == 0);
+    CHECK(r.euler() == 1);
+}
+
+TEST_CASE("trimmed faces: edge tolerances above D are reported", "[brep]") {
+    BRepCase c = cylinder_solid();
+    for (BRepEdge& e : c.model.brep.edges) e.tolerance = 0.01;
+    TessellationOptions o;
+    o.tolerance = 1e-3;
+    const Tessellation t = tessellate(c.model, o);
+    CHECK(t.stats.brep.edges_above_tolerance == 3);
+    CHECK(t.stats.brep.max_edge_tolerance == 0.01);
+    CHECK(!t.stats.brep.warnings.empty());
+    CHECK(analyse_mesh(t.mesh, 1).border_edges == 0);
+}
+
+TEST_CASE("trimmed faces: the triangle budget is enforced", "[brep]") {
+    TessellationOptions o;
+    o.max_triangles = 50;
+    CHECK_THROWS_AS(tessellate(sphere_solid().model, o), TriangleBudgetError);
 }
