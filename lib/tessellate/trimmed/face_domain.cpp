@@ -34,9 +34,9 @@ void metric_scale(const BSplineSurface& s, const Box3& box, double& su, double& 
             lu += norm(p.du);
             lv += norm(p.dv);
         }
-    su = lu > 0 ? lu : lv > 0 ? lv : 1;
+    su = lu > 0 ? lu : lv > 0 ? lv : kGrid * kGrid;
     sv = lv > 0 ? lv : su;
-    // Only the ratio matters to Delaunay; the sum keeps the scale of the model.
+    // Only the ratio matters to Delaunay; the mean keeps the model's scale.
     su /= kGrid * kGrid;
     sv /= kGrid * kGrid;
 }

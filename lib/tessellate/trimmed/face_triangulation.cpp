@@ -29,15 +29,15 @@ constexpr Sample kSamples[] = {{{1.0 / 3, 1.0 / 3, 1.0 / 3}, -1},
                                {{1.0 / 6, 2.0 / 3, 1.0 / 6}, -1},
                                {{1.0 / 6, 1.0 / 6, 2.0 / 3}, -1}};
 
-// Samples miss a triangle's largest deviation between them by a few per
-// cent (docs/results/cad.md): the refinement aims this much below D.
+// Samples can miss a triangle's largest deviation, which lies between them:
+// the refinement aims this much below D.
 constexpr double kMargin = 0.9;
 
 // An upper bound of the distance from q to the surface: the nearest of the
-// surface points at uv and a few damped Gauss-Newton steps from it, taken
-// only when uv's is above `enough` (the (u,v) image of a flat triangle
-// overstates its distance where the parametrisation is distorted: near
-// poles and apexes).
+// surface points at uv and of a few damped Gauss-Newton steps from it, taken
+// while above `enough`. At a pole or apex the (u,v) image of a flat triangle
+// overstates its distance from the surface, as the parametrisation
+// collapses there; elsewhere it is the measure (enough = infinity).
 double distance_to_surface(const BSplineSurface& s, Vec3 q, Vec3 uv, double enough) {
     SurfacePoint p = evaluate(s, uv.x, uv.y);
     double best = distance(p.point, q);
@@ -96,10 +96,11 @@ struct Refiner {
         for (int i = 0; i < 3; ++i) {
             const int j = (i + 1) % 3;
             if (d.keys[k[i]] >= 0 && d.keys[k[i]] == d.keys[k[j]]) {
-                // Both at one pole: zero area and nothing to approximate.
-                // Else the two sides of a seam: too coarse, split it.
-                v.drop = d.pole[k[i]] != Vec3{} && d.pole[k[j]] != Vec3{};
-                v.split = !v.drop;
+                // Zero area: left out, which keeps the mesh closed (its two
+                // other sides pair up). At a pole there is nothing to
+                // approximate; across a seam the triangle is too coarse.
+                v.drop = true;
+                v.split = d.pole[k[i]] == Vec3{} || d.pole[k[j]] == Vec3{};
                 v.badness = v.split ? INFINITY : 0;
                 return v;
             }
@@ -157,7 +158,7 @@ struct Refiner {
         const double ab2 = dot(ab, ab), ac2 = dot(ac, ac);
         const Vec3 offset{(ac.y * ab2 - ab.y * ac2) / den, (ab.x * ac2 - ac.x * ab2) / den, 0};
         Vec3 at = a + offset;
-        int index = cdt.insert(at, 0.5 * norm(offset));
+        int index = cdt.insert(at, 0.75 * norm(offset));
         if (index == ConstrainedTriangulation::kCrowded) return false;
         if (index < 0) index = cdt.insert(at = (a + b + c3) / 3.0, 1e-3 * shortest);
         if (index < 0) return false;
