@@ -4,6 +4,7 @@
 #include <seamless/base/phase_clock.h>
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/tessellation_pass.h>
+#include <seamless/tessellate/trimmed/brep_tessellation.h>
 
 #include <algorithm>
 #include <chrono>
@@ -12,6 +13,7 @@
 namespace seamless {
 
 Tessellation tessellate(const Model& model, const TessellationOptions& options) {
+    if (!model.brep.empty()) return tessellate_brep(model, options); // trimmed faces
     return tessellate(model, bezier_patches(model), options);
 }
 

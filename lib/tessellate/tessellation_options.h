@@ -72,6 +72,11 @@ struct TessellationOptions {
     // memory (about 120 bytes per node, more nodes than triangles) and its
     // page faults.
     bool patch_trees = true;
+    // B-rep models (tessellate/trimmed/): false: a face whose loops cannot be
+    // triangulated after the edge re-splitting rounds fails the model with an
+    // InputError naming it; true: it is left out, a warning names it
+    // (BRepStats::warnings), and the mesh has a hole there.
+    bool allow_holes = false;
 };
 
 } // namespace seamless

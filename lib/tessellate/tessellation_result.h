@@ -27,6 +27,26 @@ struct PhaseSeconds {
            fans = 0, orientation = 0, scaling = 0;
 };
 
+// What the trimmed-face pipeline (tessellate/trimmed/) counted and measured.
+struct BRepStats {
+    int faces = 0, edges = 0; // of the B-rep, tessellated
+    int edge_points = 0;      // mesh vertices inside edges (shared by their faces)
+    int interior_points = 0;  // mesh vertices inside faces
+    int resplit_rounds = 0;   // rounds that re-split the edges of faces whose CDT failed
+    int resplit_edges = 0;    // edges re-split in them
+    int faces_left_out = 0;   // by TessellationOptions::allow_holes
+    int above_tolerance = 0;  // triangles the refinement limits stopped above D or the angle
+    double angle = 0;         // radians, used (0.5 by default)
+    // Largest sampled distance between the faces and the mesh, model units:
+    // edge chords against the 3D curves, and triangles against the surface at
+    // barycentric samples mapped through (u,v). Measured, not certified.
+    double max_deviation = 0;
+    double max_edge_tolerance = 0; // largest edge tolerance; above D it bounds what is reachable
+    int edges_above_tolerance = 0; // edges whose tolerance exceeds D
+    bool certified = false;        // max_deviation is a sampled measure, not a bound
+    std::vector<std::string> warnings; // one line each: faces left out, tolerances above D
+};
+
 struct TessellationStats {
     int surfaces = 0, patches = 0, subpatches = 0, triangles = 0, vertices = 0;
     int shared_edges = 0, collapsed_edges = 0;
@@ -48,6 +68,7 @@ struct TessellationStats {
     int passes = 1; // tessellation passes (a tolerance may need more than one)
     double seconds = 0;
     PhaseSeconds phases;
+    BRepStats brep; // B-rep models only (Model::brep non-empty)
 };
 
 // What tessellate() throws past TessellationOptions::max_triangles: an

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/base/error.h>
+#include <seamless/base/parallel/parallel.h>
+#include <seamless/base/phase_clock.h>
+#include <seamless/tessellate/trimmed/brep_mesh.h>
+#include <seamless/tessellate/trimmed/brep_tessellation.h>
+#include <seamless/tessellate/trimmed/edge_discretisation.h>
+#include <seamless/tessellate/trimmed/face_domain.h>
+#include <seamless/tessellate/trimmed/face_triangulation.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <limits>
+
+namespace seamless {
+
+namespace {
+
+// Rounds of re-splitting the edges of faces whose loops do not triangulate;
+// each halves their segments.
+constexpr int kResplitRounds = 6;
+// OpenCASCADE's users' default angular deflection, radians.
+constexpr double kDefaultAngle = 0.5;
+// The default deviation as a fraction of the diagonal.
+constexpr double kDefaultDeviation = 1e-3;
+
+Box3 brep_box(const Model& model) {
+    Box3 box;
+    for (const BRepVertex& v : model.brep.vertices) box.extend(v.point);
+    for (const BSplineCurve& c : model.brep.curves)
+        for (const Vec3& p : c.points) box.extend(p);
+    if (box.empty() || !(norm(box.extent()) > 0)) box.extend(control_box(model));
+    return box;
+}
+
+// Runs `work(i)` for every item in parallel; the first exception in item
+// order is rethrown, so that which error is reported does not depend on the
+// threads.
+template <class Work> void for_each_item(int n, int threads, Work work) {
+    std::vector<std::exception_ptr> errors(n);
+    parallel_chunks(n, threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) try {
+                work(i);
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+    });
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
+}
+
+// Each face's view of each edge, in face order.
+std::vector<std::vector<EdgeUse>> edge_uses(const Model& model) {
+    const BRep& brep = model.brep;
+    std::vector<std::vector<EdgeUse>> uses(brep.edges.size());
+    for (const BRepFace& f : brep.faces) {
+        const Vec3 inward = face_uv_centre(brep, f);
+        for (const BRepLoop& loop : f.loops)
+            for (const BRepCoedge& c : loop.coedges)
+                uses[c.edge].push_back({&model.surfaces[f.surface], &brep.pcurves[c.pcurve],
+                                        brep.edges[c.edge].tolerance, inward});
+    }
+    return uses;
+}
+
+std::vector<int> edges_of(const BRep& brep, const std::vector<int>& faces) {
+    std::vector<int> edges;
+    for (int f : faces)
+        for (const BRepLoop& loop : brep.faces[f].loops)
+            for (const BRepCoedge& c : loop.coedges) edges.push_back(c.edge);
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return edges;
+}
+
+std::vector<int> faces_of(const BRep& brep, const std::vector<int>& edges) {
+    std::vector<char> hit(brep.edges.size(), 0);
+    for (int e : edges) hit[e] = 1;
+    std::vector<int> faces;
+    for (size_t f = 0; f < brep.faces.size(); ++f)
+        for (const BRepLoop& loop : brep.faces[f].loops)
+            for (const BRepCoedge& c : loop.coedges)
+                if (hit[c.edge] && (faces.empty() || faces.back() != static_cast<int>(f)))
+                    faces.push_back(static_cast<int>(f));
+    return faces;
+}
+
+struct Faces {
+    std::vector<FaceMesh> meshes;
+    std::vector<int> failed;
+    int rounds = 0, resplit_edges = 0;
+};
+
+// Triangulates every face; faces whose loops fail get their edges halved
+// (for every face using them) and are redone with those faces.
+Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
+                        const FaceCriteria& criteria, int threads) {
+    const BRep& brep = model.brep;
+    Faces r;
+    r.meshes.resize(brep.faces.size());
+    std::vector<int> pending(brep.faces.size());
+    for (size_t f = 0; f < pending.size(); ++f) pending[f] = static_cast<int>(f);
+    for (;; ++r.rounds) {
+        for_each_item(static_cast<int>(pending.size()), threads, [&](int i) {
+            r.meshes[pending[i]] = triangulate_face(model, lines, pending[i], criteria);
+        });
+        r.failed.clear();
+        for (int f : pending)
+            if (r.meshes[f].failed) r.failed.push_back(f);
+        if (r.failed.empty() || r.rounds == kResplitRounds) break;
+        const std::vector<int> edges = edges_of(brep, r.failed);
+        r.resplit_edges += static_cast<int>(edges.size());
+        for_each_item(static_cast<int>(edges.size()), threads,
+                      [&](int i) { halve_segments(brep, edges[i], lines[edges[i]]); });
+        pending = faces_of(brep, edges);
+    }
+    return r;
+}
+
+void refuse_or_leave_out(const Model& model, const Faces& faces, const TessellationOptions& o,
+                         BRepStats& stats) {
+    for (int f : faces.failed) {
+        const std::string what = "face " + model.brep.faces[f].name +
+                                 ": its loops do not triangulate (boundary segments cross or "
+                                 "overlap after " +
+                                 std::to_string(kResplitRounds) + " re-splits)";
+        if (!o.allow_holes)
+            throw InputError(model.source, "brep.faces[" + std::to_string(f) + "]", what);
+        stats.warnings.push_back(what + "; left out");
+        ++stats.faces_left_out;
+    }
+}
+
+} // namespace
+
+double brep_deviation(const Model& model, const TessellationOptions& options) {
+    if (options.tolerance > 0) return options.tolerance;
+    if (options.eps1 > 0) return options.eps1;
+    return kDefaultDeviation * norm(brep_box(model).extent());
+}
+
+Tessellation tessellate_brep(const Model& model, const TessellationOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const BRep& brep = model.brep;
+    const double D = brep_deviation(model, options);
+    if (!(D > 0) || !std::isfinite(D))
+        throw InputError(model.source, "brep",
+                         "the B-rep has zero or infinite extent: no deviation to mesh it to");
+    Tessellation t;
+    BRepStats& st = t.stats.brep;
+    st.angle = options.angle > 0 ? options.angle : kDefaultAngle;
+    const EdgeCriteria ec{D, st.angle};
+    const auto uses = edge_uses(model);
+    std::vector<EdgePolyline> lines(brep.edges.size());
+    for_each_item(static_cast<int>(lines.size()), options.threads,
+                  [&](int e) { lines[e] = discretise_edge(brep, e, uses[e], ec); });
+    if (options.progress) options.progress(0.2);
+    Faces faces =
+        triangulate_faces(model, lines, {D, st.angle, options.max_triangles}, options.threads);
+    refuse_or_leave_out(model, faces, options, st);
+    if (options.progress) options.progress(0.9);
+    t.mesh = brep_mesh(model, lines, faces.meshes);
+    if (t.mesh.triangle_count() > options.max_triangles)
+        throw TriangleBudgetError(model.source, "brep", options.max_triangles);
+
+    st.faces = static_cast<int>(brep.faces.size()) - st.faces_left_out;
+    st.edges = static_cast<int>(brep.edges.size());
+    st.resplit_rounds = faces.rounds;
+    st.resplit_edges = faces.resplit_edges;
+    for (size_t e = 0; e < lines.size(); ++e) {
+        if (!brep.edges[e].degenerate())
+            st.edge_points += std::max(0, static_cast<int>(lines[e].t.size()) - 2);
+        st.max_deviation = std::max(st.max_deviation, lines[e].deviation);
+        st.max_edge_tolerance = std::max(st.max_edge_tolerance, brep.edges[e].tolerance);
+        if (brep.edges[e].tolerance > D) ++st.edges_above_tolerance;
+    }
+    if (st.edges_above_tolerance > 0)
+        st.warnings.push_back(std::to_string(st.edges_above_tolerance) +
+                              " edges have a tolerance above the deviation " + std::to_string(D) +
+                              " (largest " + std::to_string(st.max_edge_tolerance) +
+                              "): the deviation reached is at least that");
+    for (const FaceMesh& fm : faces.meshes) {
+        if (fm.failed) continue;
+        st.interior_points += fm.domain.size() - fm.domain.boundary_points;
+        st.max_deviation = std::max(st.max_deviation, fm.deviation);
+        st.above_tolerance += fm.above_tolerance;
+    }
+    TessellationStats& s = t.stats;
+    s.surfaces = static_cast<int>(model.surfaces.size());
+    s.triangles = t.mesh.triangle_count();
+    s.vertices = t.mesh.vertex_count();
+    s.d_max = brep_box(model).max_extent();
+    s.tolerance = D;
+    s.max_error_bound = std::numeric_limits<double>::quiet_NaN(); // not certified
+    s.above_tolerance = st.above_tolerance;
+    s.passes = faces.rounds + 1;
+    if (options.progress) options.progress(1.0);
+    s.seconds = seconds_since(start);
+    return t;
+}
+
+} // namespace seamless

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// A face's (u,v) domain as a constrained Delaunay triangulation: CGAL's
+// Constrained_Delaunay_triangulation_2 with exact predicates, kept behind
+// this seamless-typed interface so that CGAL is compiled in one .cpp only.
+// The constraints are the face's discretised loops; the domain is what lies
+// at odd nesting depth across them (CGAL's polygon-with-holes example), so
+// the loops' orientation does not matter. Points are (x, y, 0).
+#pragma once
+
+#include <seamless/base/vec.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace seamless {
+
+struct DomainTriangle {
+    std::array<int, 3> corners;   // point indices, counter-clockwise
+    std::array<bool, 3> boundary; // edge opposite corner k is a constraint
+};
+
+class ConstrainedTriangulation {
+  public:
+    ConstrainedTriangulation();
+    ~ConstrainedTriangulation();
+    ConstrainedTriangulation(const ConstrainedTriangulation&) = delete;
+    ConstrainedTriangulation& operator=(const ConstrainedTriangulation&) = delete;
+
+    // Points 0..n-1 and the constraint segments between them. Points with the
+    // same key are one mesh vertex: coinciding, they merge. False when two
+    // points with different keys coincide, two constraints cross or overlap,
+    // or a constraint passes through a point (each would split a boundary
+    // segment, a crack): the caller re-splits the edges.
+    bool build(const std::vector<Vec3>& points, const std::vector<std::int64_t>& keys,
+               const std::vector<std::array<int, 2>>& segments);
+    // The domain's triangles, in the triangulation's (deterministic) order.
+    void triangles(std::vector<DomainTriangle>& out) const;
+    // Inserts p as point size() when it lies strictly inside a domain
+    // triangle at least `clearance` from its corners and from its boundary
+    // edges; returns its index, else kOutside (outside the domain or too near
+    // a boundary edge) or kCrowded (too near a corner).
+    static constexpr int kOutside = -1, kCrowded = -2;
+    int insert(Vec3 p, double clearance);
+    int size() const { return points_; }
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    int points_ = 0;
+};
+
+} // namespace seamless

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/base/segment_distance.h>
+#include <seamless/tessellate/trimmed/edge_discretisation.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace seamless {
+
+Vec3 unit_normal(const BSplineSurface& s, Vec3 uv, Vec3 inward) {
+    for (double step : {0.0, 1e-6, 1e-4, 1e-2}) {
+        const Vec3 q = uv + step * (inward - uv);
+        const SurfacePoint sp = evaluate(s, q.x, q.y);
+        const Vec3 n = sp.normal();
+        // Below this the normal's direction is rounding.
+        if (norm(n) > 1e-12 * (dot(sp.du, sp.du) + dot(sp.dv, sp.dv))) return normalize(n);
+    }
+    return {};
+}
+
+double angle_between(Vec3 a, Vec3 b) {
+    if (!(norm(a) > 0) || !(norm(b) > 0)) return 0;
+    return std::atan2(norm(cross(a, b)), dot(a, b));
+}
+
+namespace {
+
+constexpr int kMaxDepth = 24;
+
+struct Splitter {
+    const BRep& brep;
+    const BRepEdge& e;
+    const std::vector<EdgeUse>& uses;
+    const EdgeCriteria& c;
+    EdgePolyline& line;
+
+    Vec3 point(double t) const {
+        if (t == e.t0) return brep.vertices[e.start].point;
+        if (t == e.t1) return brep.vertices[e.end].point;
+        return e.degenerate() ? brep.vertices[e.start].point
+                              : evaluate(brep.curves[e.curve], t).point;
+    }
+
+    // The largest sampled distance of [a, b]'s curve and (u,v) images from
+    // its chord, or infinity when a tangent or normal turns too far.
+    double deviation(double a, double b) const {
+        const Vec3 pa = point(a), pb = point(b);
+        double d = 0;
+        if (!e.degenerate()) {
+            const BSplineCurve& curve = brep.curves[e.curve];
+            constexpr int kSamples = 8;
+            for (int k = 1; k < kSamples; ++k)
+                d = std::max(d, point_segment_distance(
+                                    evaluate(curve, a + (b - a) * k / kSamples).point, pa, pb));
+            // A span shorter than the samples' spacing could hide a wiggle.
+            for (double knot : curve.knots)
+                if (knot > a && knot < b)
+                    d = std::max(d, point_segment_distance(evaluate(curve, knot).point, pa, pb));
+            const Vec3 ta = evaluate(curve, a).tangent, tb = evaluate(curve, b).tangent,
+                       tm = evaluate(curve, 0.5 * (a + b)).tangent;
+            if (std::max({angle_between(ta, tm), angle_between(tm, tb), angle_between(ta, tb)}) >
+                c.angle)
+                return INFINITY;
+        }
+        for (const EdgeUse& use : uses) {
+            const Vec3 ua = evaluate(*use.pcurve, a).point, ub = evaluate(*use.pcurve, b).point;
+            for (double s : {0.25, 0.5, 0.75}) {
+                const Vec3 q = lerp(ua, ub, s);
+                // The tolerance is how far the surface is allowed to be.
+                d = std::max(
+                    d, point_segment_distance(evaluate(*use.surface, q.x, q.y).point, pa, pb) -
+                           use.tolerance);
+            }
+            // The midpoint too: a closed edge's ends have one normal.
+            const Vec3 na = unit_normal(*use.surface, ua, use.inward),
+                       nb = unit_normal(*use.surface, ub, use.inward),
+                       nm = unit_normal(*use.surface, evaluate(*use.pcurve, 0.5 * (a + b)).point,
+                                        use.inward);
+            if (std::max({angle_between(na, nm), angle_between(nm, nb), angle_between(na, nb)}) >
+                c.angle)
+                return INFINITY;
+        }
+        return std::max(d, 0.0);
+    }
+
+    // Appends the points after a up to b.
+    void split(double a, double b, int depth) {
+        const double d = deviation(a, b);
+        const double m = 0.5 * (a + b);
+        const bool room =
+            depth < kMaxDepth && static_cast<int>(line.t.size()) < c.max_points && m > a && m < b;
+        // Samples miss the largest deviation by a few per cent: aim below D.
+        if (d > 0.9 * c.deviation && room) {
+            split(a, m, depth + 1);
+            split(m, b, depth + 1);
+            return;
+        }
+        if (d > 0.9 * c.deviation) line.limited = true;
+        if (std::isfinite(d)) line.deviation = std::max(line.deviation, d);
+        line.t.push_back(b);
+        line.points.push_back(point(b));
+    }
+};
+
+} // namespace
+
+EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeUse>& uses,
+                             const EdgeCriteria& criteria) {
+    const BRepEdge& e = brep.edges[edge];
+    EdgePolyline line;
+    Splitter s{brep, e, uses, criteria, line};
+    line.t.push_back(e.t0);
+    line.points.push_back(s.point(e.t0));
+    // A closed edge needs three segments to bound anything.
+    const int pieces = !e.degenerate() && e.start == e.end ? 4 : 1;
+    for (int k = 0; k < pieces; ++k) {
+        const double a = k == 0 ? e.t0 : e.t0 + (e.t1 - e.t0) * k / pieces;
+        const double b = k == pieces - 1 ? e.t1 : e.t0 + (e.t1 - e.t0) * (k + 1) / pieces;
+        s.split(a, b, 0);
+    }
+    return line;
+}
+
+void halve_segments(const BRep& brep, int edge, EdgePolyline& line) {
+    const BRepEdge& e = brep.edges[edge];
+    const std::vector<EdgeUse> none;
+    const EdgeCriteria criteria;
+    Splitter s{brep, e, none, criteria, line};
+    std::vector<double> t{line.t.front()};
+    std::vector<Vec3> points{line.points.front()};
+    for (size_t k = 1; k < line.t.size(); ++k) {
+        const double m = 0.5 * (line.t[k - 1] + line.t[k]);
+        if (m > line.t[k - 1] && m < line.t[k]) {
+            t.push_back(m);
+            points.push_back(s.point(m));
+        }
+        t.push_back(line.t[k]);
+        points.push_back(line.points[k]);
+    }
+    line.t = std::move(t);
+    line.points = std::move(points);
+}
+
+} // namespace seamless

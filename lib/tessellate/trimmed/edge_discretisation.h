@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Topology first (issue 28, section 2): every B-rep edge is discretised once
+// into one polyline that every face using it shares by index. A segment is
+// split until its chord is within the deviation of the 3D curve, the curve's
+// tangent turns by at most the angle along it, and on every face using the
+// edge the straight (u,v) segment between its pcurve points maps within the
+// deviation of the chord, with the surface normal turning by at most the
+// angle (OpenCASCADE's BRepMesh_CurveTessellator checks the (u,v) chord too).
+// Nothing inserts a point on a segment afterwards but halve_segments, which
+// both sides see.
+#pragma once
+
+#include <seamless/model/brep.h>
+#include <seamless/spline/bspline_surface.h>
+
+#include <vector>
+
+namespace seamless {
+
+// One face's view of an edge.
+struct EdgeUse {
+    const BSplineSurface* surface = nullptr;
+    const BSplineCurve* pcurve = nullptr;
+    double tolerance = 0; // the edge's: how far S(pcurve) may be from the curve
+    // A (u,v) point inside the face: the normal at a pole or apex is taken
+    // from a step towards it.
+    Vec3 inward;
+};
+
+struct EdgeCriteria {
+    double deviation = 0; // D, model units
+    double angle = 0.5;   // radians
+    int max_points = 1 << 16;
+};
+
+struct EdgePolyline {
+    std::vector<double> t;    // increasing from the edge's t0 to t1
+    std::vector<Vec3> points; // 3D points; the ends (and a degenerate edge's all) are its vertices
+    double deviation = 0;     // largest sampled chord deviation, model units
+    bool limited = false;     // a segment stopped by the depth or point limit
+};
+
+EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeUse>& uses,
+                             const EdgeCriteria& criteria);
+
+// Inserts the midpoint of every segment: a face whose loops did not
+// triangulate gets finer loops, and so does every other face of the edge.
+void halve_segments(const BRep& brep, int edge, EdgePolyline& line);
+
+// The unit normal dP/du x dP/dv at uv; where it vanishes (a pole, an apex),
+// the normal a small step towards `inward`; zero if that vanishes too.
+Vec3 unit_normal(const BSplineSurface& s, Vec3 uv, Vec3 inward);
+
+// Angle in radians between two vectors (0 when one is zero).
+double angle_between(Vec3 a, Vec3 b);
+
+} // namespace seamless

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/tessellate/trimmed/face_domain.h>
+
+#include <algorithm>
+
+namespace seamless {
+
+std::int64_t boundary_key(const BRep& brep, int edge, int k, const EdgePolyline& line) {
+    const BRepEdge& e = brep.edges[edge];
+    if (k == 0 || e.degenerate()) return e.start;
+    if (k == static_cast<int>(line.t.size()) - 1) return e.end;
+    return edge_point_key(edge, k);
+}
+
+Vec3 face_uv_centre(const BRep& brep, const BRepFace& face) {
+    Box3 box;
+    for (const BRepLoop& loop : face.loops)
+        for (const BRepCoedge& c : loop.coedges)
+            for (const Vec3& p : brep.pcurves[c.pcurve].points) box.extend(p);
+    return box.empty() ? Vec3{} : 0.5 * (box.lo + box.hi);
+}
+
+namespace {
+
+// Mean |dP/du| and |dP/dv| over a grid on the (u,v) box: the scale that
+// makes a unit step in either direction about as long on the surface.
+void metric_scale(const BSplineSurface& s, const Box3& box, double& su, double& sv) {
+    constexpr int kGrid = 5;
+    double lu = 0, lv = 0;
+    for (int i = 0; i < kGrid; ++i)
+        for (int j = 0; j < kGrid; ++j) {
+            const SurfacePoint p = evaluate(s, box.lo.x + (box.hi.x - box.lo.x) * (i + 0.5) / kGrid,
+                                            box.lo.y + (box.hi.y - box.lo.y) * (j + 0.5) / kGrid);
+            lu += norm(p.du);
+            lv += norm(p.dv);
+        }
+    su = lu > 0 ? lu : lv > 0 ? lv : kGrid * kGrid;
+    sv = lv > 0 ? lv : su;
+    // Only the ratio matters to Delaunay; the mean keeps the model's scale.
+    su /= kGrid * kGrid;
+    sv /= kGrid * kGrid;
+}
+
+} // namespace
+
+int FaceDomain::add_interior(const BSplineSurface& s, Vec3 at) {
+    const Vec3 p{at.x / su, at.y / sv, 0};
+    uv.push_back(p);
+    scaled.push_back(at);
+    points.push_back(evaluate(s, p.x, p.y).point);
+    keys.push_back(-1);
+    pole.push_back({});
+    return size() - 1;
+}
+
+FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& lines, int face) {
+    const BRep& brep = model.brep;
+    const BRepFace& f = brep.faces[face];
+    FaceDomain d;
+    for (const BRepLoop& loop : f.loops) {
+        const int first = d.size();
+        for (const BRepCoedge& c : loop.coedges) {
+            const EdgePolyline& line = lines[c.edge];
+            const BRepEdge& e = brep.edges[c.edge];
+            const BSplineCurve& pc = brep.pcurves[c.pcurve];
+            d.tolerance = std::max(d.tolerance, e.tolerance);
+            const int n = static_cast<int>(line.t.size());
+            Vec3 pole;
+            if (e.degenerate())
+                pole = normalize(evaluate(pc, e.t1).point - evaluate(pc, e.t0).point);
+            // The last point is the next coedge's first (the same vertex).
+            for (int j = 0; j + 1 < n; ++j) {
+                const int k = c.reversed ? n - 1 - j : j;
+                d.uv.push_back(evaluate(pc, line.t[k]).point);
+                d.points.push_back(line.points[k]);
+                d.keys.push_back(boundary_key(brep, c.edge, k, line));
+                d.pole.push_back(pole);
+            }
+        }
+        const int last = d.size();
+        for (int i = first; i < last; ++i) d.segments.push_back({i, i + 1 < last ? i + 1 : first});
+    }
+    d.boundary_points = d.size();
+    // A pole's vertex where another edge meets it is the pole as well.
+    std::vector<std::pair<std::int64_t, Vec3>> poles;
+    for (int i = 0; i < d.size(); ++i)
+        if (d.pole[i] != Vec3{} && (poles.empty() || poles.back().first != d.keys[i]))
+            poles.push_back({d.keys[i], d.pole[i]});
+    for (int i = 0; i < d.size() && !poles.empty(); ++i)
+        for (const auto& [key, dir] : poles)
+            if (d.keys[i] == key && d.pole[i] == Vec3{}) d.pole[i] = dir;
+    Box3 box;
+    for (const Vec3& p : d.uv) box.extend(p);
+    const BSplineSurface& s = model.surfaces[f.surface];
+    metric_scale(s, box, d.su, d.sv);
+    for (const Vec3& p : d.uv) d.scaled.push_back({p.x * d.su, p.y * d.sv, 0});
+    return d;
+}
+
+} // namespace seamless

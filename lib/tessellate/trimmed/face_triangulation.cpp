@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
+#include <seamless/tessellate/tessellation_result.h>
+#include <seamless/tessellate/trimmed/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/face_triangulation.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace seamless {
+
+namespace {
+
+// Refinement rounds: each inserts a point in every triangle still failing.
+constexpr int kRounds = 64;
+
+// Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
+// k), and three points between the centroid and the corners.
+struct Sample {
+    double l[3];
+    int edge; // -1: interior
+};
+constexpr Sample kSamples[] = {{{1.0 / 3, 1.0 / 3, 1.0 / 3}, -1},
+                               {{0, 0.5, 0.5}, 0},
+                               {{0.5, 0, 0.5}, 1},
+                               {{0.5, 0.5, 0}, 2},
+                               {{2.0 / 3, 1.0 / 6, 1.0 / 6}, -1},
+                               {{1.0 / 6, 2.0 / 3, 1.0 / 6}, -1},
+                               {{1.0 / 6, 1.0 / 6, 2.0 / 3}, -1}};
+
+// Samples can miss a triangle's largest deviation, which lies between them:
+// the refinement aims this much below D.
+constexpr double kMargin = 0.9;
+
+// An upper bound of the distance from q to the surface: the nearest of the
+// surface points at uv and of a few damped Gauss-Newton steps from it, taken
+// while above `enough`. At a pole or apex the (u,v) image of a flat triangle
+// overstates its distance from the surface, as the parametrisation
+// collapses there; elsewhere it is the measure (enough = infinity).
+double distance_to_surface(const BSplineSurface& s, Vec3 q, Vec3 uv, double enough) {
+    SurfacePoint p = evaluate(s, uv.x, uv.y);
+    double best = distance(p.point, q);
+    for (int it = 0; it < 4 && best > enough; ++it) {
+        const Vec3 r = q - p.point;
+        const double a = dot(p.du, p.du), b = dot(p.du, p.dv), c = dot(p.dv, p.dv);
+        const double damp = 1e-9 * (a + c), ru = dot(r, p.du), rv = dot(r, p.dv);
+        const double det = (a + damp) * (c + damp) - b * b;
+        if (!(det > 0)) break;
+        uv = uv + Vec3{((c + damp) * ru - b * rv) / det, ((a + damp) * rv - b * ru) / det, 0};
+        p = evaluate(s, uv.x, uv.y);
+        best = std::min(best, distance(p.point, q));
+    }
+    return best;
+}
+
+// A triangle by its corners, rotated to start at the smallest.
+using TriangleKey = std::array<int, 3>;
+TriangleKey key_of(std::array<int, 3> c) {
+    while (c[0] > c[1] || c[0] > c[2]) c = {c[1], c[2], c[0]};
+    return c;
+}
+struct TriangleKeyHash {
+    size_t operator()(const TriangleKey& k) const {
+        return (static_cast<size_t>(k[0]) * 0x9E3779B97F4A7C15ull) ^
+               (static_cast<size_t>(k[1]) * 0xC2B2AE3D27D4EB4Full) ^ static_cast<size_t>(k[2]);
+    }
+};
+
+struct Verdict {
+    bool drop = false;  // two corners at one pole: zero area, left out
+    bool split = false; // above the deviation or angle, or flat on the surface
+    double deviation = 0;
+    double badness = 0; // the largest of deviation and angle over their limits
+    std::array<Vec3, 3> normals;
+};
+
+struct Refiner {
+    const BSplineSurface& s;
+    const FaceCriteria& c;
+    FaceDomain& d;
+    Vec3 inward;
+    std::vector<Vec3> normal; // per point, computed once
+
+    Vec3 point_normal(int i) {
+        while (static_cast<int>(normal.size()) <= i)
+            normal.push_back(unit_normal(s, d.uv[normal.size()], inward));
+        return normal[i];
+    }
+
+    Verdict judge(const DomainTriangle& t) {
+        Verdict v;
+        const auto& k = t.corners;
+        std::array<Vec3, 3> uv, p;
+        for (int i = 0; i < 3; ++i) uv[i] = d.uv[k[i]], p[i] = d.points[k[i]];
+        for (int i = 0; i < 3; ++i) {
+            const int j = (i + 1) % 3;
+            if (d.keys[k[i]] >= 0 && d.keys[k[i]] == d.keys[k[j]]) {
+                // Zero area: left out, which keeps the mesh closed (its two
+                // other sides pair up). At a pole there is nothing to
+                // approximate; across a seam the triangle is too coarse.
+                v.drop = true;
+                v.split = d.pole[k[i]] == Vec3{} || d.pole[k[j]] == Vec3{};
+                v.badness = v.split ? INFINITY : 0;
+                return v;
+            }
+        }
+        // At a pole every (u,v) along its degenerate edge is the pole: the
+        // corner stands for the one facing the other two corners.
+        bool pole = false;
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 dir = d.pole[k[i]];
+            pole = pole || dir != Vec3{};
+            if (dir == Vec3{}) continue;
+            const Vec3 m = 0.5 * (uv[(i + 1) % 3] + uv[(i + 2) % 3]);
+            uv[i] = uv[i] + dot(m - uv[i], dir) * dir;
+        }
+        const Vec3 centre = (uv[0] + uv[1] + uv[2]) / 3.0;
+        const double target = kMargin * c.deviation + d.tolerance;
+        for (int i = 0; i < 3; ++i)
+            v.normals[i] =
+                d.pole[k[i]] != Vec3{} ? unit_normal(s, uv[i], centre) : point_normal(k[i]);
+        for (const Sample& smp : kSamples) {
+            // Boundary segments were measured with their edge.
+            if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
+            const Vec3 q = smp.l[0] * uv[0] + smp.l[1] * uv[1] + smp.l[2] * uv[2];
+            const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
+            v.deviation =
+                std::max(v.deviation, distance_to_surface(s, flat, q, pole ? target : INFINITY));
+        }
+        // The corner normals within the angle of each other, and the flat
+        // triangle's within it of theirs: no fold or needle on the surface.
+        const Vec3 a = p[1] - p[0], b = p[2] - p[0], e = p[2] - p[1];
+        const Vec3 n = cross(a, b);
+        double turn = 0;
+        for (int i = 0; i < 3; ++i)
+            turn = std::max({turn, angle_between(v.normals[i], v.normals[(i + 1) % 3]),
+                             angle_between(v.normals[i], n)});
+        const double longest = std::max({dot(a, a), dot(b, b), dot(e, e)});
+        const bool flat = !(norm(n) > 1e-12 * longest);
+        v.badness = flat ? INFINITY : std::max(v.deviation / target, turn / c.angle);
+        v.split = v.badness > 1;
+        return v;
+    }
+
+    // The point to insert for t: its circumcentre where that lies in the
+    // domain clear of constraints (Delaunay: no earlier point lies inside its
+    // circumcircle, so one nearer than half the radius was inserted for a
+    // neighbour in this round, and t is left to the next), else its centroid.
+    bool insert_for(ConstrainedTriangulation& cdt, const DomainTriangle& t) {
+        const Vec3 a = d.scaled[t.corners[0]], b = d.scaled[t.corners[1]],
+                   c3 = d.scaled[t.corners[2]];
+        const Vec3 ab = b - a, ac = c3 - a;
+        const double den = 2 * (ab.x * ac.y - ab.y * ac.x);
+        const double shortest =
+            std::sqrt(std::min({dot(ab, ab), dot(ac, ac), dot(c3 - b, c3 - b)}));
+        if (!(shortest > 0) || den == 0) return false;
+        const double ab2 = dot(ab, ab), ac2 = dot(ac, ac);
+        const Vec3 offset{(ac.y * ab2 - ab.y * ac2) / den, (ab.x * ac2 - ac.x * ab2) / den, 0};
+        Vec3 at = a + offset;
+        int index = cdt.insert(at, 0.75 * norm(offset));
+        if (index == ConstrainedTriangulation::kCrowded) return false;
+        if (index < 0) index = cdt.insert(at = (a + b + c3) / 3.0, 1e-3 * shortest);
+        if (index < 0) return false;
+        SEAMLESS_CHECK(index == d.size(), "the triangulation numbers inserted points in order");
+        d.add_interior(s, at);
+        return true;
+    }
+};
+
+} // namespace
+
+FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& lines, int face,
+                          const FaceCriteria& criteria) {
+    const BRepFace& f = model.brep.faces[face];
+    const BSplineSurface& s = model.surfaces[f.surface];
+    FaceMesh out;
+    out.domain = face_domain(model, lines, face);
+    FaceDomain& d = out.domain;
+    ConstrainedTriangulation cdt;
+    if (!cdt.build(d.scaled, d.keys, d.segments)) {
+        out.failed = true;
+        return out;
+    }
+    Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}};
+    std::vector<DomainTriangle> tris;
+    std::vector<Verdict> verdicts;
+    // A triangle the insertions left alone keeps its verdict.
+    std::unordered_map<TriangleKey, Verdict, TriangleKeyHash> known;
+    std::vector<int> failing;
+    for (int round = 0;; ++round) {
+        cdt.triangles(tris);
+        if (static_cast<std::int64_t>(tris.size()) > criteria.max_triangles)
+            throw TriangleBudgetError(model.source, "brep.faces[" + std::to_string(face) + "]",
+                                      criteria.max_triangles);
+        verdicts.resize(tris.size());
+        failing.clear();
+        for (size_t i = 0; i < tris.size(); ++i) {
+            const TriangleKey key = key_of(tris[i].corners);
+            const auto hit = known.find(key);
+            verdicts[i] = hit != known.end() ? hit->second : known[key] = r.judge(tris[i]);
+            if (verdicts[i].split) failing.push_back(static_cast<int>(i));
+        }
+        if (round == kRounds || failing.empty()) break;
+        // The worst first: their points make room that their neighbours' need not.
+        std::stable_sort(failing.begin(), failing.end(),
+                         [&](int a, int b) { return verdicts[a].badness > verdicts[b].badness; });
+        bool inserted = false;
+        for (int i : failing)
+            if (r.insert_for(cdt, tris[i])) inserted = true;
+        if (!inserted) break;
+    }
+    for (size_t i = 0; i < tris.size(); ++i) {
+        const Verdict& v = verdicts[i];
+        if (v.drop) continue;
+        if (v.split) ++out.above_tolerance;
+        out.deviation = std::max(out.deviation, v.deviation);
+        std::array<int, 3> t = tris[i].corners;
+        std::array<Vec3, 3> n = v.normals;
+        if (f.reversed) {
+            std::swap(t[1], t[2]);
+            std::swap(n[1], n[2]);
+            for (Vec3& x : n) x = -x;
+        }
+        out.triangles.push_back(t);
+        out.normals.push_back(n);
+    }
+    return out;
+}
+
+} // namespace seamless

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// Faces in parameter space (issue 28, section 2): a face's domain
+// (face_domain.h) triangulated by a constrained Delaunay triangulation whose
+// constraints are exactly its discretised loops, then refined inside, never
+// on a constraint, until every triangle is within the deviation of the
+// surface at its barycentric samples and its corner normals within the
+// angle. Triangles come out oriented outward (BRepFace::reversed applied).
+#pragma once
+
+#include <seamless/model/model.h>
+#include <seamless/tessellate/trimmed/edge_discretisation.h>
+#include <seamless/tessellate/trimmed/face_domain.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace seamless {
+
+struct FaceCriteria {
+    double deviation = 0; // D, model units
+    double angle = 0.5;   // radians
+    std::int64_t max_triangles = 10'000'000;
+};
+
+struct FaceMesh {
+    FaceDomain domain;                         // boundary points, then the interior ones
+    std::vector<std::array<int, 3>> triangles; // domain point indices, outward
+    std::vector<std::array<Vec3, 3>> normals;  // unit surface normals at the corners, outward
+    double deviation = 0;                      // largest sampled deviation of the triangles
+    int above_tolerance = 0;                   // triangles the limits left above D or the angle
+    bool failed = false; // the loops did not triangulate (crossing or overlapping segments)
+};
+
+// Throws TriangleBudgetError (file `model.source`) past max_triangles.
+FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& lines, int face,
+                          const FaceCriteria& criteria);
+
+} // namespace seamless
