@@ -3,12 +3,11 @@
 // of any mesh of a CAD model against the model's B-rep
 // (lib/mesh/deviation/brep_deviation.h), printed as JSON; the CAD benchmark
 // (run_cad_bench.py) measures seamless's and OpenCASCADE's meshes with it.
-// A model without a B-rep (untrimmed faces only) is measured against its
-// surfaces with measure_deviation (surface -> mesh only: the mesh carries no
-// (u,v)). Exit 2 with one line on stderr when the model or mesh is refused.
+// A model without a B-rep (untrimmed surfaces only) is measured as the B-rep
+// whose faces are its surfaces' whole rectangles. Exit 2 with one line on stderr when the model or
+// mesh is refused.
 #include <seamless/base/error.h>
 #include <seamless/mesh/deviation/brep_deviation.h>
-#include <seamless/mesh/deviation/deviation.h>
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/model/model.h>
 
@@ -21,6 +20,46 @@
 using namespace seamless;
 
 namespace {
+
+// The boundary of a surface's domain from corner a to corner b (in (u,v)):
+// its 3D curve a polyline through kBoundaryPoints exact points (edge samples
+// and projections need no more), its pcurve the straight segment.
+constexpr int kBoundaryPoints = 129;
+
+int add_boundary(BRep& brep, const BSplineSurface& s, Vec3 a, Vec3 b) {
+    BSplineCurve curve, pcurve{1, {0, 0, 1, 1}, {a, b}, {}};
+    curve.knots = {0};
+    for (int i = 0; i < kBoundaryPoints; ++i) {
+        const double t = double(i) / (kBoundaryPoints - 1);
+        const Vec3 uv = a + t * (b - a);
+        curve.points.push_back(evaluate(s, uv.x, uv.y).point);
+        curve.knots.push_back(t);
+    }
+    curve.knots.push_back(1);
+    brep.curves.push_back(std::move(curve));
+    brep.pcurves.push_back(std::move(pcurve));
+    const int n = static_cast<int>(brep.curves.size()) - 1;
+    brep.edges.push_back({n, 0, 1, -1, -1, 0});
+    return n;
+}
+
+// Every surface as one face bounded by its domain's rectangle (the edges of
+// neighbouring surfaces are not shared: the measure does not need it).
+void whole_surfaces_brep(Model& m) {
+    for (int i = 0; i < static_cast<int>(m.surfaces.size()); ++i) {
+        const BSplineSurface& s = m.surfaces[i];
+        const Vec3 c[4] = {{s.u_min(), s.v_min(), 0},
+                           {s.u_max(), s.v_min(), 0},
+                           {s.u_max(), s.v_max(), 0},
+                           {s.u_min(), s.v_max(), 0}};
+        BRepLoop loop;
+        for (int k = 0; k < 4; ++k) {
+            const int e = add_boundary(m.brep, s, c[k], c[(k + 1) % 4]);
+            loop.coedges.push_back({e, false, e});
+        }
+        m.brep.faces.push_back({i, false, {loop}, s.name});
+    }
+}
 
 nlohmann::json stats_json(const DeviationStats& s) {
     return {{"max", s.max}, {"rms", s.rms}, {"samples", s.samples}};
@@ -47,7 +86,7 @@ int run(int argc, char** argv) {
         return 2;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const Model model = load_model(model_path);
+    Model model = load_model(model_path);
     const TriangleMesh mesh = read_mesh(mesh_path);
     const double read =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -55,19 +94,10 @@ int run(int argc, char** argv) {
                       {"mesh", mesh_path},
                       {"read_seconds", read},
                       {"triangles", mesh.triangle_count()}};
-    Deviation d;
-    if (!model.brep.empty()) {
-        js["measure"] = "brep";
-        js["faces"] = model.brep.faces.size();
-        d = measure_brep_deviation(model, mesh, options);
-    } else {
-        // Untrimmed: every surface is a face; only surface -> mesh without (u,v).
-        js["measure"] = "surfaces";
-        js["faces"] = model.surfaces.size();
-        DeviationOptions o;
-        o.threads = options.threads;
-        d = measure_deviation(model, mesh, o);
-    }
+    js["measure"] = model.brep.empty() ? "whole surfaces" : "brep";
+    if (model.brep.empty()) whole_surfaces_brep(model);
+    js["faces"] = model.brep.faces.size();
+    const Deviation d = measure_brep_deviation(model, mesh, options);
     js["face_to_mesh"] = stats_json(d.surface_to_mesh);
     js["mesh_to_face"] = stats_json(d.mesh_to_surface);
     js["seconds"] = d.seconds;

@@ -23,6 +23,9 @@
 #include <IGESData_IGESModel.hxx>
 #include <IMeshTools_Parameters.hxx>
 #include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <Poly_Triangulation.hxx>
 #include <STEPConstruct_UnitContext.hxx>
 #include <STEPControl_Reader.hxx>
@@ -55,7 +58,8 @@ struct Args {
     double relative_deflection = 0; // else this times the bounding box diagonal
     double angle = 0.5;             // radians
     int threads = 1;
-    int repeat = 1; // meshings timed; the median is reported
+    int repeat = 1;    // meshings timed; the median is reported
+    bool info = false; // read only: the faces, the diagonal, the reading time
 };
 
 double now() {
@@ -172,7 +176,8 @@ Collected collect(const TopoDS_Shape& shape) {
 
 int usage() {
     std::cerr << "usage: occt_mesh FILE.step|.stp|.iges|.igs [-o OUT.off] (--deflection D | "
-                 "--relative-deflection R) [--angle RAD] [--threads N] [--repeat N]\n";
+                 "--relative-deflection R) [--angle RAD] [--threads N] [--repeat N]\n"
+                 "       occt_mesh FILE --info   (faces, bounding box diagonal, reading time)\n";
     return 2;
 }
 
@@ -192,15 +197,19 @@ bool parse(int argc, char** argv, Args& a) {
             a.threads = std::max(1, std::stoi(argv[++i]));
         else if (s == "--repeat" && has_value)
             a.repeat = std::max(1, std::stoi(argv[++i]));
+        else if (s == "--info")
+            a.info = true;
         else if (a.input.empty() && s.rfind("-", 0) != 0)
             a.input = s;
         else
             return false;
     }
-    return !a.input.empty() && (a.deflection > 0 || a.relative_deflection > 0);
+    return !a.input.empty() && (a.info || a.deflection > 0 || a.relative_deflection > 0);
 }
 
 int run(const Args& a) {
+    // stdout is the JSON alone: the readers' progress messages go nowhere.
+    Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
     // OpenCASCADE's parallel loops run on TBB (Debian's build): capped here.
     const tbb::global_control cap(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(a.threads));
@@ -209,6 +218,14 @@ int run(const Args& a) {
     const TopoDS_Shape shape = read_shape(a.input);
     js["read_seconds"] = now() - r0;
     const double diag = diagonal(shape);
+    if (a.info) {
+        int faces = 0;
+        for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) ++faces;
+        js["diagonal"] = diag;
+        js["faces"] = faces;
+        std::cout << js.dump(2) << "\n";
+        return 0;
+    }
     const double deflection = a.deflection > 0 ? a.deflection : a.relative_deflection * diag;
     js["diagonal"] = diag;
     js["deflection"] = deflection;

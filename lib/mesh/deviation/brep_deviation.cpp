@@ -81,7 +81,21 @@ struct FaceSearch {
     const BRepSampled& sampled;
     const NearestSamples& face_tree;
     const NearestSamples& edge_tree;
+    // Per edge, the longest chord between consecutive samples: a point of the
+    // curve is within it of a sample (the arc between two samples is shorter
+    // than twice its chord), so a sample farther than best + it cannot lead
+    // to a closer point.
+    std::vector<double> edge_piece;
 };
+
+std::vector<double> edge_pieces(const BRep& brep, const std::vector<EdgeSample>& samples) {
+    std::vector<double> piece(brep.edges.size(), 0.0);
+    for (size_t i = 1; i < samples.size(); ++i)
+        if (samples[i].edge == samples[i - 1].edge)
+            piece[samples[i].edge] =
+                std::max(piece[samples[i].edge], distance(samples[i].point, samples[i - 1].point));
+    return piece;
+}
 
 // Distance from x to the closest point found on the faces (see the header).
 double distance_to_faces(const FaceSearch& q, Vec3 x, std::vector<int>& nearest) {
@@ -104,8 +118,10 @@ double distance_to_faces(const FaceSearch& q, Vec3 x, std::vector<int>& nearest)
     q.edge_tree.nearest(x, q.options.edge_neighbours, nearest);
     for (const int i : nearest) {
         const EdgeSample& s = q.sampled.edges[i];
+        const double d = distance(s.point, x);
+        if (d - q.edge_piece[s.edge] >= best) continue;
         const BRepEdge& e = brep.edges[s.edge];
-        best = std::min(best, distance(s.point, x));
+        best = std::min(best, d);
         best = std::min(best, project_to_curve(brep.curves[e.curve], x, s.t, e.t0, e.t1,
                                                q.options.newton_iterations)
                                   .distance);
@@ -113,8 +129,11 @@ double distance_to_faces(const FaceSearch& q, Vec3 x, std::vector<int>& nearest)
     return best;
 }
 
+// Mesh -> face: every vertex a triangle uses once, then the triangles' other
+// barycentric points; fixed blocks of each, combined in order.
 DeviationStats mesh_to_faces(const Model& model, const TriangleMesh& mesh,
                              const BRepDeviationOptions& o, const BRepSampled& s) {
+    if (s.faces.empty() && s.edges.empty()) return {};
     std::vector<Vec3> points(s.faces.size());
     for (size_t i = 0; i < s.faces.size(); ++i) points[i] = s.faces[i].point;
     const NearestSamples face_tree(points);
@@ -122,17 +141,28 @@ DeviationStats mesh_to_faces(const Model& model, const TriangleMesh& mesh,
     for (size_t i = 0; i < s.edges.size(); ++i) points[i] = s.edges[i].point;
     const NearestSamples edge_tree(points);
     std::vector<Vec3>().swap(points);
-    const FaceSearch q{model, o, s, face_tree, edge_tree};
+    const FaceSearch q{model, o, s, face_tree, edge_tree, edge_pieces(model.brep, s.edges)};
 
-    const std::vector<std::array<double, 3>> bary = barycentric_points(o.triangle_level);
-    const int blocks = (mesh.triangle_count() + kTriangleBlock - 1) / kTriangleBlock;
+    std::vector<char> used(mesh.positions.size(), 0);
+    for (const auto& t : mesh.triangles)
+        for (const int v : t) used[v] = 1;
+    std::vector<std::array<double, 3>> bary = barycentric_points(o.triangle_level);
+    std::erase_if(
+        bary, [](const std::array<double, 3>& w) { return w[0] == 1 || w[1] == 1 || w[2] == 1; });
+    const int nv = mesh.vertex_count(), nt = mesh.triangle_count();
+    const int vertex_blocks = (nv + kTriangleBlock - 1) / kTriangleBlock;
+    const int blocks = vertex_blocks + (nt + kTriangleBlock - 1) / kTriangleBlock;
     std::vector<DeviationAccumulator> acc(blocks);
-    if (s.faces.empty() && s.edges.empty()) return combine(acc);
     parallel_chunks(blocks, o.threads, [&](int begin, int end) {
         std::vector<int> nearest;
         for (int b = begin; b < end; ++b) {
-            const int last = std::min(mesh.triangle_count(), (b + 1) * kTriangleBlock);
-            for (int f = b * kTriangleBlock; f < last; ++f) {
+            if (b < vertex_blocks) {
+                for (int v = b * kTriangleBlock; v < std::min(nv, (b + 1) * kTriangleBlock); ++v)
+                    if (used[v]) acc[b].add(distance_to_faces(q, mesh.positions[v], nearest));
+                continue;
+            }
+            const int first = (b - vertex_blocks) * kTriangleBlock;
+            for (int f = first; f < std::min(nt, first + kTriangleBlock); ++f) {
                 const auto& tri = mesh.triangles[f];
                 for (const auto& w : bary) {
                     const Vec3 x = w[0] * mesh.positions[tri[0]] + w[1] * mesh.positions[tri[1]] +

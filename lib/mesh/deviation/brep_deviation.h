@@ -6,8 +6,8 @@
 //   face -> mesh: exact points of every face (brep_samples.h: a grid over its
 //     (u,v) box kept inside its loops, and points on its edges' curves), each
 //     to the closest point of the mesh (CGAL AABB tree);
-//   mesh -> face: barycentric points of every triangle (corners, edge
-//     midpoints, centroid) to the closest point of the faces: the nearest
+//   mesh -> face: barycentric points of every triangle (corners, each vertex
+//     once, edge midpoints, centroid) to the closest point of the faces: the nearest
 //     face samples seed Newton projection onto their faces' surfaces, kept
 //     where the projection lies inside the face's loops; the nearest edge
 //     samples seed projection onto the edges' curves (a point whose foot on
@@ -34,7 +34,8 @@ struct BRepDeviationOptions {
     // Loops' pcurves sampled at least this finely for the inside test, and
     // a quarter of the sample spacing apart along the edge.
     int pcurve_samples = 64;
-    // Mesh -> face: barycentric points (i, j, k) / triangle_level, plus the centroid.
+    // Mesh -> face: barycentric points (i, j, k) / triangle_level, plus the
+    // centroid; the corners (the mesh's vertices) once each.
     int triangle_level = 2;
     int face_neighbours = 8; // nearest face samples, their faces projected onto
     int max_faces_tried = 3; // distinct faces among them
