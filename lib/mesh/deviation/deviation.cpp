@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Measured deviation between exact surfaces and their tessellation. CGAL only
-// here: an AABB tree of the triangles for the closest-point queries.
+// Measured deviation between exact surfaces and their tessellation.
 #include <seamless/mesh/deviation/deviation.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
+#include <seamless/mesh/deviation/deviation_accumulator.h>
+#include <seamless/mesh/deviation/mesh_distance.h>
+#include <seamless/mesh/deviation/spline_projection.h>
 
 #include <algorithm>
 #include <chrono>
@@ -16,36 +14,7 @@
 namespace seamless {
 namespace {
 
-using K = CGAL::Simple_cartesian<double>;
-using Triangle = K::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<Triangle>::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-
-// Running max and sum of squares of one chunk of samples.
-struct Accumulator {
-    double max = 0, sum_sq = 0;
-    long long count = 0;
-    void add(double d) {
-        max = std::max(max, d);
-        sum_sq += d * d;
-        ++count;
-    }
-};
-
-DeviationStats combine(const std::vector<Accumulator>& chunks) {
-    // Fixed chunks combined in order: the same sums whatever the thread count.
-    Accumulator a;
-    for (const Accumulator& c : chunks) {
-        a.max = std::max(a.max, c.max);
-        a.sum_sq += c.sum_sq;
-        a.count += c.count;
-    }
-    DeviationStats s;
-    s.max = a.max;
-    s.samples = a.count;
-    s.rms = a.count > 0 ? std::sqrt(a.sum_sq / static_cast<double>(a.count)) : 0.0;
-    return s;
-}
+using Accumulator = DeviationAccumulator;
 
 // Runs f(begin, end, chunk) over fixed chunks of [0, n) on `threads` threads.
 template <class F> void for_chunks(long long n, long long chunk, int threads, F&& f) {
@@ -63,45 +32,6 @@ template <class F> void for_chunks(long long n, long long chunk, int threads, F&
     for (int id = 1; id < threads; ++id) pool.emplace_back(work, id);
     work(0);
     for (std::thread& th : pool) th.join();
-}
-
-// Local minimum of |S(u,v) - x| over the surface's domain by damped
-// Gauss-Newton from (u, v), clamped to the domain; returns the smallest
-// distance reached.
-double project(const BSplineSurface& b, Vec3 x, double u, double v, int iterations) {
-    const double u0 = b.u_min(), u1 = b.u_max(), v0 = b.v_min(), v1 = b.v_max();
-    double s = std::clamp(u, u0, u1), t = std::clamp(v, v0, v1);
-    SurfacePoint sp = evaluate(b, s, t);
-    double best = distance(sp.point, x);
-    for (int it = 0; it < iterations && best > 0; ++it) {
-        const Vec3 r = sp.point - x;
-        // Levenberg regularisation keeps the step finite at poles and folds.
-        const double reg = 1e-12 * (dot(sp.du, sp.du) + dot(sp.dv, sp.dv));
-        const double a11 = dot(sp.du, sp.du) + reg, a22 = dot(sp.dv, sp.dv) + reg;
-        const double a12 = dot(sp.du, sp.dv);
-        const double g1 = dot(sp.du, r), g2 = dot(sp.dv, r);
-        const double det = a11 * a22 - a12 * a12;
-        if (!(det > 0)) break;
-        double ds = -(a22 * g1 - a12 * g2) / det, dt = -(a11 * g2 - a12 * g1) / det;
-        bool improved = false;
-        for (int halving = 0; halving < 6 && !improved; ++halving) {
-            const double ns = std::clamp(s + ds, u0, u1), nt = std::clamp(t + dt, v0, v1);
-            const SurfacePoint np = evaluate(b, ns, nt);
-            const double d = distance(np.point, x);
-            if (d < best) {
-                improved = true;
-                best = d;
-                s = ns;
-                t = nt;
-                sp = np;
-            }
-            ds *= 0.5;
-            dt *= 0.5;
-        }
-        if (!improved || std::max(std::abs(ds) / (u1 - u0), std::abs(dt) / (v1 - v0)) < 1e-15)
-            break;
-    }
-    return best;
 }
 
 struct Sample {
@@ -131,14 +61,6 @@ Deviation measure(const Model& model, const std::vector<BezierPatch>& patches,
     Deviation out;
 
     // Surface -> mesh: exact sample points, then closest points on the triangles.
-    std::vector<Triangle> triangles;
-    triangles.reserve(mesh.triangles.size());
-    for (const auto& f : mesh.triangles) {
-        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
-        const Vec3 a = mesh.positions[f[0]], b = mesh.positions[f[1]], c = mesh.positions[f[2]];
-        triangles.emplace_back(K::Point_3(a.x, a.y, a.z), K::Point_3(b.x, b.y, b.z),
-                               K::Point_3(c.x, c.y, c.z));
-    }
     const int n = std::max(2, options.patch_grid);
     std::vector<Sample> grid;
     grid.reserve(patches.size() * n * n + samples.size());
@@ -147,17 +69,15 @@ Deviation measure(const Model& model, const std::vector<BezierPatch>& patches,
             for (int j = 0; j < n; ++j)
                 grid.push_back({p, double(i) / (n - 1), double(j) / (n - 1)});
     grid.insert(grid.end(), samples.begin(), samples.end());
-    if (!triangles.empty()) {
-        Tree tree(triangles.begin(), triangles.end());
-        tree.build();
-        tree.accelerate_distance_queries();
+    const MeshDistance to_mesh(mesh);
+    if (!to_mesh.empty()) {
         const long long count = static_cast<long long>(grid.size());
         std::vector<Accumulator> acc((count + kChunk - 1) / kChunk);
         for_chunks(count, kChunk, threads, [&](long long b, long long e, long long c) {
             for (long long i = b; i < e; ++i) {
                 const Sample& q = grid[i];
                 const Vec3 p = evaluate(patches[q.patch], q.s, q.t).point;
-                acc[c].add(std::sqrt(tree.squared_distance(K::Point_3(p.x, p.y, p.z))));
+                acc[c].add(to_mesh(p));
             }
         });
         out.surface_to_mesh = combine(acc);
@@ -166,12 +86,7 @@ Deviation measure(const Model& model, const std::vector<BezierPatch>& patches,
     // Mesh -> surface: barycentric samples of each triangle, on its source surface.
     const bool has_uv = mesh.corner_uvs.size() == mesh.triangles.size() &&
                         mesh.triangle_surface.size() == mesh.triangles.size();
-    std::vector<std::array<double, 3>> bary;
-    const int level = std::max(1, options.triangle_level);
-    for (int i = 0; i <= level; ++i)
-        for (int j = 0; i + j <= level; ++j)
-            bary.push_back({double(i) / level, double(j) / level, double(level - i - j) / level});
-    if (level % 3 != 0) bary.push_back({1.0 / 3, 1.0 / 3, 1.0 / 3});
+    const std::vector<std::array<double, 3>> bary = barycentric_points(options.triangle_level);
     const long long count = has_uv ? mesh.triangle_count() : 0;
     const size_t chunks = static_cast<size_t>((count + kChunk - 1) / kChunk);
     std::vector<Accumulator> proj(chunks), same(chunks);
@@ -193,7 +108,8 @@ Deviation measure(const Model& model, const std::vector<BezierPatch>& patches,
                 }
                 const double d_same = distance(evaluate(surf, u, v).point, x);
                 same[c].add(d_same);
-                proj[c].add(std::min(d_same, project(surf, x, u, v, options.newton_iterations)));
+                proj[c].add(std::min(
+                    d_same, project_to_surface(surf, x, u, v, options.newton_iterations).distance));
             }
         }
     });

@@ -1,0 +1,238 @@
+# SPDX-License-Identifier: MIT
+"""docs/results/cad.md from the results run_cad_bench.py gathers (results.json)."""
+
+import math
+
+DEFECTS = (  # check --json key, how the table names it
+    ("border_edges", "border edges"),
+    ("cracks", "crack edges"),
+    ("t_junctions", "T-junctions"),
+    ("non_manifold_edges", "non-manifold edges"),
+    ("non_manifold_vertices", "non-manifold vertices"),
+    ("degenerate_triangles", "degenerate"),
+    ("duplicated_triangles", "duplicated"),
+    ("inconsistent_orientation", "misoriented pairs"),
+    ("self_intersections", "self-intersections"),
+)
+
+
+def count(js, key):
+    v = js.get(key, 0)
+    return v.get("count", 0) if isinstance(v, dict) else v
+
+
+def verdict(check):
+    """'PASS', 'FAIL: ...' or the check's own failure."""
+    if not check:
+        return ""
+    if "error" in check:
+        return "check failed: " + check["error"]
+    parts = ["%d %s" % (count(check, k), name) for k, name in DEFECTS if count(check, k)]
+    if check.get("passed"):
+        return "PASS"
+    return "FAIL: " + (", ".join(parts) if parts else "open")
+
+
+def num(x, digits=3):
+    if x is None:
+        return "-"
+    if x == 0:
+        return "0"
+    return "%.*g" % (digits, x)
+
+
+def seconds(run):
+    return run.get("mesh_seconds") if run and run.get("ok") else None
+
+
+def deviation(side, D):
+    """(face->mesh, mesh->face) in units of D, or None."""
+    dev = side.get("deviation") or {}
+    if "face_to_mesh" not in dev:
+        return None
+    return dev["face_to_mesh"]["max"] / D, dev["mesh_to_face"]["max"] / D
+
+
+def tool_row(row, entry, tool):
+    side = entry[tool]
+    r1, r2 = side["run1"], side.get("run2", {})
+    label = "seamless" if tool == "seamless" else "OpenCASCADE"
+    if not r1.get("ok"):
+        return "| | | %s | **failed**: %s | | | | | | | | |" % (
+            label, r1.get("error", "").replace("|", "/"))
+    dev = deviation(side, entry["D"])
+    dev_error = (side.get("deviation") or {}).get("error", "")
+    if dev:
+        dev_cells = "%s | %s" % (num(dev[0], 2), num(dev[1], 2))
+    else:
+        # Without a model read by seamless there is no B-rep to measure against.
+        why = "timeout" if "timeout" in dev_error else "not read"
+        dev_cells = "n/a (%s) | n/a" % why
+    unmeshed = r1.get("unmeshed_faces", 0) if tool == "occt" else 0
+    read = row.get("occt_read_seconds") if tool == "occt" else r1.get("other_seconds")
+    return "| | | %s | %s | %s | %s | %d | %s | %s | %s | %s |" % (
+        label, "meshed" if not unmeshed else "holes", unmeshed,
+        verdict(side.get("check")), r1["triangles"], dev_cells, num(seconds(r1)),
+        num(seconds(r2)), num(read))
+
+
+def level_table(results, level):
+    key = repr(level)
+    lines = ["## D = %g x diagonal" % level, "",
+             "Deviation columns: the measured maximum in units of D (<= 1 meets the request). "
+             "Read: OpenCASCADE's reading alone; for seamless the rest of the process's wall "
+             "time (reading, writing, start-up).", "",
+             "| file | faces | tool | result | unmeshed | check --closed | triangles | "
+             "face->mesh / D | mesh->face / D | 1 thread (s) | 2 threads (s) | read (s) |",
+             "|---|---:|---|---|---:|---|---:|---:|---:|---:|---:|---:|"]
+    for row in results["rows"]:
+        if "error" in row:
+            lines.append("| %s | | | **%s** | | | | | | | | |" % (row["name"], row["error"]))
+            continue
+        entry = row["levels"].get(key)
+        if entry is None:
+            continue
+        lines.append("| %s | %d | D = %s | | | | | | | | | |" % (row["name"], row["faces"],
+                                                                 num(entry["D"])))
+        for tool in ("seamless", "occt"):
+            lines.append(tool_row(row, entry, tool))
+    return lines
+
+
+def summary(results, level):
+    """Figures for the goals at one level."""
+    key = repr(level)
+    s = {"files": 0, "seamless_ok": 0, "occt_ok": 0, "occt_complete": 0, "seamless_pass": 0,
+         "occt_pass": 0, "within_D": 0, "measured": 0, "ratios": [], "both": 0,
+         "t1": [0.0, 0.0], "t2": [0.0, 0.0], "worst_dev": 0.0}
+    for row in results["rows"]:
+        s["files"] += 1
+        entry = row.get("levels", {}).get(key)
+        if not entry:
+            continue
+        ours, occ = entry["seamless"], entry["occt"]
+        ok_ours, ok_occ = ours["run1"].get("ok"), occ["run1"].get("ok")
+        s["seamless_ok"] += bool(ok_ours)
+        s["occt_ok"] += bool(ok_occ)
+        s["occt_complete"] += bool(ok_occ and not occ["run1"].get("unmeshed_faces"))
+        s["seamless_pass"] += bool(ok_ours and (ours.get("check") or {}).get("passed"))
+        s["occt_pass"] += bool(ok_occ and (occ.get("check") or {}).get("passed"))
+        dev = deviation(ours, entry["D"]) if ok_ours else None
+        if dev:
+            s["measured"] += 1
+            s["within_D"] += max(dev) <= 1
+            s["worst_dev"] = max(s["worst_dev"], max(dev))
+        if ok_ours and ok_occ and seconds(ours.get("run2")) and seconds(occ.get("run2")):
+            s["both"] += 1
+            s["ratios"].append(ours["run1"]["triangles"] / occ["run1"]["triangles"])
+            s["t1"][0] += seconds(ours["run1"])
+            s["t1"][1] += seconds(occ["run1"])
+            s["t2"][0] += seconds(ours["run2"])
+            s["t2"][1] += seconds(occ["run2"])
+    r = s["ratios"]
+    s["geomean"] = math.exp(sum(math.log(x) for x in r) / len(r)) if r else None
+    return s
+
+
+def summary_table(results):
+    lines = ["## Summary", "",
+             "Triangles and times over the files both tools meshed (the ratio seamless / "
+             "OpenCASCADE; times in seconds, meshing only).", "",
+             "| | " + " | ".join("D = %g x diag" % lv for lv in results["levels"]) + " |",
+             "|---|" + "---:|" * len(results["levels"])]
+    sums = [summary(results, lv) for lv in results["levels"]]
+
+    def add(label, f):
+        lines.append("| %s | %s |" % (label, " | ".join(f(s) for s in sums)))
+
+    add("files", lambda s: str(s["files"]))
+    add("seamless meshed", lambda s: str(s["seamless_ok"]))
+    add("OpenCASCADE meshed (all faces)", lambda s: "%d (%d)" % (s["occt_ok"], s["occt_complete"]))
+    add("check --closed PASS: seamless", lambda s: str(s["seamless_pass"]))
+    add("check --closed PASS: OpenCASCADE", lambda s: str(s["occt_pass"]))
+    add("seamless within D, both ways (measured)",
+        lambda s: "%d (%d), worst %s D" % (s["within_D"], s["measured"], num(s["worst_dev"], 3)))
+    add("files both meshed", lambda s: str(s["both"]))
+    add("triangles, geometric mean of the ratio", lambda s: num(s["geomean"]))
+    add("total time 1 thread: seamless / OpenCASCADE",
+        lambda s: "%s / %s" % (num(s["t1"][0]), num(s["t1"][1])))
+    add("total time 2 threads: seamless / OpenCASCADE",
+        lambda s: "%s / %s" % (num(s["t2"][0]), num(s["t2"][1])))
+    return lines, sums
+
+
+def goals(results, sums):
+    lines = ["## Goals of issue 28, section 4", ""]
+    for lv, s in zip(results["levels"], sums):
+        n = s["files"]
+        t2 = s["t2"][0] / s["t2"][1] if s["t2"][1] > 0 else None
+        lines += [
+            "At D = %g x diagonal:" % lv, "",
+            "- every corpus file tessellates: %s (%d of %d)" % (
+                "met" if s["seamless_ok"] == n else "not met, %d short" % (n - s["seamless_ok"]),
+                s["seamless_ok"], n),
+            "- every closed solid closed, `check --closed` PASS: %d of the %d meshed files pass%s" % (
+                s["seamless_pass"], s["seamless_ok"],
+                "" if s["seamless_pass"] == s["seamless_ok"] else " (not met)"),
+            "- measured deviation <= D on every file: %s (%d of %d measured, worst %s D)" % (
+                "met" if s["measured"] == n and s["within_D"] == n else "not met",
+                s["within_D"], s["measured"], num(s["worst_dev"])),
+            "- no more triangles than OpenCASCADE (geometric mean): %s" % (
+                "no file meshed by both" if s["geomean"] is None else "%s (%s)" % (
+                    "met" if s["geomean"] <= 1 else "not met, %.0f%% more" % (
+                        100 * (s["geomean"] - 1)), num(s["geomean"]))),
+            "- total time at most half of OpenCASCADE's on 2 threads: %s" % (
+                "no file meshed by both" if t2 is None else "%s (%s of it, over %d files)" % (
+                    "met" if t2 <= 0.5 else "not met", num(t2), s["both"])),
+            ""]
+    return lines
+
+
+def markdown(results):
+    m = results["machine"]
+    lines = [
+        "# CAD parts: seamless against OpenCASCADE's BRepMesh",
+        "",
+        "Regenerated by one command from the source tree, after building with "
+        "`-DSEAMLESS_BUILD_BENCH=ON`:",
+        "",
+        "    python3 bench/cad/run_cad_bench.py",
+        "",
+        "(`--help` for its options; meshes and the raw results.json go to build/cad-bench/). "
+        "Issue 28, section 4.",
+        "",
+        "- Machine: %s, %s cores, %s; load average %s at the start, %s at the end; the "
+        "run took %.0f minutes." % (m["cpu"], m["cores"], m["system"], " / ".join(m["load"]),
+                                    " / ".join(m.get("load_end", [])), m.get("wall_minutes", 0)),
+        "- Date %s; seamless %s; OpenCASCADE %s." % (m["date"], m["commit"], m["occt"]),
+        "- Files: every STEP/IGES file of ../shared/models/cad-corpus/ and data/models/cad/ "
+        "(sub-folders included). D is a fraction of the bounding box diagonal "
+        "(OpenCASCADE's BRepBndLib::AddOptimal of the shape read, lengths in the file's "
+        "unit as seamless reads them); angle %g rad (seamless: `--angle %.4g` degrees)." % (
+            results["angle"], math.degrees(results["angle"])),
+        "- seamless: `seamless tessellate FILE -o OUT.off --tolerance D --angle A --threads 1|2 "
+        "--stats`; time: the stats' `seconds` (meshing; reading excluded).",
+        "- OpenCASCADE: `occt_mesh` (bench/cad/occt_mesh.cpp): STEPControl_Reader / "
+        "IGESControl_Reader, then BRepMesh_IncrementalMesh (Deflection D, Angle A, absolute, "
+        "InParallel on 2 threads, TBB capped to the thread count), timed apart from reading. "
+        "The mesh is what its users get from StlAPI_Writer or RWGltf_CafWriter: every face's "
+        "triangulation with its location, reversed faces flipped, nodes per face (the nodes of "
+        "shared edges are not merged; `seamless check` welds bit-identical positions).",
+        "- Times: the median of %d meshings (seamless: of up to %d runs); every run limited to "
+        "%g s." % (results["repeat"], results["repeat"], results["timeout"]),
+        "- check: `seamless check --closed --json` (docs/check.md): PASS, or the defects "
+        "counted.",
+        "- Deviation: `brep_deviation MODEL MESH` (lib/mesh/deviation/brep_deviation.h), the "
+        "same code for both meshes, from positions and triangles alone: face->mesh samples "
+        "each face on a (u,v) grid kept inside its loops, plus its edges' curves, against the "
+        "mesh; mesh->face projects corners, edge midpoints and centroids of every triangle "
+        "onto the trimmed faces. Both are sampled, lower estimates of the Hausdorff distance. "
+        "A model without trimmed faces is measured against its whole surfaces. Files seamless "
+        "cannot read have no deviation.",
+        "",
+    ]
+    table, sums = summary_table(results)
+    lines += table + [""] + goals(results, sums)
+    for lv in results["levels"]:
+        lines += level_table(results, lv) + [""]
+    return "\n".join(lines)
