@@ -34,7 +34,9 @@ void add_sweep(CLI::App& app, Action& action) {
         std::string json;
     };
     auto args = std::make_shared<Args>();
-    cmd->add_option("MODEL", args->models, "model files (.json version 1, or Newell .bpt)")
+    cmd->add_option("MODEL", args->models,
+                    "model files (.json, Newell .bpt, STEP, IGES; B-rep models sweep the deviation "
+                    "D = f * 0.001 of their diagonal)")
         ->required();
     cmd->add_option("--first-decade", args->first, "start at f = 10^N (default 1: f = 10)")
         ->check(finite_number(Bound::any));

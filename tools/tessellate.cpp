@@ -32,6 +32,7 @@ struct TessellateArgs {
     int max_depth = TessellationOptions{}.max_depth;
     long long max_triangles = TessellationOptions{}.max_triangles;
     int threads = TessellationOptions{}.threads;
+    bool allow_holes = TessellationOptions{}.allow_holes;
     ModelLoadOptions load;
 };
 
@@ -55,10 +56,12 @@ void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
     cmd->add_option("--tolerance", args.tolerance,
                     "requested deviation in model units: subdivide until the certified two-way "
                     "distance between surfaces and mesh is at most this (planarity test off "
-                    "unless --eps1/--eps2 are given)")
+                    "unless --eps1/--eps2 are given); B-rep models (trimmed faces) default to "
+                    "0.001 of their bounding box diagonal")
         ->check(finite_number(Bound::positive));
     cmd->add_option("--angle", args.angle,
-                    "also bound the angle between the normals of neighbouring triangles, degrees")
+                    "also bound the angle between the normals of neighbouring triangles, degrees "
+                    "(B-rep models default to 28.6, 0.5 radians)")
         ->check(CLI::Range(0.0, 180.0));
     cmd->add_option("--max-depth", args.max_depth, "most halvings per Bezier patch")
         ->check(CLI::Range(0, 60));
@@ -71,6 +74,9 @@ void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
                     "worker threads (0: all cores; 1: sequential); the mesh is the same for any")
         ->check(CLI::Range(0, 1024));
     cmd->add_option("--stats", args.stats, "also write the statistics as JSON to this file");
+    cmd->add_flag("--allow-holes", args.allow_holes,
+                  "B-rep models: write the mesh without a face that cannot be triangulated, "
+                  "with a warning naming it (default: refuse the model, naming the face)");
     add_model_options(cmd, args.load);
 }
 
@@ -83,6 +89,7 @@ TessellationOptions tessellation_options(const TessellateArgs& args) {
     opt.seam_tolerance = args.seam_tolerance;
     opt.tolerance = args.tolerance;
     opt.threads = args.threads;
+    opt.allow_holes = args.allow_holes;
     opt.angle = args.angle * 3.14159265358979323846 / 180;
     opt.patch_trees = false; // the renderer's, not written
     return opt;
@@ -115,6 +122,23 @@ nlohmann::json tessellation_stats_json(const TessellateArgs& args, const Tessell
                       {"above_tolerance", s.above_tolerance},
                       {"passes", s.passes},
                       {"seconds", s.seconds}};
+    if (s.brep.faces > 0) {
+        const BRepStats& b = s.brep;
+        js["brep"] = {{"faces", b.faces},
+                      {"edges", b.edges},
+                      {"edge_points", b.edge_points},
+                      {"interior_points", b.interior_points},
+                      {"resplit_rounds", b.resplit_rounds},
+                      {"resplit_edges", b.resplit_edges},
+                      {"faces_left_out", b.faces_left_out},
+                      {"above_tolerance", b.above_tolerance},
+                      {"angle", b.angle},
+                      {"max_deviation", b.max_deviation},
+                      {"certified", b.certified},
+                      {"max_edge_tolerance", b.max_edge_tolerance},
+                      {"edges_above_tolerance", b.edges_above_tolerance},
+                      {"warnings", b.warnings}};
+    }
     const PhaseSeconds& ph = s.phases;
     js["phase_seconds"] = {{"subdivision", ph.subdivision},
                            {"boundaries", ph.boundaries},
@@ -129,6 +153,16 @@ nlohmann::json tessellation_stats_json(const TessellateArgs& args, const Tessell
 }
 
 void print_tessellation_summary(const TessellationStats& s) {
+    if (s.brep.faces > 0) {
+        const BRepStats& b = s.brep;
+        std::cout << b.faces << " B-rep faces, " << b.edges << " edges, " << s.triangles
+                  << " triangles, " << s.vertices << " vertices, deviation "
+                  << (b.certified ? "certified " : "sampled ") << b.max_deviation << " (tolerance "
+                  << s.tolerance << ")";
+        if (s.surfaces > b.faces) std::cout << ", " << s.subpatches << " free-surface subpatches";
+        std::cout << ", " << s.seconds << " s\n";
+        return;
+    }
     std::cout << s.surfaces << " surfaces, " << s.patches << " patches, " << s.subpatches
               << " subpatches, " << s.triangles << " triangles, " << s.vertices
               << " vertices, certified bound " << s.max_error_bound;
@@ -163,6 +197,7 @@ int run_tessellate(const TessellateArgs& args) {
         }
     }();
     bar.finish();
+    for (const std::string& w : t.stats.brep.warnings) std::cerr << "warning: " << w << "\n";
     write_mesh(files.staging(0), t.mesh);
     print_tessellation_summary(t.stats);
     if (!args.stats.empty())

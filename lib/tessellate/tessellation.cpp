@@ -5,6 +5,8 @@
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/tessellation_pass.h>
 #include <seamless/tessellate/trimmed/brep_tessellation.h>
+#include <seamless/tessellate/trimmed/face_trees.h>
+#include <seamless/tessellate/trimmed/free_surfaces.h>
 
 #include <algorithm>
 #include <chrono>
@@ -12,8 +14,40 @@
 
 namespace seamless {
 
+namespace {
+
+// Face f's triangles: the runs of one surface in the B-rep mesh (faces are
+// written in order; two faces on one surface in a row share a tree, which
+// only a traversal's work sees).
+std::vector<int> surface_runs(const TriangleMesh& mesh) {
+    std::vector<int> first{0};
+    const std::vector<int>& s = mesh.triangle_surface;
+    for (size_t t = 1; t < s.size(); ++t)
+        if (s[t] != s[t - 1]) first.push_back(static_cast<int>(t));
+    if (!s.empty()) first.push_back(static_cast<int>(s.size()));
+    return first;
+}
+
+// The trimmed faces through tessellate/trimmed/, the surfaces no face uses
+// through the Bezier pipeline, joined (free_surfaces.h); with patch trees,
+// one tree per face for the renderer (face_trees.h).
+Tessellation tessellate_brep_model(const Model& model, const TessellationOptions& options) {
+    Tessellation t = tessellate_brep(model, options);
+    if (options.patch_trees) t.trees = face_trees(t.mesh, surface_runs(t.mesh));
+    const std::vector<int> free = free_surfaces(model);
+    if (!free.empty()) {
+        const Model part = free_surface_model(model, free);
+        TessellationOptions po = options;
+        po.progress = nullptr;
+        append_tessellation(t, tessellate(part, bezier_patches(part), po), free);
+    }
+    return t;
+}
+
+} // namespace
+
 Tessellation tessellate(const Model& model, const TessellationOptions& options) {
-    if (!model.brep.empty()) return tessellate_brep(model, options); // trimmed faces
+    if (!model.brep.empty()) return tessellate_brep_model(model, options); // trimmed faces
     return tessellate(model, bezier_patches(model), options);
 }
 

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/mesh/deviation/sweep.h>
 
+#include <seamless/mesh/deviation/brep_deviation.h>
+#include <seamless/tessellate/trimmed/brep_tessellation.h>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -29,7 +32,12 @@ std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& o
         topt.max_triangles = std::max<std::int64_t>(topt.max_triangles, 2 * options.max_triangles);
         SweepRow row;
         row.factor = factor;
-        if (options.tolerance) {
+        if (!model.brep.empty()) {
+            // Trimmed faces have no planarity test: D = factor * their
+            // default deviation, 0.001 of the diagonal.
+            row.tolerance = factor * brep_deviation(model, TessellationOptions{});
+            topt.tolerance = row.tolerance;
+        } else if (options.tolerance) {
             row.tolerance = factor * paper_tolerances(dm).eps1;
             topt.tolerance = row.tolerance;
         } else {
@@ -39,7 +47,13 @@ std::vector<SweepRow> sweep_tolerances(const Model& model, const SweepOptions& o
         }
         const Tessellation t = tessellate(model, topt);
         row.tess = t.stats;
-        row.deviation = measure_deviation(model, t, options.deviation);
+        if (model.brep.empty()) {
+            row.deviation = measure_deviation(model, t, options.deviation);
+        } else {
+            BRepDeviationOptions bo;
+            bo.threads = options.deviation.threads;
+            row.deviation = measure_brep_deviation(model, t.mesh, bo);
+        }
         rows.push_back(row);
         if (options.on_row) options.on_row(rows.back());
     }

@@ -107,7 +107,10 @@ bool needs_secondary_rays(const Scene& scene) {
 }
 
 TriangleScene build_triangle_scene(const Scene& scene, int threads) {
-    return build_triangle_scene(scene, bezier_patches(scene.model), threads);
+    // A B-rep's faces are tessellated from their loops, not from patches.
+    return build_triangle_scene(
+        scene, scene.model.brep.empty() ? bezier_patches(scene.model) : std::vector<BezierPatch>{},
+        threads);
 }
 
 TriangleScene build_triangle_scene(const Scene& scene, const std::vector<BezierPatch>& patches,
@@ -120,7 +123,8 @@ TriangleScene build_triangle_scene(const Scene& scene, const std::vector<BezierP
     // Nothing here reads the certified bound of the triangles (error_bound.h).
     to.certify = false;
     to.threads = threads;
-    ts.tess = tessellate(scene.model, patches, to);
+    ts.tess = scene.model.brep.empty() ? tessellate(scene.model, patches, to)
+                                       : tessellate(scene.model, to); // trimmed faces
     const TriangleMesh& mesh = ts.tess.mesh;
     const int F = mesh.triangle_count();
     ts.triangle_material.resize(F);
