@@ -135,6 +135,8 @@ nlohmann::json tessellation_stats_json(const TessellateArgs& args, const Tessell
                       {"angle", b.angle},
                       {"max_deviation", b.max_deviation},
                       {"certified", b.certified},
+                      {"bound_triangles", b.bound_triangles},
+                      {"bound_chords", b.bound_chords},
                       {"max_edge_tolerance", b.max_edge_tolerance},
                       {"edges_above_tolerance", b.edges_above_tolerance},
                       {"warnings", b.warnings}};
@@ -156,8 +158,8 @@ void print_tessellation_summary(const TessellationStats& s) {
     if (s.brep.faces > 0) {
         const BRepStats& b = s.brep;
         std::cout << b.faces << " B-rep faces, " << b.edges << " edges, " << s.triangles
-                  << " triangles, " << s.vertices << " vertices, deviation "
-                  << (b.certified ? "certified " : "sampled ") << b.max_deviation << " (tolerance "
+                  << " triangles, " << s.vertices << " vertices, sampled deviation "
+                  << b.max_deviation << ", certified bound " << s.max_error_bound << " (tolerance "
                   << s.tolerance << ")";
         if (s.surfaces > b.faces) std::cout << ", " << s.subpatches << " free-surface subpatches";
         std::cout << ", " << s.seconds << " s\n";

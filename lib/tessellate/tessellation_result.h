@@ -44,6 +44,11 @@ struct BRepStats {
     double max_edge_tolerance = 0; // largest edge tolerance; above D it bounds what is reachable
     int edges_above_tolerance = 0; // edges whose tolerance exceeds D
     bool certified = false;        // max_deviation is a sampled measure, not a bound
+    // Certified bounds (TessellationOptions::certify; brep_certification.h):
+    // between each triangle and its face (both ways) and between each edge
+    // chord and its curve; TessellationStats::max_error_bound is the larger.
+    // The slivers between pcurves and their (u,v) chords are not covered.
+    double bound_triangles = 0, bound_chords = 0;
     std::vector<std::string> warnings; // one line each: faces left out, tolerances above D
 };
 

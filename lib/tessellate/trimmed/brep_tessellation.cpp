@@ -2,6 +2,7 @@
 #include <seamless/base/error.h>
 #include <seamless/base/parallel/parallel.h>
 #include <seamless/base/phase_clock.h>
+#include <seamless/tessellate/trimmed/brep_certification.h>
 #include <seamless/tessellate/trimmed/brep_mesh.h>
 #include <seamless/tessellate/trimmed/brep_tessellation.h>
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
@@ -187,13 +188,20 @@ Tessellation tessellate_brep(const Model& model, const TessellationOptions& opti
         st.max_deviation = std::max(st.max_deviation, fm.deviation);
         st.above_tolerance += fm.above_tolerance;
     }
+    if (options.certify) {
+        const BRepBound bound = certify_brep(model, lines, t.mesh, options.threads);
+        st.bound_triangles = bound.triangles;
+        st.bound_chords = bound.chords;
+    }
     TessellationStats& s = t.stats;
     s.surfaces = static_cast<int>(model.surfaces.size());
     s.triangles = t.mesh.triangle_count();
     s.vertices = t.mesh.vertex_count();
     s.d_max = brep_box(model).max_extent();
     s.tolerance = D;
-    s.max_error_bound = std::numeric_limits<double>::quiet_NaN(); // not certified
+    // Certified over the triangles and the edge chords (brep_certification.h).
+    s.max_error_bound = options.certify ? std::max(st.bound_triangles, st.bound_chords)
+                                        : std::numeric_limits<double>::quiet_NaN();
     s.above_tolerance = st.above_tolerance;
     s.passes = faces.rounds + 1;
     if (options.progress) options.progress(1.0);
