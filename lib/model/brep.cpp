@@ -161,21 +161,22 @@ struct Checker {
         }
     }
 
+    // A shell's faces or a solid's shells: at least one, each an index below n.
+    void references(const std::vector<int>& v, size_t n, const std::string& f, const char* list,
+                    const char* one) const {
+        if (v.empty()) fail(f, std::string("expected at least one ") + one);
+        for (size_t i = 0; i < v.size(); ++i)
+            index(
+                v[i], n, [&] { return at(f, i); }, list);
+    }
+
     void shells_and_solids() const {
-        for (size_t k = 0; k < b.shells.size(); ++k) {
-            const std::string f = at("brep.shells", k) + ".faces";
-            if (b.shells[k].faces.empty()) fail(f, "expected at least one face");
-            for (size_t i = 0; i < b.shells[k].faces.size(); ++i)
-                index(
-                    b.shells[k].faces[i], b.faces.size(), [&] { return at(f, i); }, "faces");
-        }
-        for (size_t k = 0; k < b.solids.size(); ++k) {
-            const std::string f = at("brep.solids", k) + ".shells";
-            if (b.solids[k].shells.empty()) fail(f, "expected at least one shell");
-            for (size_t i = 0; i < b.solids[k].shells.size(); ++i)
-                index(
-                    b.solids[k].shells[i], b.shells.size(), [&] { return at(f, i); }, "shells");
-        }
+        for (size_t k = 0; k < b.shells.size(); ++k)
+            references(b.shells[k].faces, b.faces.size(), at("brep.shells", k) + ".faces", "faces",
+                       "face");
+        for (size_t k = 0; k < b.solids.size(); ++k)
+            references(b.solids[k].shells, b.shells.size(), at("brep.solids", k) + ".shells",
+                       "shells", "shell");
     }
 };
 
