@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // validate_brep: the conventions of brep.h, checked on a B-rep that a reader
-// made (docs/formats.md, "JSON model, version 2 (B-rep)", lists the rules
+// made (docs/formats.md, "Model: JSON, version 2 (B-rep)", lists the rules
 // and their messages).
 #include <seamless/model/model.h>
 
@@ -76,16 +76,20 @@ struct Checker {
                      std::to_string(limits.max_brep_items));
     }
 
-    void index(long long i, size_t n, const std::string& field, const char* list) const {
-        if (i < 0 || i >= static_cast<long long>(n))
-            fail(field, n == 0 ? "index " + std::to_string(i) + " but there are no " + list
-                               : "index " + std::to_string(i) + " out of range 0.." +
-                                     std::to_string(n - 1) + " (" + list + ")");
+    // Fields are named only on failure: no string is built per item that passes.
+    [[noreturn]] void bad_index(long long i, size_t n, const std::string& field,
+                                const char* list) const {
+        fail(field, n == 0 ? "index " + std::to_string(i) + " but there are no " + list
+                           : "index " + std::to_string(i) + " out of range 0.." +
+                                 std::to_string(n - 1) + " (" + list + ")");
+    }
+    template <class Field> void index(long long i, size_t n, Field field, const char* list) const {
+        if (i < 0 || i >= static_cast<long long>(n)) bad_index(i, n, field(), list);
     }
 
-    void tolerance(double t, const std::string& field) const {
+    template <class Field> void tolerance(double t, Field field) const {
         if (!std::isfinite(t) || t < 0 || t > kMaxCoordinate)
-            fail(field, "tolerance " + fmt(t) + " is not a number in 0.." + fmt(kMaxCoordinate));
+            fail(field(), "tolerance " + fmt(t) + " is not a number in 0.." + fmt(kMaxCoordinate));
     }
 
     void sizes() const {
@@ -104,14 +108,14 @@ struct Checker {
 
     void vertices() const {
         for (size_t k = 0; k < b.vertices.size(); ++k) {
-            const std::string f = at("brep.vertices", k);
+            const auto f = [k](const char* member) { return at("brep.vertices", k) + member; };
             const Vec3 p = b.vertices[k].point;
             for (int i = 0; i < 3; ++i)
                 if (!std::isfinite(p[i]) || std::abs(p[i]) > kMaxCoordinate)
-                    fail(at(f + ".point", i),
+                    fail(at(f(".point"), i),
                          "coordinate " + fmt(p[i]) + " is not a finite number within " +
                              fmt(kMaxCoordinate) + " (docs/formats.md, Limits)");
-            tolerance(b.vertices[k].tolerance, f + ".tolerance");
+            tolerance(b.vertices[k].tolerance, [&] { return f(".tolerance"); });
         }
     }
 
@@ -131,53 +135,67 @@ struct Checker {
     void edges() const {
         for (size_t k = 0; k < b.edges.size(); ++k) {
             const BRepEdge& e = b.edges[k];
-            const std::string f = at("brep.edges", k);
-            if (e.curve != -1) index(e.curve, b.curves.size(), f + ".curve", "curves");
-            index(e.start, b.vertices.size(), f + ".vertices[0]", "vertices");
-            index(e.end, b.vertices.size(), f + ".vertices[1]", "vertices");
-            const std::string range = range_text(e.t0, e.t1);
+            const auto f = [k](const char* member) {
+                return [k, member] { return at("brep.edges", k) + member; };
+            };
+            if (e.curve != -1) index(e.curve, b.curves.size(), f(".curve"), "curves");
+            index(e.start, b.vertices.size(), f(".vertices[0]"), "vertices");
+            index(e.end, b.vertices.size(), f(".vertices[1]"), "vertices");
+            const auto range = [&] { return range_text(e.t0, e.t1); };
             if (!(std::abs(e.t0) <= kMaxCoordinate && std::abs(e.t1) <= kMaxCoordinate))
-                fail(f + ".range", range + " is not finite within " + fmt(kMaxCoordinate));
-            if (!(e.t0 < e.t1)) fail(f + ".range", range + ": t0 must be below t1");
+                fail(f(".range")(), range() + " is not finite within " + fmt(kMaxCoordinate));
+            if (!(e.t0 < e.t1)) fail(f(".range")(), range() + ": t0 must be below t1");
             if (e.degenerate() && e.start != e.end)
-                fail(f + ".vertices", "a degenerate edge (no curve) starts and ends at one "
-                                      "vertex, got " +
-                                          std::to_string(e.start) + " and " +
-                                          std::to_string(e.end));
+                fail(f(".vertices")(), "a degenerate edge (no curve) starts and ends at one "
+                                       "vertex, got " +
+                                           std::to_string(e.start) + " and " +
+                                           std::to_string(e.end));
             if (!e.degenerate()) {
                 const BSplineCurve& c = b.curves[e.curve];
                 if (!holds(c.t_min(), c.t_max(), e.t0, e.t1))
-                    fail(f + ".range", range + " is not inside the domain " +
-                                           range_text(c.t_min(), c.t_max()) + " of curve " +
-                                           std::to_string(e.curve));
+                    fail(f(".range")(), range() + " is not inside the domain " +
+                                            range_text(c.t_min(), c.t_max()) + " of curve " +
+                                            std::to_string(e.curve));
             }
-            tolerance(e.tolerance, f + ".tolerance");
+            tolerance(e.tolerance, f(".tolerance"));
         }
     }
 
+    // A shell's faces or a solid's shells: at least one, each an index below n.
+    void references(const std::vector<int>& v, size_t n, const std::string& f, const char* list,
+                    const char* one) const {
+        if (v.empty()) fail(f, std::string("expected at least one ") + one);
+        for (size_t i = 0; i < v.size(); ++i)
+            index(
+                v[i], n, [&] { return at(f, i); }, list);
+    }
+
     void shells_and_solids() const {
-        for (size_t k = 0; k < b.shells.size(); ++k) {
-            const std::string f = at("brep.shells", k) + ".faces";
-            if (b.shells[k].faces.empty()) fail(f, "expected at least one face");
-            for (size_t i = 0; i < b.shells[k].faces.size(); ++i)
-                index(b.shells[k].faces[i], b.faces.size(), at(f, i), "faces");
-        }
-        for (size_t k = 0; k < b.solids.size(); ++k) {
-            const std::string f = at("brep.solids", k) + ".shells";
-            if (b.solids[k].shells.empty()) fail(f, "expected at least one shell");
-            for (size_t i = 0; i < b.solids[k].shells.size(); ++i)
-                index(b.solids[k].shells[i], b.shells.size(), at(f, i), "shells");
-        }
+        for (size_t k = 0; k < b.shells.size(); ++k)
+            references(b.shells[k].faces, b.faces.size(), at("brep.shells", k) + ".faces", "faces",
+                       "face");
+        for (size_t k = 0; k < b.solids.size(); ++k)
+            references(b.solids[k].shells, b.shells.size(), at("brep.solids", k) + ".shells",
+                       "shells", "shell");
     }
 };
 
 // A coedge's pcurve and where it is used from, for the once-per-pcurve check
 // of its (u,v) points against the surface's domain (a pcurve shared by many
 // coedges is sampled once, over the union of their ranges).
+// Where a coedge is, named only when a message needs it.
+struct CoedgeAt {
+    size_t face = 0, loop = 0, coedge = 0;
+    std::string loop_field() const { return at(at("brep.faces", face) + ".loops", loop); }
+    std::string field(const char* member = "") const {
+        return at(loop_field() + ".coedges", coedge) + member;
+    }
+};
+
 struct PcurveUse {
     int surface = -1;
     double t0 = 0, t1 = 0;
-    std::string field; // the first coedge using it
+    CoedgeAt first; // the first coedge using it
 };
 
 // Where a coedge starts and ends, in the loop's direction: vertices and
@@ -249,37 +267,43 @@ struct LoopChecker {
           uses(c.b.edges.size(), 0), reversed_first(c.b.edges.size(), 0),
           pcurve_uses(c.b.pcurves.size()) {}
 
-    void coedge(const BRepCoedge& c, int face, int surface, const std::string& f) {
+    void coedge(const BRepCoedge& c, int surface, const CoedgeAt& where) {
         const BRep& b = ck.b;
-        ck.index(c.edge, b.edges.size(), f + ".edge", "edges");
-        ck.index(c.pcurve, b.pcurves.size(), f + ".pcurve", "pcurves");
+        const auto f = [&](const char* member) {
+            return [&where, member] { return where.field(member); };
+        };
+        ck.index(c.edge, b.edges.size(), f(".edge"), "edges");
+        ck.index(c.pcurve, b.pcurves.size(), f(".pcurve"), "pcurves");
         const BRepEdge& e = b.edges[c.edge];
         const BSplineCurve& p = b.pcurves[c.pcurve];
         if (!holds(p.t_min(), p.t_max(), e.t0, e.t1))
-            ck.fail(f + ".pcurve", "the domain " + range_text(p.t_min(), p.t_max()) +
-                                       " of pcurve " + std::to_string(c.pcurve) +
-                                       " does not hold the range " + range_text(e.t0, e.t1) +
-                                       " of edge " + std::to_string(c.edge));
+            ck.fail(where.field(".pcurve"),
+                    "the domain " + range_text(p.t_min(), p.t_max()) + " of pcurve " +
+                        std::to_string(c.pcurve) + " does not hold the range " +
+                        range_text(e.t0, e.t1) + " of edge " + std::to_string(c.edge));
         used[c.edge] = 1;
+        const int face = static_cast<int>(where.face);
         if (face_of[c.edge] != face) {
             face_of[c.edge] = face;
             uses[c.edge] = 1;
             reversed_first[c.edge] = c.reversed;
         } else if (++uses[c.edge] > 2) {
-            ck.fail(f + ".edge", "edge " + std::to_string(c.edge) +
-                                     " used a third time by this face (a seam is used twice)");
+            ck.fail(where.field(".edge"),
+                    "edge " + std::to_string(c.edge) +
+                        " used a third time by this face (a seam is used twice)");
         } else if (bool(reversed_first[c.edge]) == c.reversed) {
-            ck.fail(f + ".edge", "edge " + std::to_string(c.edge) +
-                                     " used twice by this face in the same direction (a seam's "
-                                     "two coedges run opposite ways)");
+            ck.fail(where.field(".edge"), "edge " + std::to_string(c.edge) +
+                                              " used twice by this face in the same direction "
+                                              "(a seam's two coedges run opposite ways)");
         }
         PcurveUse& u = pcurve_uses[c.pcurve];
         if (u.surface < 0) {
-            u = {surface, e.t0, e.t1, f};
+            u = {surface, e.t0, e.t1, where};
         } else if (u.surface != surface) {
-            ck.fail(f + ".pcurve", "pcurve " + std::to_string(c.pcurve) + " lies on surface " +
-                                       std::to_string(u.surface) + " (" + u.field +
-                                       "), not on this face's surface " + std::to_string(surface));
+            ck.fail(where.field(".pcurve"),
+                    "pcurve " + std::to_string(c.pcurve) + " lies on surface " +
+                        std::to_string(u.surface) + " (" + u.first.field() +
+                        "), not on this face's surface " + std::to_string(surface));
         } else {
             u.t0 = std::min(u.t0, e.t0);
             u.t1 = std::max(u.t1, e.t1);
@@ -287,43 +311,46 @@ struct LoopChecker {
     }
 
     // Consecutive coedges share a vertex and their pcurves meet.
-    void chain(const BRepLoop& loop, const BSplineSurface& s, const std::string& fl) const {
+    void chain(const BRepLoop& loop, const BSplineSurface& s, CoedgeAt where) const {
         const BRep& b = ck.b;
         const size_t n = loop.coedges.size();
         for (size_t c = 0; c < n; ++c) {
             const BRepCoedge& x = loop.coedges[c];
             const BRepCoedge& y = loop.coedges[(c + 1) % n];
             const CoedgeEnds ex = ends(b, x), ey = ends(b, y);
-            const std::string fy = at(fl + ".coedges", (c + 1) % n);
-            const std::string prev = "coedges[" + std::to_string(c) + "]";
+            where.coedge = (c + 1) % n;
+            const auto prev = [c] { return "coedges[" + std::to_string(c) + "]"; };
             if (ex.v1 != ey.v0)
-                ck.fail(fy, "starts at vertex " + std::to_string(ey.v0) + " but " + prev +
-                                " ends at vertex " + std::to_string(ex.v1) +
-                                ": the loop is not a closed chain");
+                ck.fail(where.field(), "starts at vertex " + std::to_string(ey.v0) + " but " +
+                                           prev() + " ends at vertex " + std::to_string(ex.v1) +
+                                           ": the loop is not a closed chain");
             const BRepVertex& v = b.vertices[ey.v0];
             const double tol =
                 v.tolerance + std::max(b.edges[x.edge].tolerance, b.edges[y.edge].tolerance);
             if (!gap_closes(s, ex.uv1, ey.uv0, v.point, tol))
-                ck.fail(fy + ".pcurve", "starts at " + uv_text(ey.uv0) + ", " +
-                                            fmt(distance(ey.uv0, ex.uv1)) + " from the end " +
-                                            uv_text(ex.uv1) + " of " + prev +
-                                            "'s pcurve: the loop is open in (u,v)");
+                ck.fail(where.field(".pcurve"),
+                        "starts at " + uv_text(ey.uv0) + ", " + fmt(distance(ey.uv0, ex.uv1)) +
+                            " from the end " + uv_text(ex.uv1) + " of " + prev() +
+                            "'s pcurve: the loop is open in (u,v)");
         }
     }
 
     void face(size_t k) {
         const BRepFace& face = ck.b.faces[k];
-        const std::string f = at("brep.faces", k);
-        ck.index(face.surface, ck.m.surfaces.size(), f + ".surface", "surfaces");
-        if (face.loops.empty())
-            ck.fail(f + ".loops", "expected at least one loop (the outer loop)");
+        const auto f = [k](const char* member) { return at("brep.faces", k) + member; };
+        ck.index(
+            face.surface, ck.m.surfaces.size(), [&] { return f(".surface"); }, "surfaces");
+        if (face.loops.empty()) ck.fail(f(".loops"), "expected at least one loop (the outer loop)");
         for (size_t l = 0; l < face.loops.size(); ++l) {
-            const std::string fl = at(f + ".loops", l);
             const BRepLoop& loop = face.loops[l];
-            if (loop.coedges.empty()) ck.fail(fl + ".coedges", "expected at least one coedge");
-            for (size_t c = 0; c < loop.coedges.size(); ++c)
-                coedge(loop.coedges[c], static_cast<int>(k), face.surface, at(fl + ".coedges", c));
-            chain(loop, ck.m.surfaces[face.surface], fl);
+            CoedgeAt where{k, l, 0};
+            if (loop.coedges.empty())
+                ck.fail(where.loop_field() + ".coedges", "expected at least one coedge");
+            for (size_t c = 0; c < loop.coedges.size(); ++c) {
+                where.coedge = c;
+                coedge(loop.coedges[c], face.surface, where);
+            }
+            chain(loop, ck.m.surfaces[face.surface], where);
         }
     }
 
@@ -338,11 +365,11 @@ struct LoopChecker {
             const BSplineSurface& s = ck.m.surfaces[u.surface];
             Vec3 p;
             if (leaves_domain(b.pcurves[k], u.t0, u.t1, s, p))
-                ck.fail(u.field + ".pcurve", "pcurve " + std::to_string(k) +
-                                                 " leaves the (u,v) domain " +
-                                                 range_text(s.u_min(), s.u_max()) + " x " +
-                                                 range_text(s.v_min(), s.v_max()) + " of surface " +
-                                                 std::to_string(u.surface) + " at " + uv_text(p));
+                ck.fail(u.first.field(".pcurve"),
+                        "pcurve " + std::to_string(k) + " leaves the (u,v) domain " +
+                            range_text(s.u_min(), s.u_max()) + " x " +
+                            range_text(s.v_min(), s.v_max()) + " of surface " +
+                            std::to_string(u.surface) + " at " + uv_text(p));
         }
     }
 };

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/model/brep_json.h>
 
+#include <algorithm>
+#include <climits>
+
 namespace seamless {
 namespace {
 
@@ -32,7 +35,8 @@ class BRepReader {
                            std::to_string(limit));
     }
     int index(const Json& j, const std::string& f) const {
-        return static_cast<int>(r_.integer(j, f, 0, limits_.max_brep_items - 1));
+        const long long last = std::min<long long>(limits_.max_brep_items, INT_MAX) - 1;
+        return static_cast<int>(r_.integer(j, f, 0, last)); // BRep's indices are ints
     }
     std::vector<int> indices(const Json& obj, const std::string& parent, const char* key,
                              const char* what) const {

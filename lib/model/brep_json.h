@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The "brep" object of the version-2 JSON model format (docs/formats.md,
-// "JSON model, version 2 (B-rep)"): read with the model reader's field reader
+// "Model: JSON, version 2 (B-rep)"): read with the model reader's field reader
 // (json_fields.h), written by to_json. Internal to model_json.cpp, like
 // json_fields.h, whose nlohmann types it exposes.
 #pragma once

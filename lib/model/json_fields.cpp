@@ -4,8 +4,8 @@
 #include <seamless/base/error.h>
 #include <seamless/base/files/input_file.h>
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 namespace seamless {
@@ -97,9 +97,9 @@ void write_json_number(std::ostream& os, double x) {
         os << "-0.0";
         return;
     }
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    os << buf;
+    char buf[32]; // printf's "%.17g", faster
+    const auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, 17);
+    os.write(buf, r.ptr - buf);
 }
 
 void write_json_string(std::ostream& os, const std::string& s) {

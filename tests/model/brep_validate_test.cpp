@@ -244,6 +244,19 @@ TEST_CASE("validate_brep allows its documented slack and no more", "[model][brep
     m.brep.vertices[2].tolerance = 1e-3;
     CHECK(refusal(m).field.empty());
 
+    // A cone's loop without its degenerate edge: the (u,v) gap runs along
+    // the pole, where the whole segment is the apex.
+    m = test::revolved(0);
+    auto& ce = m.brep.faces[0].loops[0].coedges;
+    ce.erase(ce.begin() + 2);
+    m.brep.faces.push_back(test::revolved(0).brep.faces[0]); // uses the degenerate edge
+    CHECK(refusal(m).field.empty());
+    // The same gap on the cylinder is the top circle: refused.
+    m = test::revolved(1);
+    m.brep.faces.push_back(m.brep.faces[0]);
+    m.brep.faces[0].loops[0].coedges.erase(m.brep.faces[0].loops[0].coedges.begin() + 2);
+    CHECK(refusal(m).field == "brep.faces[0].loops[0].coedges[2].pcurve");
+
     // A pcurve past the surface's domain by 1e-7 of it.
     m = test::plate_with_hole();
     m.brep.pcurves[0].points[1].y = m.brep.pcurves[1].points[0].y = -1e-7;
