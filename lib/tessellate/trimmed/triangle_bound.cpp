@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/check.h>
+#include <seamless/interval/interval.h>
 #include <seamless/spline/knot_insertion.h>
-#include <seamless/tessellate/bounds/net_bounds.h>
+#include <seamless/tessellate/bounds/error_bound.h>
 #include <seamless/tessellate/trimmed/triangle_bound.h>
 
 #include <algorithm>
@@ -51,6 +52,78 @@ double derivative_jump(const BezierPatch& L, const BezierPatch& R, Direction d) 
     }
     // A few roundings per difference, each within eps of the terms' size.
     return (jump + spread * dw + 16 * kEps * size) / wmin * (1 + 1e-12);
+}
+
+// Bounds of |S_ss|, |S_st|, |S_tt| over b's local [0,1]^2: the Bernstein
+// coefficients of X and W and of their partial derivatives (differences of
+// the net, in interval arithmetic) enclose them over the square, and the
+// quotient rule runs on those enclosures
+//   S = X / W, S_s = (X_s - S W_s) / W, S_t alike,
+//   S_ss = (X_ss - 2 S_s W_s - S W_ss) / W,
+//   S_st = (X_st - S_s W_t - S_t W_s - S W_st) / W, S_tt alike.
+// Over a small box the enclosures are narrow, so X_st and S_t W_s, which
+// cancel where only the weights vary (a cylinder's rulings), nearly cancel
+// here too; a bound from the coefficients' magnitudes alone would not.
+std::array<double, 3> second_derivative_ranges(const BezierPatch& b) {
+    const int p = b.p, q = b.q;
+    enum { kX, kXs, kXt, kXss, kXst, kXtt, kTerms };
+    Interval r[kTerms][4];
+    bool seen[kTerms] = {};
+    auto add = [&](int term, const Interval(&v)[4]) {
+        for (int c = 0; c < 4; ++c) r[term][c] = seen[term] ? hull(r[term][c], v[c]) : v[c];
+        seen[term] = true;
+    };
+    auto X = [&](int i, int j, int c) { return Interval(b.at(i, j)[c]); };
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
+            Interval v[4];
+            for (int c = 0; c < 4; ++c) v[c] = X(i, j, c);
+            add(kX, v);
+            if (i < p) {
+                for (int c = 0; c < 4; ++c) v[c] = double(p) * (X(i + 1, j, c) - X(i, j, c));
+                add(kXs, v);
+            }
+            if (j < q) {
+                for (int c = 0; c < 4; ++c) v[c] = double(q) * (X(i, j + 1, c) - X(i, j, c));
+                add(kXt, v);
+            }
+            if (i + 1 < p) {
+                for (int c = 0; c < 4; ++c)
+                    v[c] =
+                        double(p * (p - 1)) * (X(i + 2, j, c) - 2.0 * X(i + 1, j, c) + X(i, j, c));
+                add(kXss, v);
+            }
+            if (i < p && j < q) {
+                for (int c = 0; c < 4; ++c)
+                    v[c] = double(p * q) *
+                           (X(i + 1, j + 1, c) - X(i + 1, j, c) - X(i, j + 1, c) + X(i, j, c));
+                add(kXst, v);
+            }
+            if (j + 1 < q) {
+                for (int c = 0; c < 4; ++c)
+                    v[c] =
+                        double(q * (q - 1)) * (X(i, j + 2, c) - 2.0 * X(i, j + 1, c) + X(i, j, c));
+                add(kXtt, v);
+            }
+        }
+    for (int t = 0; t < kTerms; ++t)
+        if (!seen[t])
+            for (int c = 0; c < 4; ++c) r[t][c] = Interval(0); // degree too low: zero
+    const Interval W = r[kX][3], Ws = r[kXs][3], Wt = r[kXt][3];
+    const Interval Wss = r[kXss][3], Wst = r[kXst][3], Wtt = r[kXtt][3];
+    if (!(W.lo() > 0)) return {kInf, kInf, kInf};
+    double ss = 0, st = 0, tt = 0;
+    for (int c = 0; c < 3; ++c) {
+        const Interval S = r[kX][c] / W;
+        const Interval Ss = (r[kXs][c] - S * Ws) / W, St = (r[kXt][c] - S * Wt) / W;
+        const Interval Sss = (r[kXss][c] - 2.0 * Ss * Ws - S * Wss) / W;
+        const Interval Sst = (r[kXst][c] - Ss * Wt - St * Ws - S * Wst) / W;
+        const Interval Stt = (r[kXtt][c] - 2.0 * St * Wt - S * Wtt) / W;
+        ss += sqr(Sss).hi(), st += sqr(Sst).hi(), tt += sqr(Stt).hi();
+    }
+    // The sums of three squares rounded up by a few ulps, then their roots.
+    const double up = 1 + 8 * kEps;
+    return {std::sqrt(ss * up) * up, std::sqrt(st * up) * up, std::sqrt(tt * up) * up};
 }
 
 // The largest of sum lambda_k |x_k - x|^2 over the triangle (header).
@@ -132,11 +205,11 @@ std::array<double, 3> TriangleBound::second_derivatives(double u0, double u1, do
         };
         widen(s0, s1);
         widen(t0, t1);
-        const DerivativeBounds db = derivative_bounds(box_net(p, s0, s1, t0, t1, p.corner(0)));
+        const auto [A, B, C] = second_derivative_ranges(extract_box(p, s0, s1, t0, t1));
         const double wu = (s1 - s0) * (p.u1 - p.u0), wv = (t1 - t0) * (p.v1 - p.v0);
-        d[0] = std::max(d[0], db.A / (wu * wu));
-        d[1] = std::max(d[1], db.B / (wu * wv));
-        d[2] = std::max(d[2], db.C / (wv * wv));
+        d[0] = std::max(d[0], A / (wu * wu));
+        d[1] = std::max(d[1], B / (wu * wv));
+        d[2] = std::max(d[2], C / (wv * wv));
     }
     for (double& x : d) x *= 1 + 1e-12;
     return d;
@@ -160,6 +233,10 @@ double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<V
     // de Boor's evaluation: a few roundings per level, each within eps of
     // the control points' magnitude (times the weights' spread).
     corner += 16.0 * (surface_.degree_u + surface_.degree_v + 2) * kEps * magnitude_ * wratio;
+    // The extracted subpatches (de Casteljau in doubles) are polynomials
+    // within a few ulps of the surface: their interpolation error differs
+    // from the surface's by at most twice that.
+    corner += 2 * rounding_allowance(16, magnitude_) * wratio;
     const auto [A, B, C] = second_derivatives(u0, u1, v0, v1);
     const double Ju = jumps_inside(u_, u0, u1), Jv = jumps_inside(v_, v0, v1);
     if (!std::isfinite(A + B + C + Ju + Jv)) return kInf;
