@@ -155,7 +155,9 @@ TEST_CASE("the fuselage's bare surfaces keep the file's feet: nose at z=-3, tail
 }
 
 TEST_CASE("trimmed faces: refused by name, skipped, or taken whole", "[model][cad]") {
-    const std::string err = load_error(cad("tire.iges"));
+    ModelLoadOptions refusing;
+    refusing.trimmed = TrimmedFaces::refuse;
+    const std::string err = load_error(cad("tire.iges"), refusing);
     CHECK_THAT(err, Catch::Contains("tire.iges: 2 trimmed faces ("));
     CHECK(err.find('\n') == std::string::npos);
 
@@ -301,7 +303,10 @@ TEST_CASE("planes, a sphere, a torus and a revolved B-spline curve convert exact
 }
 
 TEST_CASE("a cylinder's side is whole, its disc caps are trimmed", "[model][cad]") {
-    CHECK_THAT(load_error(generated("cylinder.step")), Catch::Contains("2 trimmed faces"));
+    ModelLoadOptions refusing;
+    refusing.trimmed = TrimmedFaces::refuse;
+    CHECK_THAT(load_error(generated("cylinder.step"), refusing),
+               Catch::Contains("2 trimmed faces"));
     const Model side = load_model(generated("cylinder.step"), skipping_trimmed());
     REQUIRE(side.surfaces.size() == 1);
     CHECK(side.origins[0].kind == "cylinder");

@@ -15,8 +15,11 @@
 #include <StepData_StepModel.hxx>
 #include <StepGeom_GeomRepContextAndGlobUnitAssCtxAndGlobUncertaintyAssCtx.hxx>
 #include <StepGeom_GeometricRepresentationItem.hxx>
+#include <StepGeom_SeamCurve.hxx>
 #include <StepRepr_GlobalUnitAssignedContext.hxx>
 #include <StepShape_TopologicalRepresentationItem.hxx>
+#include <StepVisual_AnnotationOccurrence.hxx>
+#include <StepVisual_DraughtingCallout.hxx>
 #include <TCollection_HAsciiString.hxx>
 #include <TopExp.hxx>
 #include <XSControl_WorkSession.hxx>
@@ -34,21 +37,38 @@ namespace {
 // tests/fuzz/occt-crashes/). A file with such an entity among its geometry or
 // topology (every IGES entity; STEP's geometric and topological
 // representation items) is refused before the transfer. Elsewhere (a STEP
-// presentation style, as splinecage.stp's curve_font) it is left to OpenCASCADE.
+// presentation style, as splinecage.stp's curve_font) it is left to
+// OpenCASCADE, and so are two failures the shape transfer never meets:
+// AP242 annotations (draughting callouts, whose parts OpenCASCADE 7.6 does
+// not know: NIST CTC 03), which only a PMI reader visits, and a seam curve
+// whose two pcurves are the same entity (a complaint about a complete
+// entity, not a missing reference: the turbine of OpenCASCADE's tests).
+bool harmless_failure(const Handle(Standard_Transient) & entity, const Interface_Check& check) {
+    if (entity->IsKind(STANDARD_TYPE(StepVisual_DraughtingCallout)) ||
+        entity->IsKind(STANDARD_TYPE(StepVisual_AnnotationOccurrence)))
+        return true;
+    if (!entity->IsKind(STANDARD_TYPE(StepGeom_SeamCurve))) return false;
+    for (int k = 1; k <= check.NbFails(); ++k)
+        if (std::string(check.CFail(k)) != "Seam Curve with twice the same geom") return false;
+    return true;
+}
+
 void refuse_error_entities(const Handle(Interface_InterfaceModel) & model, const std::string& file,
                            bool iges) {
     for (Standard_Integer i = 1; i <= model->NbEntities(); ++i) {
         if (!model->IsErrorEntity(i)) continue;
         const Handle(Standard_Transient) entity = model->Value(i);
+        const Handle(Interface_ReportEntity) report = model->ReportEntity(i);
+        const bool has_check = !report.IsNull() && !report->Check().IsNull();
         if (!iges && !entity.IsNull() &&
-            !entity->IsKind(STANDARD_TYPE(StepGeom_GeometricRepresentationItem)) &&
-            !entity->IsKind(STANDARD_TYPE(StepShape_TopologicalRepresentationItem)))
+            ((!entity->IsKind(STANDARD_TYPE(StepGeom_GeometricRepresentationItem)) &&
+              !entity->IsKind(STANDARD_TYPE(StepShape_TopologicalRepresentationItem))) ||
+             (has_check && harmless_failure(entity, *report->Check()))))
             continue;
         std::string what = "entity " + std::to_string(i);
         const Handle(TCollection_HAsciiString) label = model->StringLabel(entity);
         if (!label.IsNull()) what = "entity " + std::string(label->ToCString());
-        const Handle(Interface_ReportEntity) report = model->ReportEntity(i);
-        if (!report.IsNull() && !report->Check().IsNull() && report->Check()->NbFails() > 0)
+        if (has_check && report->Check()->NbFails() > 0)
             what += " (" + std::string(report->Check()->CFail(1)) + ")";
         throw InputError(file, "",
                          std::string("not a readable ") + (iges ? "IGES" : "STEP") +
@@ -126,6 +146,7 @@ TransferredFile transfer_file(const std::filesystem::path& path) {
     const TopoDS_Shape shape = reader->OneShape();
     if (shape.IsNull())
         throw InputError(file, "", "no surfaces (OpenCASCADE transferred no shape from it)");
+    t.shape = shape;
     TopExp::MapShapes(shape, TopAbs_FACE, t.faces);
     if (t.faces.IsEmpty()) throw InputError(file, "", "no surfaces (no faces or bare surfaces)");
     t.transfer = reader->WS()->TransferReader();

@@ -20,6 +20,7 @@ namespace seamless::step_iges {
 struct TransferredFile {
     std::unique_ptr<XSControl_Reader> reader;
     bool iges = false;
+    TopoDS_Shape shape;               // everything transferred
     TopTools_IndexedMapOfShape faces; // every face (or bare surface), at least one
     Handle(XSControl_TransferReader) transfer;
     Handle(Interface_InterfaceModel) model;

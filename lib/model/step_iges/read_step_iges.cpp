@@ -8,8 +8,10 @@
 #include <seamless/model/step_iges.h>
 
 #include <seamless/base/error.h>
+#include <seamless/model/step_iges/brep_reader.h>
 #include <seamless/model/step_iges/face_range.h>
 #include <seamless/model/step_iges/file_transfer.h>
+#include <seamless/model/step_iges/messages.h>
 #include <seamless/model/step_iges/surface_conversion.h>
 
 #include <BRep_Tool.hxx>
@@ -21,20 +23,12 @@
 #include <algorithm>
 #include <map>
 #include <mutex>
-#include <sstream>
 
 namespace seamless {
 
 namespace {
 
 using namespace step_iges;
-
-std::string fmt(double x, int digits = 3) {
-    std::ostringstream os;
-    os.precision(digits);
-    os << x;
-    return os.str();
-}
 
 // OpenCASCADE's data exchange keeps its settings and its messenger in globals:
 // one reader at a time.
@@ -50,14 +44,6 @@ void silence_occt() {
     std::call_once(once, [] { Message::DefaultMessenger()->ChangePrinters().Clear(); });
 }
 
-std::string list_names(const std::vector<std::string>& names) {
-    std::string s;
-    const size_t shown = std::min<size_t>(names.size(), 20);
-    for (size_t k = 0; k < shown; ++k) s += (k ? ", " : "") + names[k];
-    if (names.size() > shown) s += ", ... " + std::to_string(names.size() - shown) + " more";
-    return s;
-}
-
 // The faces of a transferred file as surfaces, with what was left out or
 // approximated.
 class FaceReader {
@@ -67,13 +53,9 @@ class FaceReader {
         m_.source = file;
     }
 
-    // Face k (1-based) of t: a surface of the model, or trimmed.
-    void read(const TransferredFile& t, int k) {
+    // Face k (1-based) of t, named `name`: a surface of the model, or trimmed.
+    void read(const TransferredFile& t, int k, const std::string& name) {
         const TopoDS_Face face = TopoDS::Face(t.faces(k));
-        std::string name = entity_label(t.transfer, t.model, face, t.iges);
-        if (name.empty()) name = "face-" + std::to_string(k - 1);
-        if (int uses = name_uses_[name]++; uses > 0)
-            name.append(".").append(std::to_string(uses + 1));
         const Handle(Geom_Surface) surf = BRep_Tool::Surface(face); // located
         if (surf.IsNull()) throw InputError(file_, name, "face without a surface");
         const FaceRange r = face_range(face, surf);
@@ -115,7 +97,7 @@ class FaceReader {
                                      (trimmed_.size() == 1 ? "" : "s") + " (" +
                                      list_names(trimmed_) + ")";
             switch (options_.trimmed) {
-            case TrimmedFaces::brep: // not read yet: refused as before
+            case TrimmedFaces::brep: // read_brep's, not here
             case TrimmedFaces::refuse:
                 throw InputError(file_, "",
                                  what + ": trimmed faces are not supported (--skip-trimmed "
@@ -145,14 +127,39 @@ class FaceReader {
     const ModelLoadOptions& options_;
     Model m_;
     std::vector<std::string> trimmed_, approximated_;
-    std::map<std::string, int> name_uses_;
 };
+
+// The faces' names: the file's entities ("#55", "DE9"), made unique.
+std::vector<std::string> face_names(const TransferredFile& t) {
+    std::vector<std::string> names;
+    std::map<std::string, int> uses;
+    for (int k = 1; k <= t.faces.Extent(); ++k) {
+        std::string name = entity_label(t.transfer, t.model, t.faces(k), t.iges);
+        if (name.empty()) name = "face-" + std::to_string(k - 1);
+        if (int n = uses[name]++; n > 0) name.append(".").append(std::to_string(n + 1));
+        names.push_back(std::move(name));
+    }
+    return names;
+}
+
+bool has_trimmed_face(const TransferredFile& t) {
+    for (int k = 1; k <= t.faces.Extent(); ++k) {
+        const TopoDS_Face face = TopoDS::Face(t.faces(k));
+        const Handle(Geom_Surface) surf = BRep_Tool::Surface(face);
+        if (!surf.IsNull() && !face_range(face, surf).natural) return true;
+    }
+    return false;
+}
 
 Model read_locked(const std::filesystem::path& path, const ModelLoadOptions& options) {
     const TransferredFile t = transfer_file(path);
     const std::string file = path.string();
+    const std::vector<std::string> names = face_names(t);
+    // Files without trimmed faces stay lists of whole surfaces.
+    if (options.trimmed == TrimmedFaces::brep && has_trimmed_face(t))
+        return read_brep(t, names, file, options);
     FaceReader faces(file, options);
-    for (int k = 1; k <= t.faces.Extent(); ++k) faces.read(t, k);
+    for (int k = 1; k <= t.faces.Extent(); ++k) faces.read(t, k, names[k - 1]);
     return faces.finish();
 }
 

@@ -21,8 +21,10 @@
 #include <Geom_SurfaceOfRevolution.hxx>
 #include <Geom_ToroidalSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
+#include <Standard_Failure.hxx>
 
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace seamless::step_iges {
@@ -83,7 +85,10 @@ Converted convert(const Handle(Geom_Surface) & s, double u1, double u2, double v
         auto bs = Handle(Geom_BSplineSurface)::DownCast(exact);
         double U1, U2, V1, V2;
         exact->Bounds(U1, U2, V1, V2);
-        if (!bs.IsNull() && U1 == u1 && U2 == u2 && V1 == v1 && V2 == v2)
+        // A B-spline over (nearly) its own domain is taken as it is.
+        const double du = 1e-12 * (U2 - U1), dv = 1e-12 * (V2 - V1);
+        if (!bs.IsNull() && std::abs(U1 - u1) <= du && std::abs(U2 - u2) <= du &&
+            std::abs(V1 - v1) <= dv && std::abs(V2 - v2) <= dv)
             c.surface = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
         else
             c.surface = GeomConvert::SurfaceToBSplineSurface(
@@ -96,8 +101,18 @@ Converted convert(const Handle(Geom_Surface) & s, double u1, double u2, double v
     Bnd_Box box;
     BndLib_AddSurface::Add(GeomAdaptor_Surface(part), 0.0, box);
     const double tol = rel_tol * std::sqrt(box.SquareExtent());
-    for (GeomAbs_Shape cont : {GeomAbs_C1, GeomAbs_C0}) {
-        GeomConvert_ApproxSurface approx(part, tol, cont, cont, kMaxDegree, kMaxDegree, 1000, 0);
+    // OpenCASCADE allocates for the most segments it may use: where 1000
+    // fails (NCollection_Array2::Allocate on a degree-13 patch of
+    // ksu_c_el_D_D63_L54), fewer are tried.
+    for (auto [cont, segments] : {std::pair{GeomAbs_C1, 1000}, std::pair{GeomAbs_C0, 1000},
+                                  std::pair{GeomAbs_C1, 100}, std::pair{GeomAbs_C0, 100}}) {
+        std::optional<GeomConvert_ApproxSurface> attempt;
+        try {
+            attempt.emplace(part, tol, cont, cont, kMaxDegree, kMaxDegree, segments, 0);
+        } catch (const Standard_Failure&) {
+            continue;
+        }
+        const GeomConvert_ApproxSurface& approx = *attempt;
         if (!approx.HasResult()) continue;
         c.surface = approx.Surface();
         c.exact = false;
