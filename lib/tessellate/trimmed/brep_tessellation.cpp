@@ -57,10 +57,11 @@ std::vector<std::vector<EdgeUse>> edge_uses(const Model& model) {
     std::vector<std::vector<EdgeUse>> uses(brep.edges.size());
     for (const BRepFace& f : brep.faces) {
         const Vec3 inward = face_uv_centre(brep, f);
+        const FaceSurface surface(model.surfaces[f.surface]);
         for (const BRepLoop& loop : f.loops)
             for (const BRepCoedge& c : loop.coedges)
-                uses[c.edge].push_back({&model.surfaces[f.surface], &brep.pcurves[c.pcurve],
-                                        brep.edges[c.edge].tolerance, inward});
+                uses[c.edge].push_back(
+                    {surface, &brep.pcurves[c.pcurve], brep.edges[c.edge].tolerance, inward});
     }
     return uses;
 }

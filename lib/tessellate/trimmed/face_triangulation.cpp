@@ -38,8 +38,8 @@ constexpr double kMargin = 0.9;
 // while above `enough`. At a pole or apex the (u,v) image of a flat triangle
 // overstates its distance from the surface, as the parametrisation
 // collapses there; elsewhere it is the measure (enough = infinity).
-double distance_to_surface(const BSplineSurface& s, Vec3 q, Vec3 uv, double enough) {
-    SurfacePoint p = evaluate(s, uv.x, uv.y);
+double distance_to_surface(const FaceSurface& s, Vec3 q, Vec3 uv, double enough) {
+    SurfacePoint p = s.at(uv);
     double best = distance(p.point, q);
     for (int it = 0; it < 4 && best > enough; ++it) {
         const Vec3 r = q - p.point;
@@ -48,7 +48,7 @@ double distance_to_surface(const BSplineSurface& s, Vec3 q, Vec3 uv, double enou
         const double det = (a + damp) * (c + damp) - b * b;
         if (!(det > 0)) break;
         uv = uv + Vec3{((c + damp) * ru - b * rv) / det, ((a + damp) * rv - b * ru) / det, 0};
-        p = evaluate(s, uv.x, uv.y);
+        p = s.at(uv);
         best = std::min(best, distance(p.point, q));
     }
     return best;
@@ -76,7 +76,7 @@ struct Verdict {
 };
 
 struct Refiner {
-    const BSplineSurface& s;
+    const FaceSurface& s;
     const FaceCriteria& c;
     FaceDomain& d;
     Vec3 inward;
@@ -173,7 +173,7 @@ struct Refiner {
 FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& lines, int face,
                           const FaceCriteria& criteria) {
     const BRepFace& f = model.brep.faces[face];
-    const BSplineSurface& s = model.surfaces[f.surface];
+    const FaceSurface s(model.surfaces[f.surface]);
     FaceMesh out;
     out.domain = face_domain(model, lines, face);
     FaceDomain& d = out.domain;

@@ -181,6 +181,36 @@ BRepCase cylinder_solid(double scale) {
             }};
 }
 
+BRepCase cylinder_across_seam() {
+    BRepBuilder b;
+    // Half the cylinder, from angle 270 to 450 degrees: u in [3, 5] beyond
+    // the surface's [0, 4]; the arcs start at -y, a quarter span like u = 3.
+    const int a0 = b.vertex({0, -1, 0}), a1 = b.vertex({0, 1, 0}), b0 = b.vertex({0, -1, 1}),
+              b1 = b.vertex({0, 1, 1});
+    auto arc = [&](double z, int from, int to) {
+        const int id = b.edge(nurbs_circle({0, 0, z}, 1, -1 * kY, kX), from, to);
+        b.m.brep.edges[id].t1 = 2;
+        return id;
+    };
+    const int bottom = arc(0, a0, a1), top = arc(1, b0, b1);
+    const int right = b.edge(nurbs_line({0, 1, 0}, {0, 1, 1}), a1, b1);
+    const int left = b.edge(nurbs_line({0, -1, 0}, {0, -1, 1}), a0, b0);
+    const int s = b.surface(cylinder_surface({}, 1, 1), "cylinder");
+    auto shifted = [](Vec3 a, Vec3 c) {
+        BSplineCurve k = nurbs_line(a, c);
+        k.knots = {0, 0, 2, 2};
+        return k;
+    };
+    b.new_loop();
+    b.use(bottom, false, shifted({3, 0, 0}, {5, 0, 0}));
+    b.use(right, false, nurbs_line({5, 0, 0}, {5, 1, 0}));
+    b.use(top, true, shifted({3, 1, 0}, {5, 1, 0}));
+    b.use(left, true, nurbs_line({3, 0, 0}, {3, 1, 0}));
+    b.face(s, false, "#across");
+    return {"cylinder patch across the seam", b.finish(false, "across"), false, 1,
+            [](int, Vec3 p) { return std::abs(std::hypot(p.x, p.y) - 1); }};
+}
+
 BRepCase cone_solid() {
     BRepBuilder b;
     const double h = 1.5;
@@ -263,6 +293,7 @@ std::vector<BRepCase> all_brep_cases() {
     c.push_back(cylinder_solid());
     c.push_back(cylinder_solid(1e6));
     c.push_back(cylinder_solid(1e-6));
+    c.push_back(cylinder_across_seam());
     c.push_back(cone_solid());
     c.push_back(sphere_solid());
     c.push_back(torus_solid());

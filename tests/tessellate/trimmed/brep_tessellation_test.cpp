@@ -51,8 +51,12 @@ Deviation measure(const BRepCase& c, const TriangleMesh& m) {
                 uv += l[k] * Vec3{m.corner_uvs[t][k][0], m.corner_uvs[t][k][1], 0};
             }
             d.analytic = std::max(d.analytic, c.distance(m.triangle_surface[t], p));
-            if (!pole)
-                d.through_uv = std::max(d.through_uv, distance(evaluate(s, uv.x, uv.y).point, p));
+            if (!pole) {
+                // Loops across a seam have (u,v) beyond the domain, by a period.
+                const double period = s.u_max() - s.u_min();
+                const double u = uv.x <= s.u_max() ? uv.x : uv.x - period;
+                d.through_uv = std::max(d.through_uv, distance(evaluate(s, u, uv.y).point, p));
+            }
         }
     }
     return d;
