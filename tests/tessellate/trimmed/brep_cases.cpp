@@ -2,6 +2,8 @@
 #include <tessellate/trimmed/brep_builder.h>
 #include <tessellate/trimmed/brep_cases.h>
 
+#include <seamless/tessellate/trimmed/brep_tessellation.h>
+
 #include <array>
 #include <cmath>
 
@@ -171,7 +173,7 @@ BRepCase cylinder_solid(double scale) {
     disk(b, 0, 1, bottom, true, "#bottom");
     disk(b, h, 1, top, false, "#top");
     Model m = b.finish(true, "cylinder");
-    if (scale != 1) scale_model(m, scale);
+    if (scale != 1) scale_lengths(m, scale);
     return {"cylinder x" + std::to_string(scale), m, true, 2, [scale, h](int s, Vec3 p) {
                 p = p / scale;
                 const double d = s == 0   ? std::abs(std::hypot(p.x, p.y) - 1)
@@ -293,6 +295,8 @@ std::vector<BRepCase> all_brep_cases() {
     c.push_back(cylinder_solid());
     c.push_back(cylinder_solid(1e6));
     c.push_back(cylinder_solid(1e-6));
+    c.push_back(cylinder_solid(1e150));
+    c.push_back(cylinder_solid(1e-150));
     c.push_back(cylinder_across_seam());
     c.push_back(cone_solid());
     c.push_back(sphere_solid());
