@@ -261,6 +261,54 @@ BRepCase torus_solid() {
             }};
 }
 
+BRepCase freeform_face() {
+    // Control points at (i/3, j/3): u = x and v = y (linear precision), so
+    // the vertical distance to S(x, y) bounds the distance to the surface.
+    const double h[4][4] = {
+        {0, 0.2, -0.1, 0}, {0.1, 0.5, 0.4, -0.2}, {-0.2, 0.3, 0.6, 0.1}, {0, -0.1, 0.2, 0}};
+    BSplineSurface bump;
+    bump.knots_u = bump.knots_v = {0, 0, 0, 0, 1, 1, 1, 1};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) bump.points.push_back({i / 3.0, j / 3.0, h[i][j]});
+    BRepBuilder b;
+    const int s = b.surface(bump, "bump");
+    const double lo = 0.2, hi = 0.8;
+    // The iso-curve of the net at u = u0 (along v; dir 1: at v = u0, along u).
+    auto iso = [&](double u0, int dir) {
+        const double bern[4] = {(1 - u0) * (1 - u0) * (1 - u0), 3 * u0 * (1 - u0) * (1 - u0),
+                                3 * u0 * u0 * (1 - u0), u0 * u0 * u0};
+        BSplineCurve c;
+        c.degree = 3;
+        c.knots = bump.knots_u;
+        for (int j = 0; j < 4; ++j) {
+            Vec3 q{};
+            for (int i = 0; i < 4; ++i) q += bern[i] * (dir ? bump.point(j, i) : bump.point(i, j));
+            c.points.push_back(q);
+        }
+        return c;
+    };
+    const int c00 = b.vertex(evaluate(bump, lo, lo).point),
+              c10 = b.vertex(evaluate(bump, hi, lo).point),
+              c11 = b.vertex(evaluate(bump, hi, hi).point),
+              c01 = b.vertex(evaluate(bump, lo, hi).point);
+    auto edge = [&](const BSplineCurve& c, int from, int to) {
+        const int id = b.edge(c, from, to);
+        b.m.brep.edges[id].t0 = lo;
+        b.m.brep.edges[id].t1 = hi;
+        return id;
+    };
+    const int bottom = edge(iso(lo, 1), c00, c10), right = edge(iso(hi, 0), c10, c11),
+              top = edge(iso(hi, 1), c01, c11), left = edge(iso(lo, 0), c00, c01);
+    b.new_loop();
+    b.use(bottom, false, nurbs_line({0, lo, 0}, {1, lo, 0}));
+    b.use(right, false, nurbs_line({hi, 0, 0}, {hi, 1, 0}));
+    b.use(top, true, nurbs_line({0, hi, 0}, {1, hi, 0}));
+    b.use(left, true, nurbs_line({lo, 0, 0}, {lo, 1, 0}));
+    b.face(s, false, "#bump");
+    return {"freeform face", b.finish(false, "bump"), false, 1,
+            [bump](int, Vec3 p) { return std::abs(p.z - evaluate(bump, p.x, p.y).point.z); }};
+}
+
 BRepCase sliver_face(double height) {
     BRepBuilder b;
     const int s = b.surface(kXY.surface(-0.1, 1.1, -0.1, 0.1), "plane");
@@ -301,6 +349,7 @@ std::vector<BRepCase> all_brep_cases() {
     c.push_back(cone_solid());
     c.push_back(sphere_solid());
     c.push_back(torus_solid());
+    c.push_back(freeform_face());
     c.push_back(sliver_face(1e-3));
     return c;
 }

@@ -32,6 +32,7 @@ BRepCase cylinder_across_seam(); // a cylindrical patch whose pcurves cross u = 
 BRepCase cone_solid();
 BRepCase sphere_solid();
 BRepCase torus_solid();
+BRepCase freeform_face(); // a bicubic graph z = f(x, y) trimmed to [0.2, 0.8]^2 by iso-curves
 BRepCase sliver_face(double height); // a lens between a line and a flat arc of this height
 BRepCase crossing_loops();           // a hole crossing the outer loop: cannot be triangulated
 
