@@ -48,7 +48,7 @@ struct Splitter {
         double d = 0;
         if (!e.degenerate()) {
             const BSplineCurve& curve = brep.curves[e.curve];
-            constexpr int kSamples = 8;
+            constexpr int kSamples = 16;
             for (int k = 1; k < kSamples; ++k)
                 d = std::max(d, point_segment_distance(
                                     evaluate(curve, a + (b - a) * k / kSamples).point, pa, pb));

@@ -262,8 +262,7 @@ BRepCase torus_solid() {
 }
 
 BRepCase freeform_face() {
-    // Control points at (i/3, j/3): u = x and v = y (linear precision), so
-    // the vertical distance to S(x, y) bounds the distance to the surface.
+    // Control points at (i/3, j/3): u = x and v = y (linear precision).
     const double h[4][4] = {
         {0, 0.2, -0.1, 0}, {0.1, 0.5, 0.4, -0.2}, {-0.2, 0.3, 0.6, 0.1}, {0, -0.1, 0.2, 0}};
     BSplineSurface bump;
@@ -305,8 +304,12 @@ BRepCase freeform_face() {
     b.use(top, true, nurbs_line({0, hi, 0}, {1, hi, 0}));
     b.use(left, true, nurbs_line({lo, 0, 0}, {lo, 1, 0}));
     b.face(s, false, "#bump");
-    return {"freeform face", b.finish(false, "bump"), false, 1,
-            [bump](int, Vec3 p) { return std::abs(p.z - evaluate(bump, p.x, p.y).point.z); }};
+    // The distance to the tangent plane at (x, y, f(x, y)): to first order the
+    // distance to the surface.
+    return {"freeform face", b.finish(false, "bump"), false, 1, [bump](int, Vec3 p) {
+                const SurfacePoint s = evaluate(bump, p.x, p.y);
+                return std::abs(dot(p - s.point, normalize(s.normal())));
+            }};
 }
 
 BRepCase sliver_face(double height) {
