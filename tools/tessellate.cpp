@@ -151,6 +151,22 @@ nlohmann::json tessellation_stats_json(const TessellateArgs& args, const Tessell
                            {"fans", ph.fans},
                            {"orientation", ph.orientation},
                            {"scaling", ph.scaling}};
+    const BRepStats& b = s.brep;
+    if (b.faces > 0 || b.faces_left_out > 0) // a B-rep model (tessellate/trimmed/)
+        js["brep"] = {{"faces", b.faces},
+                      {"edges", b.edges},
+                      {"edge_points", b.edge_points},
+                      {"interior_points", b.interior_points},
+                      {"resplit_rounds", b.resplit_rounds},
+                      {"resplit_edges", b.resplit_edges},
+                      {"faces_left_out", b.faces_left_out},
+                      {"above_tolerance", b.above_tolerance},
+                      {"angle", b.angle},
+                      {"max_deviation", b.max_deviation},
+                      {"certified", b.certified},
+                      {"max_edge_tolerance", b.max_edge_tolerance},
+                      {"edges_above_tolerance", b.edges_above_tolerance},
+                      {"warnings", b.warnings}};
     return js;
 }
 

@@ -26,6 +26,8 @@ constexpr int kResplitRounds = 6;
 constexpr double kDefaultAngle = 0.5;
 // The default deviation as a fraction of the diagonal.
 constexpr double kDefaultDeviation = 1e-3;
+// Extents within 2^+-this are tessellated as they are, others rescaled.
+constexpr int kScaleFreeExponent = 40;
 
 Box3 brep_box(const Model& model) {
     Box3 box;
@@ -58,10 +60,11 @@ std::vector<std::vector<EdgeUse>> edge_uses(const Model& model) {
     std::vector<std::vector<EdgeUse>> uses(brep.edges.size());
     for (const BRepFace& f : brep.faces) {
         const Vec3 inward = face_uv_centre(brep, f);
+        const FaceSurface surface(model.surfaces[f.surface]);
         for (const BRepLoop& loop : f.loops)
             for (const BRepCoedge& c : loop.coedges)
-                uses[c.edge].push_back({&model.surfaces[f.surface], &brep.pcurves[c.pcurve],
-                                        brep.edges[c.edge].tolerance, inward});
+                uses[c.edge].push_back(
+                    {surface, &brep.pcurves[c.pcurve], brep.edges[c.edge].tolerance, inward});
     }
     return uses;
 }
@@ -136,13 +139,24 @@ void refuse_or_leave_out(const Model& model, const Faces& faces, const Tessellat
 
 } // namespace
 
+void scale_lengths(Model& m, double s) {
+    for (BSplineSurface& x : m.surfaces)
+        for (Vec3& p : x.points) p = s * p;
+    for (BSplineCurve& c : m.brep.curves)
+        for (Vec3& p : c.points) p = s * p;
+    for (BRepVertex& v : m.brep.vertices) v.point = s * v.point, v.tolerance *= s;
+    for (BRepEdge& e : m.brep.edges) e.tolerance *= s;
+}
+
 double brep_deviation(const Model& model, const TessellationOptions& options) {
     if (options.tolerance > 0) return options.tolerance;
     if (options.eps1 > 0) return options.eps1;
     return kDefaultDeviation * norm(brep_box(model).extent());
 }
 
-Tessellation tessellate_brep(const Model& model, const TessellationOptions& options) {
+namespace {
+
+Tessellation tessellate_at_scale(const Model& model, const TessellationOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const BRep& brep = model.brep;
     const double D = brep_deviation(model, options);
@@ -177,11 +191,6 @@ Tessellation tessellate_brep(const Model& model, const TessellationOptions& opti
         st.max_edge_tolerance = std::max(st.max_edge_tolerance, brep.edges[e].tolerance);
         if (brep.edges[e].tolerance > D) ++st.edges_above_tolerance;
     }
-    if (st.edges_above_tolerance > 0)
-        st.warnings.push_back(std::to_string(st.edges_above_tolerance) +
-                              " edges have a tolerance above the deviation " + std::to_string(D) +
-                              " (largest " + std::to_string(st.max_edge_tolerance) +
-                              "): the deviation reached is at least that");
     for (const FaceMesh& fm : faces.meshes) {
         if (fm.failed) continue;
         st.interior_points += fm.domain.size() - fm.domain.boundary_points;
@@ -206,6 +215,41 @@ Tessellation tessellate_brep(const Model& model, const TessellationOptions& opti
     s.passes = faces.rounds + 1;
     if (options.progress) options.progress(1.0);
     s.seconds = seconds_since(start);
+    return t;
+}
+
+} // namespace
+
+Tessellation tessellate_brep(const Model& model, const TessellationOptions& options) {
+    // Cross products and squared distances of coordinates far from 1
+    // overflow or underflow: the work is done at the power-of-two scale that
+    // brings the extent near 1 (exact both ways), as on the Bezier path.
+    const double extent = brep_box(model).max_extent();
+    const int e = extent > 0 && std::isfinite(extent) ? std::ilogb(extent) : 0;
+    Tessellation t;
+    if (std::abs(e) <= kScaleFreeExponent) {
+        t = tessellate_at_scale(model, options);
+    } else {
+        const double down = std::ldexp(1.0, -e), up = std::ldexp(1.0, e);
+        Model m = model;
+        scale_lengths(m, down);
+        TessellationOptions o = options;
+        o.tolerance *= down;
+        if (o.eps1 > 0) o.eps1 *= down;
+        t = tessellate_at_scale(m, o);
+        for (Vec3& p : t.mesh.positions) p = up * p;
+        t.stats.d_max *= up;
+        t.stats.tolerance *= up;
+        t.stats.brep.max_deviation *= up;
+        t.stats.brep.max_edge_tolerance *= up;
+    }
+    const BRepStats& st = t.stats.brep;
+    if (st.edges_above_tolerance > 0)
+        t.stats.brep.warnings.push_back(std::to_string(st.edges_above_tolerance) +
+                                        " edges have a tolerance above the deviation " +
+                                        std::to_string(t.stats.tolerance) + " (largest " +
+                                        std::to_string(st.max_edge_tolerance) +
+                                        "): the deviation reached is at least that");
     return t;
 }
 

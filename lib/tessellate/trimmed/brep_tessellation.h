@@ -21,6 +21,10 @@ namespace seamless {
 // edge curves' control points (what OpenCASCADE's users expect).
 double brep_deviation(const Model& model, const TessellationOptions& options);
 
+// Multiplies every length of the model by s: control points of surfaces and
+// curves, vertices, tolerances (not the pcurves' (u,v)).
+void scale_lengths(Model& m, double s);
+
 // Throws InputError naming a face that cannot be triangulated (unless
 // options.allow_holes) and TriangleBudgetError past options.max_triangles.
 Tessellation tessellate_brep(const Model& model, const TessellationOptions& options);

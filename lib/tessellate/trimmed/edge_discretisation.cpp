@@ -7,10 +7,10 @@
 
 namespace seamless {
 
-Vec3 unit_normal(const BSplineSurface& s, Vec3 uv, Vec3 inward) {
+Vec3 unit_normal(const FaceSurface& s, Vec3 uv, Vec3 inward) {
     for (double step : {0.0, 1e-6, 1e-4, 1e-2}) {
         const Vec3 q = uv + step * (inward - uv);
-        const SurfacePoint sp = evaluate(s, q.x, q.y);
+        const SurfacePoint sp = s.at(q);
         const Vec3 n = sp.normal();
         // Below this the normal's direction is rounding.
         if (norm(n) > 1e-12 * (dot(sp.du, sp.du) + dot(sp.dv, sp.dv))) return normalize(n);
@@ -48,7 +48,7 @@ struct Splitter {
         double d = 0;
         if (!e.degenerate()) {
             const BSplineCurve& curve = brep.curves[e.curve];
-            constexpr int kSamples = 8;
+            constexpr int kSamples = 16;
             for (int k = 1; k < kSamples; ++k)
                 d = std::max(d, point_segment_distance(
                                     evaluate(curve, a + (b - a) * k / kSamples).point, pa, pb));
@@ -67,14 +67,13 @@ struct Splitter {
             for (double s : {0.25, 0.5, 0.75}) {
                 const Vec3 q = lerp(ua, ub, s);
                 // The tolerance is how far the surface is allowed to be.
-                d = std::max(
-                    d, point_segment_distance(evaluate(*use.surface, q.x, q.y).point, pa, pb) -
-                           use.tolerance);
+                d = std::max(d, point_segment_distance(use.surface.at(q).point, pa, pb) -
+                                    use.tolerance);
             }
             // The midpoint too: a closed edge's ends have one normal.
-            const Vec3 na = unit_normal(*use.surface, ua, use.inward),
-                       nb = unit_normal(*use.surface, ub, use.inward),
-                       nm = unit_normal(*use.surface, evaluate(*use.pcurve, 0.5 * (a + b)).point,
+            const Vec3 na = unit_normal(use.surface, ua, use.inward),
+                       nb = unit_normal(use.surface, ub, use.inward),
+                       nm = unit_normal(use.surface, evaluate(*use.pcurve, 0.5 * (a + b)).point,
                                         use.inward);
             if (std::max({angle_between(na, nm), angle_between(nm, nb), angle_between(na, nb)}) >
                 c.angle)

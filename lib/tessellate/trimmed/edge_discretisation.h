@@ -11,7 +11,7 @@
 #pragma once
 
 #include <seamless/model/brep.h>
-#include <seamless/spline/bspline_surface.h>
+#include <seamless/tessellate/trimmed/face_surface.h>
 
 #include <vector>
 
@@ -19,7 +19,7 @@ namespace seamless {
 
 // One face's view of an edge.
 struct EdgeUse {
-    const BSplineSurface* surface = nullptr;
+    FaceSurface surface;
     const BSplineCurve* pcurve = nullptr;
     double tolerance = 0; // the edge's: how far S(pcurve) may be from the curve
     // A (u,v) point inside the face: the normal at a pole or apex is taken
@@ -49,7 +49,7 @@ void halve_segments(const BRep& brep, int edge, EdgePolyline& line);
 
 // The unit normal dP/du x dP/dv at uv; where it vanishes (a pole, an apex),
 // the normal a small step towards `inward`; zero if that vanishes too.
-Vec3 unit_normal(const BSplineSurface& s, Vec3 uv, Vec3 inward);
+Vec3 unit_normal(const FaceSurface& s, Vec3 uv, Vec3 inward);
 
 // Angle in radians between two vectors (0 when one is zero).
 double angle_between(Vec3 a, Vec3 b);

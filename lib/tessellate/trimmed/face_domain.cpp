@@ -24,13 +24,13 @@ namespace {
 
 // Mean |dP/du| and |dP/dv| over a grid on the (u,v) box: the scale that
 // makes a unit step in either direction about as long on the surface.
-void metric_scale(const BSplineSurface& s, const Box3& box, double& su, double& sv) {
+void metric_scale(const FaceSurface& s, const Box3& box, double& su, double& sv) {
     constexpr int kGrid = 5;
     double lu = 0, lv = 0;
     for (int i = 0; i < kGrid; ++i)
         for (int j = 0; j < kGrid; ++j) {
-            const SurfacePoint p = evaluate(s, box.lo.x + (box.hi.x - box.lo.x) * (i + 0.5) / kGrid,
-                                            box.lo.y + (box.hi.y - box.lo.y) * (j + 0.5) / kGrid);
+            const SurfacePoint p = s.at({box.lo.x + (box.hi.x - box.lo.x) * (i + 0.5) / kGrid,
+                                         box.lo.y + (box.hi.y - box.lo.y) * (j + 0.5) / kGrid, 0});
             lu += norm(p.du);
             lv += norm(p.dv);
         }
@@ -43,11 +43,11 @@ void metric_scale(const BSplineSurface& s, const Box3& box, double& su, double& 
 
 } // namespace
 
-int FaceDomain::add_interior(const BSplineSurface& s, Vec3 at) {
+int FaceDomain::add_interior(const FaceSurface& s, Vec3 at) {
     const Vec3 p{at.x / su, at.y / sv, 0};
     uv.push_back(p);
     scaled.push_back(at);
-    points.push_back(evaluate(s, p.x, p.y).point);
+    points.push_back(s.at(p).point);
     keys.push_back(-1);
     pole.push_back({});
     return size() - 1;
@@ -91,7 +91,7 @@ FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& line
             if (d.keys[i] == key && d.pole[i] == Vec3{}) d.pole[i] = dir;
     Box3 box;
     for (const Vec3& p : d.uv) box.extend(p);
-    const BSplineSurface& s = model.surfaces[f.surface];
+    const FaceSurface s(model.surfaces[f.surface]);
     metric_scale(s, box, d.su, d.sv);
     for (const Vec3& p : d.uv) d.scaled.push_back({p.x * d.su, p.y * d.sv, 0});
     return d;

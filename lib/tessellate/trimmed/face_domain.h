@@ -10,6 +10,7 @@
 
 #include <seamless/model/model.h>
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
+#include <seamless/tessellate/trimmed/face_surface.h>
 
 #include <array>
 #include <cstdint>
@@ -42,7 +43,7 @@ struct FaceDomain {
 
     int size() const { return static_cast<int>(uv.size()); }
     // Appends an interior point at rescaled (x, y); returns its index.
-    int add_interior(const BSplineSurface& s, Vec3 at_scaled);
+    int add_interior(const FaceSurface& s, Vec3 at_scaled);
 };
 
 FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& lines, int face);

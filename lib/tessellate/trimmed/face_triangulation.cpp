@@ -3,6 +3,7 @@
 #include <seamless/tessellate/tessellation_result.h>
 #include <seamless/tessellate/trimmed/constrained_triangulation.h>
 #include <seamless/tessellate/trimmed/face_triangulation.h>
+#include <seamless/tessellate/trimmed/triangle_distance.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,11 +36,11 @@ constexpr double kMargin = 0.9;
 
 // An upper bound of the distance from q to the surface: the nearest of the
 // surface points at uv and of a few damped Gauss-Newton steps from it, taken
-// while above `enough`. At a pole or apex the (u,v) image of a flat triangle
-// overstates its distance from the surface, as the parametrisation
-// collapses there; elsewhere it is the measure (enough = infinity).
-double distance_to_surface(const BSplineSurface& s, Vec3 q, Vec3 uv, double enough) {
-    SurfacePoint p = evaluate(s, uv.x, uv.y);
+// while above `enough`. At a pole or apex the (u,v) image of a triangle
+// strays far from it, as the parametrisation collapses there: its flat
+// points are measured against the surface instead.
+double distance_to_surface(const FaceSurface& s, Vec3 q, Vec3 uv, double enough) {
+    SurfacePoint p = s.at(uv);
     double best = distance(p.point, q);
     for (int it = 0; it < 4 && best > enough; ++it) {
         const Vec3 r = q - p.point;
@@ -48,7 +49,7 @@ double distance_to_surface(const BSplineSurface& s, Vec3 q, Vec3 uv, double enou
         const double det = (a + damp) * (c + damp) - b * b;
         if (!(det > 0)) break;
         uv = uv + Vec3{((c + damp) * ru - b * rv) / det, ((a + damp) * rv - b * ru) / det, 0};
-        p = evaluate(s, uv.x, uv.y);
+        p = s.at(uv);
         best = std::min(best, distance(p.point, q));
     }
     return best;
@@ -76,7 +77,7 @@ struct Verdict {
 };
 
 struct Refiner {
-    const BSplineSurface& s;
+    const FaceSurface& s;
     const FaceCriteria& c;
     FaceDomain& d;
     Vec3 inward;
@@ -116,7 +117,11 @@ struct Refiner {
             uv[i] = uv[i] + dot(m - uv[i], dir) * dir;
         }
         const Vec3 centre = (uv[0] + uv[1] + uv[2]) / 3.0;
-        const double target = kMargin * c.deviation + d.tolerance;
+        // A triangle on the boundary keeps its segment's deviation, which the
+        // edge's own samples held below kMargin * D but the face's may find a
+        // little above: up to D it is the edge's, not the triangle's.
+        const bool boundary = t.boundary[0] || t.boundary[1] || t.boundary[2];
+        const double target = (boundary ? 1.0 : kMargin) * c.deviation + d.tolerance;
         for (int i = 0; i < 3; ++i)
             v.normals[i] =
                 d.pole[k[i]] != Vec3{} ? unit_normal(s, uv[i], centre) : point_normal(k[i]);
@@ -124,9 +129,14 @@ struct Refiner {
             // Boundary segments were measured with their edge.
             if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
             const Vec3 q = smp.l[0] * uv[0] + smp.l[1] * uv[1] + smp.l[2] * uv[2];
-            const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
-            v.deviation =
-                std::max(v.deviation, distance_to_surface(s, flat, q, pole ? target : INFINITY));
+            // The surface's point against the flat triangle, as edges measure
+            // against their chords.
+            double dev = point_triangle_distance(s.at(q).point, p[0], p[1], p[2]);
+            if (pole && dev > target) {
+                const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
+                dev = std::min(dev, distance_to_surface(s, flat, q, target));
+            }
+            v.deviation = std::max(v.deviation, dev);
         }
         // The corner normals within the angle of each other, and the flat
         // triangle's within it of theirs: no fold or needle on the surface.
@@ -173,7 +183,7 @@ struct Refiner {
 FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& lines, int face,
                           const FaceCriteria& criteria) {
     const BRepFace& f = model.brep.faces[face];
-    const BSplineSurface& s = model.surfaces[f.surface];
+    const FaceSurface s(model.surfaces[f.surface]);
     FaceMesh out;
     out.domain = face_domain(model, lines, face);
     FaceDomain& d = out.domain;

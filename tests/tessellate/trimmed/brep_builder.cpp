@@ -165,13 +165,4 @@ Model BRepBuilder::finish(bool closed, const std::string& name) {
     return m;
 }
 
-void scale_model(Model& m, double s) {
-    for (BSplineSurface& x : m.surfaces)
-        for (Vec3& p : x.points) p = s * p;
-    for (BSplineCurve& c : m.brep.curves)
-        for (Vec3& p : c.points) p = s * p;
-    for (BRepVertex& v : m.brep.vertices) v.point = s * v.point, v.tolerance *= s;
-    for (BRepEdge& e : m.brep.edges) e.tolerance *= s;
-}
-
 } // namespace seamless::test

@@ -55,7 +55,4 @@ struct BRepBuilder {
     Model finish(bool closed, const std::string& name);
 };
 
-// Multiplies every coordinate (control points, vertices) by s.
-void scale_model(Model& m, double s);
-
 } // namespace seamless::test

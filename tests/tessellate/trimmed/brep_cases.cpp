@@ -2,6 +2,8 @@
 #include <tessellate/trimmed/brep_builder.h>
 #include <tessellate/trimmed/brep_cases.h>
 
+#include <seamless/tessellate/trimmed/brep_tessellation.h>
+
 #include <array>
 #include <cmath>
 
@@ -171,7 +173,7 @@ BRepCase cylinder_solid(double scale) {
     disk(b, 0, 1, bottom, true, "#bottom");
     disk(b, h, 1, top, false, "#top");
     Model m = b.finish(true, "cylinder");
-    if (scale != 1) scale_model(m, scale);
+    if (scale != 1) scale_lengths(m, scale);
     return {"cylinder x" + std::to_string(scale), m, true, 2, [scale, h](int s, Vec3 p) {
                 p = p / scale;
                 const double d = s == 0   ? std::abs(std::hypot(p.x, p.y) - 1)
@@ -179,6 +181,36 @@ BRepCase cylinder_solid(double scale) {
                                           : std::abs(p.z - h);
                 return d * scale;
             }};
+}
+
+BRepCase cylinder_across_seam() {
+    BRepBuilder b;
+    // Half the cylinder, from angle 270 to 450 degrees: u in [3, 5] beyond
+    // the surface's [0, 4]; the arcs start at -y, a quarter span like u = 3.
+    const int a0 = b.vertex({0, -1, 0}), a1 = b.vertex({0, 1, 0}), b0 = b.vertex({0, -1, 1}),
+              b1 = b.vertex({0, 1, 1});
+    auto arc = [&](double z, int from, int to) {
+        const int id = b.edge(nurbs_circle({0, 0, z}, 1, -1 * kY, kX), from, to);
+        b.m.brep.edges[id].t1 = 2;
+        return id;
+    };
+    const int bottom = arc(0, a0, a1), top = arc(1, b0, b1);
+    const int right = b.edge(nurbs_line({0, 1, 0}, {0, 1, 1}), a1, b1);
+    const int left = b.edge(nurbs_line({0, -1, 0}, {0, -1, 1}), a0, b0);
+    const int s = b.surface(cylinder_surface({}, 1, 1), "cylinder");
+    auto shifted = [](Vec3 a, Vec3 c) {
+        BSplineCurve k = nurbs_line(a, c);
+        k.knots = {0, 0, 2, 2};
+        return k;
+    };
+    b.new_loop();
+    b.use(bottom, false, shifted({3, 0, 0}, {5, 0, 0}));
+    b.use(right, false, nurbs_line({5, 0, 0}, {5, 1, 0}));
+    b.use(top, true, shifted({3, 1, 0}, {5, 1, 0}));
+    b.use(left, true, nurbs_line({3, 0, 0}, {3, 1, 0}));
+    b.face(s, false, "#across");
+    return {"cylinder patch across the seam", b.finish(false, "across"), false, 1,
+            [](int, Vec3 p) { return std::abs(std::hypot(p.x, p.y) - 1); }};
 }
 
 BRepCase cone_solid() {
@@ -229,6 +261,57 @@ BRepCase torus_solid() {
             }};
 }
 
+BRepCase freeform_face() {
+    // Control points at (i/3, j/3): u = x and v = y (linear precision).
+    const double h[4][4] = {
+        {0, 0.2, -0.1, 0}, {0.1, 0.5, 0.4, -0.2}, {-0.2, 0.3, 0.6, 0.1}, {0, -0.1, 0.2, 0}};
+    BSplineSurface bump;
+    bump.knots_u = bump.knots_v = {0, 0, 0, 0, 1, 1, 1, 1};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) bump.points.push_back({i / 3.0, j / 3.0, h[i][j]});
+    BRepBuilder b;
+    const int s = b.surface(bump, "bump");
+    const double lo = 0.2, hi = 0.8;
+    // The iso-curve of the net at u = u0 (along v; dir 1: at v = u0, along u).
+    auto iso = [&](double u0, int dir) {
+        const double bern[4] = {(1 - u0) * (1 - u0) * (1 - u0), 3 * u0 * (1 - u0) * (1 - u0),
+                                3 * u0 * u0 * (1 - u0), u0 * u0 * u0};
+        BSplineCurve c;
+        c.degree = 3;
+        c.knots = bump.knots_u;
+        for (int j = 0; j < 4; ++j) {
+            Vec3 q{};
+            for (int i = 0; i < 4; ++i) q += bern[i] * (dir ? bump.point(j, i) : bump.point(i, j));
+            c.points.push_back(q);
+        }
+        return c;
+    };
+    const int c00 = b.vertex(evaluate(bump, lo, lo).point),
+              c10 = b.vertex(evaluate(bump, hi, lo).point),
+              c11 = b.vertex(evaluate(bump, hi, hi).point),
+              c01 = b.vertex(evaluate(bump, lo, hi).point);
+    auto edge = [&](const BSplineCurve& c, int from, int to) {
+        const int id = b.edge(c, from, to);
+        b.m.brep.edges[id].t0 = lo;
+        b.m.brep.edges[id].t1 = hi;
+        return id;
+    };
+    const int bottom = edge(iso(lo, 1), c00, c10), right = edge(iso(hi, 0), c10, c11),
+              top = edge(iso(hi, 1), c01, c11), left = edge(iso(lo, 0), c00, c01);
+    b.new_loop();
+    b.use(bottom, false, nurbs_line({0, lo, 0}, {1, lo, 0}));
+    b.use(right, false, nurbs_line({hi, 0, 0}, {hi, 1, 0}));
+    b.use(top, true, nurbs_line({0, hi, 0}, {1, hi, 0}));
+    b.use(left, true, nurbs_line({lo, 0, 0}, {lo, 1, 0}));
+    b.face(s, false, "#bump");
+    // The distance to the tangent plane at (x, y, f(x, y)): to first order the
+    // distance to the surface.
+    return {"freeform face", b.finish(false, "bump"), false, 1, [bump](int, Vec3 p) {
+                const SurfacePoint s = evaluate(bump, p.x, p.y);
+                return std::abs(dot(p - s.point, normalize(s.normal())));
+            }};
+}
+
 BRepCase sliver_face(double height) {
     BRepBuilder b;
     const int s = b.surface(kXY.surface(-0.1, 1.1, -0.1, 0.1), "plane");
@@ -263,9 +346,13 @@ std::vector<BRepCase> all_brep_cases() {
     c.push_back(cylinder_solid());
     c.push_back(cylinder_solid(1e6));
     c.push_back(cylinder_solid(1e-6));
+    c.push_back(cylinder_solid(1e150));
+    c.push_back(cylinder_solid(1e-150));
+    c.push_back(cylinder_across_seam());
     c.push_back(cone_solid());
     c.push_back(sphere_solid());
     c.push_back(torus_solid());
+    c.push_back(freeform_face());
     c.push_back(sliver_face(1e-3));
     return c;
 }

@@ -28,9 +28,11 @@ BRepCase plate_with_holes(int holes);      // 0 .. 4 free circular holes
 BRepCase plate_with_touching_holes();      // two holes touching the outer loop, one free
 BRepCase box_solid(double short_edge = 0); // > 0: one edge split off this short
 BRepCase cylinder_solid(double scale = 1);
+BRepCase cylinder_across_seam(); // a cylindrical patch whose pcurves cross u = 4 (the seam)
 BRepCase cone_solid();
 BRepCase sphere_solid();
 BRepCase torus_solid();
+BRepCase freeform_face(); // a bicubic graph z = f(x, y) trimmed to [0.2, 0.8]^2 by iso-curves
 BRepCase sliver_face(double height); // a lens between a line and a flat arc of this height
 BRepCase crossing_loops();           // a hole crossing the outer loop: cannot be triangulated
 

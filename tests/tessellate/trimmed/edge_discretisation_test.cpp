@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// An edge's polyline: its chords within the deviation of the 3D curve and
+// its tangent turning within the angle per segment, ends at its vertices;
+// halving inserts every midpoint and keeps the rest.
+#include <tessellate/trimmed/brep_builder.h>
+
+#include <seamless/base/segment_distance.h>
+#include <seamless/tessellate/trimmed/edge_discretisation.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace seamless;
+using namespace seamless::test;
+
+TEST_CASE("edge discretisation: a circle's chords within D, its turning within the angle",
+          "[brep]") {
+    BRepBuilder b;
+    const int v = b.vertex({2, 0, 0});
+    const int e = b.edge(nurbs_circle({}, 2, {1, 0, 0}, {0, 1, 0}), v, v);
+    const BRep& brep = b.m.brep;
+    for (const auto& [D, angle] : {std::pair{1e-2, 3.0}, {1e-4, 3.0}, {1.0, 0.3}}) {
+        const EdgePolyline line = discretise_edge(brep, e, {}, {D, angle});
+        REQUIRE(line.t.size() >= 4);
+        CHECK(line.points.front() == brep.vertices[v].point);
+        CHECK(line.points.back() == brep.vertices[v].point);
+        CHECK(!line.limited);
+        CHECK(line.deviation <= D);
+        for (size_t k = 1; k < line.t.size(); ++k) {
+            REQUIRE(line.t[k] > line.t[k - 1]);
+            for (int j = 1; j < 10; ++j) {
+                const double t = line.t[k - 1] + (line.t[k] - line.t[k - 1]) * j / 10;
+                const Vec3 p = evaluate(brep.curves[0], t).point;
+                CHECK(point_segment_distance(p, line.points[k - 1], line.points[k]) <= D);
+            }
+            // The chord of a circular arc turns by its central angle.
+            const double turn = 2 * std::asin(distance(line.points[k - 1], line.points[k]) / 4);
+            CHECK(turn <= angle + 1e-12);
+        }
+        EdgePolyline halved = line;
+        halve_segments(brep, e, halved);
+        CHECK(halved.t.size() == 2 * line.t.size() - 1);
+        for (size_t k = 0; k < line.t.size(); ++k) CHECK(halved.t[2 * k] == line.t[k]);
+    }
+}
