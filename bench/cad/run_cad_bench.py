@@ -125,8 +125,11 @@ class Bench:
             if rc != 0:
                 return {"ok": False, "error": failure(rc, err, self.args.timeout, path),
                         "wall": wall}
-            with open(stats) as f:
-                js = json.load(f)
+            try:
+                with open(stats) as f:
+                    js = json.load(f)
+            except (OSError, ValueError):
+                return {"ok": False, "error": "no --stats file written", "wall": wall}
             times.append((js.get("seconds", wall), wall))
             if wall > 5:  # slow: once is enough
                 break
@@ -243,6 +246,7 @@ def main():
     args.levels = [float(x) for x in args.levels.split(",")]
     args.work = args.work or os.path.join(args.build, "cad-bench")
     sys.path.insert(0, HERE)
+    sys.dont_write_bytecode = True  # no __pycache__ in the source tree
     import cad_report
     if args.report_only:
         with open(os.path.join(args.work, "results.json")) as f:

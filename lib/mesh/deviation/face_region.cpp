@@ -58,9 +58,12 @@ FaceRegion::FaceRegion(const Model& model, int face, const FaceRegionOptions& op
     period_v_ = period(surface, false);
     u0_ = v0_ = HUGE_VAL;
     u1_ = v1_ = -HUGE_VAL;
+    if (f.loops.empty()) // no boundary given: the whole surface
+        add_loop({du_min_, dv_min_, du_max_, dv_min_, du_max_, dv_max_, du_min_, dv_max_});
     for (const BRepLoop& loop : f.loops) {
         std::vector<double> uv;
         for (const BRepCoedge& ce : loop.coedges) {
+            if (ce.pcurve < 0 || ce.edge < 0) continue; // validate_brep's to refuse, not ours
             const BRepEdge& e = brep.edges[ce.edge];
             const BSplineCurve& pc = brep.pcurves[ce.pcurve];
             int n = options.samples_per_coedge;

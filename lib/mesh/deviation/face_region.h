@@ -26,9 +26,10 @@ class FaceRegion {
   public:
     FaceRegion(const Model& model, int face, const FaceRegionOptions& options);
 
-    // (u, v) on the face, its boundary included; on a surface closed in u or v, (u, v) shifted by
-    // the period in that direction counts too (a face's pcurves may lie one period off the
-    // surface's domain).
+    // (u, v) on the face (a face without loops: its whole surface), its
+    // boundary included; on a surface closed in u or v, (u, v) shifted by
+    // the period that way counts too (a face's pcurves may lie one period
+    // off the surface's domain).
     bool contains(double u, double v) const;
     // The loops' (u,v) bounding box (u0, v0, u1, v1).
     double u0() const { return u0_; }

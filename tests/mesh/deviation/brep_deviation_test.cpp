@@ -183,6 +183,12 @@ TEST_CASE("face region: the hole, the square and the cylinder's period", "[brep_
     double u = 1.25, v = 0.5;
     cyl.wrap(u, v);
     CHECK(u == Approx(0.25));
+    // A face without loops is its whole surface.
+    Model whole = m;
+    whole.brep.faces[0].loops.clear();
+    const FaceRegion all(whole, 0, {});
+    CHECK(all.contains(0.5, 0.5));
+    CHECK_FALSE(all.contains(1.5, 0.5));
 }
 
 TEST_CASE("brep deviation: a mesh on the faces measures its chords, both ways",
