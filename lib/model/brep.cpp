@@ -15,9 +15,14 @@ namespace seamless {
 namespace {
 
 // Parameter slack, relative to the width of a domain: an edge's range may
-// pass its curve's and pcurves' domains, and a pcurve its surface's (u,v)
-// domain, by this much (rounding in the files' conversions), not more.
+// pass its curve's and pcurves' domains by this much (rounding in the
+// files' conversions), not more.
 constexpr double kDomainSlack = 1e-6;
+// A pcurve may pass its surface's (u,v) domain by this fraction of the
+// domain's width: CAD files' pcurves end a little outside their surfaces
+// (1e-6 to 3e-6 of the width in the corpus, their tolerance), where the
+// surface is evaluated at the domain's edge (clamped).
+constexpr double kSurfaceSlack = 1e-3;
 // Consecutive pcurves of a loop meet within this fraction of the diagonal of
 // their surface's (u,v) domain (or within the vertex's tolerance in 3D, below).
 constexpr double kLoopGap = 1e-6;
@@ -233,11 +238,11 @@ bool gap_closes(const BSplineSurface& s, const Vec3& a, const Vec3& z, const Vec
 }
 
 // The (u,v) points of pcurve c over [t0, t1] against surface s's domain:
-// the first point outside it (with kDomainSlack), or nothing.
+// the first point outside it (with kSurfaceSlack), or nothing.
 bool leaves_domain(const BSplineCurve& c, double t0, double t1, const BSplineSurface& s,
                    Vec3& out) {
-    const double su = kDomainSlack * (s.u_max() - s.u_min());
-    const double sv = kDomainSlack * (s.v_max() - s.v_min());
+    const double su = kSurfaceSlack * (s.u_max() - s.u_min());
+    const double sv = kSurfaceSlack * (s.v_max() - s.v_min());
     for (int k = c.degree; k < c.size(); ++k) {
         const double a = std::max(t0, c.knots[k]), z = std::min(t1, c.knots[k + 1]);
         if (!(a <= z)) continue;
