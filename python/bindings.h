@@ -36,7 +36,7 @@ void bind_render(py::module_& m);
 template <class T>
 py::array readonly_view(const void* data, std::vector<py::ssize_t> shape, py::handle owner) {
     py::array a(py::dtype::of<T>(), std::move(shape), static_cast<const T*>(data), owner);
-    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    a.attr("setflags")(py::arg("write") = false);
     return a;
 }
 

@@ -11,10 +11,11 @@ build=${1:-$here/build}
 # baseline; Embree is the render benchmark's baseline (bench/, optional
 # targets); clang with libFuzzer and the sanitizer runtimes builds the fuzz
 # targets (tests/fuzz) that the test script runs. pybind11 with Debian's
-# python3 headers, numpy and pytest: the Python module (python/) and its tests.
+# python3 headers, numpy and pytest: the Python module (python/) and its tests;
+# Dask distributed: `seamless batch --scheduler` (docs/batch.md).
 packages=(build-essential cmake pkg-config libopenmesh-dev libcgal-dev libtinygltf-dev catch2
           nlohmann-json3-dev libstb-dev libpng-dev libcli11-dev libtbb-dev libboost-dev python3
-          python3-dev pybind11-dev python3-numpy python3-pytest
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed
           libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
           libocct-foundation-dev libembree-dev clang-14 libclang-rt-14-dev libfuzzer-14-dev)
 # node and npm run the Khronos glTF validator (tests/mesh/io/mesh_io_test.cpp);

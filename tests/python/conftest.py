@@ -5,7 +5,6 @@ ctest sets PYTHONPATH (build/python) and SEAMLESS_CLI; by hand:
     PYTHONPATH=build/python /usr/bin/python3 -m pytest tests/python
 """
 
-import os
 import subprocess
 import sys
 
@@ -13,14 +12,13 @@ import pytest
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 
-from helpers import ROOT
+from helpers import cli_path
 
 
 @pytest.fixture(scope="session")
 def cli():
     """Runs `seamless ARGS...` and returns the CompletedProcess (text; exit status unchecked)."""
-    exe = os.environ.get("SEAMLESS_CLI", str(ROOT / "build" / "bin" / "seamless"))
-    assert os.access(exe, os.X_OK), f"the seamless CLI is not built: {exe}"
+    exe = cli_path()
 
     def run(*args):
         return subprocess.run([exe, *map(str, args)], capture_output=True, text=True)

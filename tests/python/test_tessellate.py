@@ -10,10 +10,12 @@ from helpers import DATA, TEAPOT, read_json
 FORMATS = [".off", ".obj", ".ply", ".stl", ".gltf", ".glb"]
 
 
-def test_off_byte_identical_to_cli(cli, tmp_path):
+# The teapot, and an IGES file (read through the OpenCASCADE module libseamless loads).
+@pytest.mark.parametrize("model", [TEAPOT, DATA / "models" / "cad" / "rounded_cube.iges"])
+def test_off_byte_identical_to_cli(cli, tmp_path, model):
     by_cli, by_module = tmp_path / "cli.off", tmp_path / "module.off"
-    assert cli("tessellate", TEAPOT, "-o", by_cli).returncode == 0
-    seamless.write_mesh(seamless.tessellate(TEAPOT), by_module)
+    assert cli("tessellate", model, "-o", by_cli).returncode == 0
+    seamless.write_mesh(seamless.tessellate(model), by_module)
     assert by_module.read_bytes() == by_cli.read_bytes()
 
 
