@@ -65,6 +65,10 @@ def run_batch(
         outputs = job.outputs_of(out_dir, item.relative, format, check)
         tasks.append((item.path, outputs))
         pending.append({"input": item.path, "size": size, "sha256": sha, "options": options})
+    # Largest first (size as the cost's proxy): no big file starts last while the other
+    # workers idle (longest-processing-time-first scheduling).
+    order = sorted(range(len(tasks)), key=lambda i: -pending[i]["size"])
+    tasks, pending = [tasks[i] for i in order], [pending[i] for i in order]
     run_options = dict(options, cli=cli or default_cli())
     bar = report.Progress(len(tasks))
     writer = manifest.Writer(out_dir)

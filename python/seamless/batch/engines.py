@@ -44,19 +44,10 @@ def dask(tasks, options, client):
             try:
                 yield i, f.result()
             except KilledWorker as e:  # the file killed every worker that tried it
-                yield i, _lost(f"the Dask workers that ran it died ({e})")
+                yield i, job.failed(f"the Dask workers that ran it died ({e})")
+            except Exception as e:  # the cluster's failure, recorded as the file's
+                yield i, job.failed(f"Dask: {type(e).__name__}: {e}")
     except BaseException:
         client.cancel(list(futures))
         raise
 
-
-def _lost(reason):
-    return {
-        "outcome": job.CRASHED,
-        "reason": reason,
-        "figures": {},
-        "outputs": {},
-        "output_sha256": {},
-        "seconds": 0,
-        "host": "",
-    }

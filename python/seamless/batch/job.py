@@ -73,6 +73,21 @@ def _run(command, time_limit, memory_bytes):
     return CRASHED, f"exit status {proc.returncode}" + (f": {last}" if last else ""), ""
 
 
+def _parse_json(text):
+    try:
+        return json.loads(text)
+    except ValueError:
+        return None
+
+
+def _read_json(path):
+    try:
+        with open(path) as f:
+            return _parse_json(f.read())
+    except OSError:
+        return None
+
+
 def _write_atomically(path, text):
     tmp = f"{path}.{os.getpid()}.tmp"
     with open(tmp, "w") as f:
@@ -89,9 +104,21 @@ def outputs_of(out_dir, relative, fmt, check):
     return paths
 
 
-def run_file(input_path, outputs, options):
-    """Tessellates (and checks) one file; returns its manifest fields but the
-    input's own (path, size, hash), which the batch adds."""
+def _check(cli, mesh, report_path, time_limit, memory):
+    """(outcome, reason, figures) of `seamless check --json MESH`, its report written."""
+    outcome, reason, text = _run([cli, "check", "--json", mesh], time_limit, memory)
+    report = _parse_json(text) if outcome == OK else None
+    if outcome != OK:
+        return outcome, reason, {}
+    if report is None:
+        return CRASHED, "check --json printed no JSON report", {}
+    _write_atomically(report_path, text)  # the CLI's own bytes
+    closed = report.get("closed", False)
+    return OK, "", {"passed": report["passed"], "closed": closed,
+                    "watertight": report["passed"] and closed}
+
+
+def _tessellate_and_check(input_path, outputs, options):
     start = time.monotonic()
     cli, limit = options["cli"], options["time_limit"]
     memory = int(options["memory_limit_mb"]) << 20
@@ -101,21 +128,17 @@ def run_file(input_path, outputs, options):
     if options.get("tolerance"):
         command += ["--tolerance", repr(options["tolerance"])]
     outcome, reason, _ = _run(command, limit, memory)
+    stats = _read_json(outputs["stats"]) if outcome == OK else None
+    if outcome == OK and stats is None:
+        outcome, reason = CRASHED, "exit status 0 without its --stats file"
     figures = {}
     if outcome == OK:
-        with open(outputs["stats"]) as f:
-            stats = json.load(f)
-        figures = {k: stats[k] for k in ("triangles", "vertices", "certified_bound")}
-        figures["tessellate_seconds"] = stats["seconds"]
+        figures = {k: stats.get(k) for k in ("triangles", "vertices", "certified_bound")}
+        figures["tessellate_seconds"] = stats.get("seconds")
         if "check" in outputs:
             left = max(limit - (time.monotonic() - start), 1)
-            outcome, reason, report = _run([cli, "check", "--json", outputs["mesh"]], left, memory)
-            if outcome == OK:
-                _write_atomically(outputs["check"], report)
-                report = json.loads(report)
-                figures["passed"] = report["passed"]
-                figures["closed"] = report["closed"]
-                figures["watertight"] = report["passed"] and report["closed"]
+            outcome, reason, checked = _check(cli, outputs["mesh"], outputs["check"], left, memory)
+            figures.update(checked)
     done = {k: p for k, p in outputs.items() if outcome == OK and os.path.exists(p)}
     return {
         "outcome": outcome,
@@ -126,3 +149,20 @@ def run_file(input_path, outputs, options):
         "seconds": round(time.monotonic() - start, 6),
         "host": socket.gethostname(),
     }
+
+
+def failed(reason):
+    """The manifest fields of a file whose job itself failed."""
+    return {"outcome": CRASHED, "reason": reason, "figures": {}, "outputs": {},
+            "output_sha256": {}, "seconds": 0, "host": socket.gethostname()}
+
+
+def run_file(input_path, outputs, options):
+    """Tessellates (and checks) one file; returns its manifest fields but the
+    input's own (path, size, hash), which the batch adds. Never raises: a
+    failure of the job itself (an output folder it cannot make) is the file's
+    outcome too."""
+    try:
+        return _tessellate_and_check(input_path, outputs, options)
+    except Exception as e:  # recorded, and the batch goes on
+        return failed(f"batch job: {type(e).__name__}: {e}")
