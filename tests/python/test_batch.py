@@ -127,3 +127,21 @@ def kill_worker_holding_a_task(client, timeout=20):
             return True
         time.sleep(0.05)
     return False
+
+
+def test_interrupted_batch_loses_only_the_files_in_flight(tmp_path):
+    models, double = make_inputs(tmp_path, ["hang.json"]), fake_cli(tmp_path)
+    out = tmp_path / "out"
+    command = [cli_path(), "batch", str(models), "-o", str(out), "--workers", "2", "--cli", double]
+    proc = subprocess.Popen(command, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline and not (
+            (out / "manifest.jsonl").exists() and len(manifest_lines(out)) == 4):
+        time.sleep(0.05)  # all but hang.json, which sleeps
+    proc.send_signal(signal.SIGINT)  # Ctrl-C
+    _, err = proc.communicate(timeout=10)
+    assert proc.returncode == 130 and "interrupted" in err
+    assert len(manifest_lines(out)) == 4  # hang.json, in flight, is not recorded
+    again = run_batch([models], out, workers=2, time_limit=1, cli=double)
+    assert again["skipped_as_done"] == 3 and again["outcomes"]["timed out"] == 1

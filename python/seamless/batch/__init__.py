@@ -52,7 +52,7 @@ def run_batch(
     start = time.monotonic()
     out_dir = os.path.abspath(out_dir)
     items = inputs.collect(paths)
-    # What makes two runs' results the same (recorded; a rerun with other options redoes all).
+    # Recorded with every file (manifest.OUTPUT_OPTIONS of them decide what a rerun skips).
     options = {"tolerance": tolerance, "format": format, "check": bool(check), "threads": threads,
                "time_limit": time_limit, "memory_limit_mb": memory_limit_mb}
     previous = manifest.read(out_dir)

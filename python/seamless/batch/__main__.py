@@ -45,6 +45,10 @@ def main(argv=None):
     except BatchInputError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print("interrupted: the files finished are in the manifest; run again to go on",
+              file=sys.stderr)
+        return 130
     report.write(summary, a.output)
     return 0 if summary["outcomes"]["ok"] == summary["files"] else 1
 

@@ -22,9 +22,10 @@ def local(tasks, options, workers):
         try:
             for f in concurrent.futures.as_completed(futures):
                 yield futures[f], f.result()
-        except BaseException:  # Ctrl-C: what is running finishes unrecorded, the rest never starts
+        except BaseException:  # Ctrl-C: what runs is stopped unrecorded, the rest never starts
             for f in futures:
                 f.cancel()
+            job.stop_all()
             raise
 
 

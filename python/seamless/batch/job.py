@@ -12,6 +12,7 @@ import resource
 import signal
 import socket
 import subprocess
+import threading
 import time
 
 from .inputs import file_hash
@@ -43,25 +44,44 @@ def _limits(memory_bytes):
     return apply
 
 
+# The CLI processes running in this process's jobs, for stop_all().
+_running = set()
+_running_lock = threading.Lock()
+_stopped = threading.Event()
+
+
+def stop_all():
+    """Kills every job's running process (the batch was interrupted: what is in
+    flight is not recorded, and is redone by the next run)."""
+    with _running_lock:
+        _stopped.set()
+        for proc in _running:
+            proc.kill()
+
+
 def _run(command, time_limit, memory_bytes):
     """(outcome, reason, stdout) of one CLI process."""
+    with _running_lock:
+        if _stopped.is_set():
+            return CRASHED, "interrupted", ""
+        proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True, errors="replace", preexec_fn=_limits(memory_bytes))
+        _running.add(proc)
     try:
-        proc = subprocess.run(
-            command,
-            capture_output=True,
-            text=True,
-            errors="replace",
-            timeout=time_limit,
-            preexec_fn=_limits(memory_bytes),
-        )
+        stdout, stderr = proc.communicate(timeout=time_limit)
     except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
         return TIMED_OUT, f"killed after the time limit of {time_limit:g} s", ""
-    lines = proc.stderr.strip().splitlines()
+    finally:
+        with _running_lock:
+            _running.discard(proc)
+    lines = stderr.strip().splitlines()
     last = lines[-1] if lines else ""
     if last.startswith("error: "):
         last = last[len("error: ") :]
     if proc.returncode in (0, 1):  # check: 1 = defects found, a result
-        return OK, "", proc.stdout
+        return OK, "", stdout
     if proc.returncode == 2:
         return (OUT_OF_MEMORY if last == "out of memory" else REFUSED), last, ""
     if proc.returncode == -signal.SIGKILL:  # the kernel's OOM killer, the usual sender
