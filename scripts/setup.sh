@@ -10,9 +10,12 @@ build=${1:-$here/build}
 # OpenCASCADE reads STEP/IGES (lib/model) and is the tessellation benchmark's
 # baseline; Embree is the render benchmark's baseline (bench/, optional
 # targets); clang with libFuzzer and the sanitizer runtimes builds the fuzz
-# targets (tests/fuzz) that the test script runs.
+# targets (tests/fuzz) that the test script runs. pybind11 with Debian's
+# python3 headers, numpy and pytest: the Python module (python/) and its tests;
+# Dask distributed: `seamless batch --scheduler` (docs/batch.md).
 packages=(build-essential cmake pkg-config libopenmesh-dev libcgal-dev libtinygltf-dev catch2
           nlohmann-json3-dev libstb-dev libpng-dev libcli11-dev libtbb-dev libboost-dev python3
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed
           libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
           libocct-foundation-dev libembree-dev clang-14 libclang-rt-14-dev libfuzzer-14-dev)
 # node and npm run the Khronos glTF validator (tests/mesh/io/mesh_io_test.cpp);
@@ -43,3 +46,14 @@ fi
 
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"$(nproc)"
+
+# `import seamless` in Debian's python3 with no other step (docs/python.md):
+# a .pth file in its site folder names BUILD_DIR/python, where the build puts
+# the module. One per machine: the last set-up's build is the one imported.
+python=/usr/bin/python3
+site_dir=$("$python" -c 'import site; print(site.getsitepackages()[0])')
+module_dir="$(cd "$build" && pwd)/python"
+if [ "$(cat "$site_dir/seamless.pth" 2>/dev/null)" != "$module_dir" ]; then
+  $sudo_cmd mkdir -p "$site_dir"
+  echo "$module_dir" | $sudo_cmd tee "$site_dir/seamless.pth" >/dev/null
+fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Installs what is missing, builds (Release) and runs every test through ctest;
+# Installs what is missing, builds (Release) and runs every test through ctest
+# (the Python module's pytest suite too: /usr/bin/python3 -m pytest tests/python);
 # then one clang build with ASan+UBSan and assertions on (build-san/) serves
 # (a) every stage's tests but the [heavy] ones and (b) every libFuzzer target
 # but STEP/IGES, each 10 s on its seed corpus. Any failure, sanitizer report

@@ -19,5 +19,6 @@ void add_convert(CLI::App& app, Action& action);
 void add_check(CLI::App& app, Action& action);
 void add_render(CLI::App& app, Action& action);
 void add_sweep(CLI::App& app, Action& action);
+void add_batch(CLI::App& app, Action& action);
 
 } // namespace seamless::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     seamless::cli::add_check(app, action);
     seamless::cli::add_render(app, action);
     seamless::cli::add_sweep(app, action);
+    seamless::cli::add_batch(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
