@@ -2,10 +2,10 @@
 // Trimmed B-rep faces (issue 28, section 2) on hand-made hard cases
 // (brep_cases.h): solids come out closed with their Euler characteristic,
 // no triangle is degenerate, the flat triangles are within the deviation of
-// the exact (analytic) surfaces and of the NURBS through their (u,v), the
-// mesh is byte-identical on one and two threads, and faces share their
-// boundary vertices.
-#include "../mesh_properties.h"
+// the exact (analytic) surfaces and the NURBS's points at their (u,v) within
+// it of the triangles (both ways), the mesh is byte-identical on one and two
+// threads, and faces share their boundary vertices.
+#include <tessellate/mesh_properties.h>
 #include <tessellate/trimmed/brep_cases.h>
 
 #include <seamless/base/segment_distance.h>
