@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/trimmed/face_surface.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace seamless {
@@ -28,7 +29,13 @@ FaceSurface::FaceSurface(const BSplineSurface& s) : s_(&s) {
 SurfacePoint FaceSurface::at(Vec3 uv) const {
     const double u = closed_u_ ? wrap(uv.x, s_->u_min(), s_->u_max()) : uv.x;
     const double v = closed_v_ ? wrap(uv.y, s_->v_min(), s_->v_max()) : uv.y;
-    return evaluate(*s_, u, v);
+    const double uc = std::clamp(u, s_->u_min(), s_->u_max()),
+                 vc = std::clamp(v, s_->v_min(), s_->v_max());
+    SurfacePoint p = evaluate(*s_, uc, vc);
+    // Beyond the domain, to first order: exact for planes, and close for
+    // pcurves a little outside it (within the file's tolerance).
+    if (uc != u || vc != v) p.point += (u - uc) * p.du + (v - vc) * p.dv;
+    return p;
 }
 
 } // namespace seamless

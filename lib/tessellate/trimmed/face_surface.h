@@ -4,7 +4,8 @@
 // periodic surface in its NURBS form) is evaluated with parameters outside
 // its domain wrapped into it, so that loops crossing the seam (pcurves
 // beyond the domain, as CAD files write them) map to the surface instead of
-// being clamped to its edge.
+// being clamped to its edge; beyond an open side it is extended by its
+// tangent plane there (a plane's patch smaller than its face's loops).
 #pragma once
 
 #include <seamless/spline/bspline_surface.h>

@@ -36,9 +36,10 @@ constexpr double kMargin = 0.9;
 
 // An upper bound of the distance from q to the surface: the nearest of the
 // surface points at uv and of a few damped Gauss-Newton steps from it, taken
-// while above `enough`. At a pole or apex the (u,v) image of a triangle
-// strays far from it, as the parametrisation collapses there: its flat
-// points are measured against the surface instead.
+// while above `enough`. Where the parametrisation is distorted (towards a
+// pole or apex it collapses) the (u,v) image of a triangle strays from it
+// though the triangle lies on the surface: its flat points are measured
+// against the surface instead.
 double distance_to_surface(const FaceSurface& s, Vec3 q, Vec3 uv, double enough) {
     SurfacePoint p = s.at(uv);
     double best = distance(p.point, q);
@@ -69,7 +70,7 @@ struct TriangleKeyHash {
 };
 
 struct Verdict {
-    bool drop = false;  // two corners at one pole: zero area, left out
+    bool drop = false;  // two corners one mesh vertex (pole, seam): zero area, left out
     bool split = false; // above the deviation or angle, or flat on the surface
     double deviation = 0;
     double badness = 0; // the largest of deviation and angle over their limits
@@ -108,10 +109,8 @@ struct Refiner {
         }
         // At a pole every (u,v) along its degenerate edge is the pole: the
         // corner stands for the one facing the other two corners.
-        bool pole = false;
         for (int i = 0; i < 3; ++i) {
             const Vec3 dir = d.pole[k[i]];
-            pole = pole || dir != Vec3{};
             if (dir == Vec3{}) continue;
             const Vec3 m = 0.5 * (uv[(i + 1) % 3] + uv[(i + 2) % 3]);
             uv[i] = uv[i] + dot(m - uv[i], dir) * dir;
@@ -130,9 +129,9 @@ struct Refiner {
             if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
             const Vec3 q = smp.l[0] * uv[0] + smp.l[1] * uv[1] + smp.l[2] * uv[2];
             // The surface's point against the flat triangle, as edges measure
-            // against their chords.
+            // against their chords; else the flat point against the surface.
             double dev = point_triangle_distance(s.at(q).point, p[0], p[1], p[2]);
-            if (pole && dev > target) {
+            if (dev > target) {
                 const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
                 dev = std::min(dev, distance_to_surface(s, flat, q, target));
             }

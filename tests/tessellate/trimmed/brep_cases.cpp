@@ -59,6 +59,16 @@ BRepCase plate_with_holes(int holes) {
             1 - holes, [](int, Vec3 p) { return plane_distance(p); }};
 }
 
+BRepCase plate_beyond_its_plane() {
+    BRepBuilder b;
+    const int s = b.surface(kXY.surface(0.1, 0.9, 0.2, 0.8), "plane");
+    add_polygon(b, kXY, square_vertices(b));
+    add_hole(b, kXY, {0.25, 0.25, 0}, 0.12, kX, kY, -1);
+    b.face(s, false, "#beyond");
+    return {"plate beyond its plane's patch", b.finish(false, "beyond"), false, 0,
+            [](int, Vec3 p) { return plane_distance(p); }};
+}
+
 BRepCase plate_with_touching_holes() {
     BRepBuilder b;
     const int s = b.surface(kXY.surface(-0.1, 1.1, -0.1, 1.1), "plane");
@@ -341,6 +351,7 @@ std::vector<BRepCase> all_brep_cases() {
     std::vector<BRepCase> c;
     for (int h = 0; h <= 4; ++h) c.push_back(plate_with_holes(h));
     c.push_back(plate_with_touching_holes());
+    c.push_back(plate_beyond_its_plane());
     c.push_back(box_solid());
     c.push_back(box_solid(1e-4));
     c.push_back(cylinder_solid());

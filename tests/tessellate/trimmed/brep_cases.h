@@ -25,6 +25,7 @@ struct BRepCase {
 };
 
 BRepCase plate_with_holes(int holes);      // 0 .. 4 free circular holes
+BRepCase plate_beyond_its_plane();         // the plane's patch is smaller than the loops
 BRepCase plate_with_touching_holes();      // two holes touching the outer loop, one free
 BRepCase box_solid(double short_edge = 0); // > 0: one edge split off this short
 BRepCase cylinder_solid(double scale = 1);

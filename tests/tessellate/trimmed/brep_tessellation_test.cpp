@@ -2,10 +2,10 @@
 // Trimmed B-rep faces (issue 28, section 2) on hand-made hard cases
 // (brep_cases.h): solids come out closed with their Euler characteristic,
 // no triangle is degenerate, the flat triangles are within the deviation of
-// the exact (analytic) surfaces and of the NURBS through their (u,v), the
-// mesh is byte-identical on one and two threads, and faces share their
-// boundary vertices.
-#include "../mesh_properties.h"
+// the exact (analytic) surfaces and the NURBS's points at their (u,v) within
+// it of the triangles (both ways), the mesh is byte-identical on one and two
+// threads, and faces share their boundary vertices.
+#include <tessellate/mesh_properties.h>
 #include <tessellate/trimmed/brep_cases.h>
 
 #include <seamless/base/segment_distance.h>
@@ -73,7 +73,12 @@ Deviation measure(const BRepCase& c, const TriangleMesh& m) {
             if (!pole) {
                 // Loops across a seam have (u,v) beyond the domain, by a period.
                 const double period = s.u_max() - s.u_min();
-                const double u = uv.x <= s.u_max() ? uv.x : uv.x - period;
+                bool closed = true; // in u: the loops may cross its seam
+                for (int j = 0; j < s.size_v; ++j)
+                    closed = closed && s.point(0, j) == s.point(s.size_u - 1, j);
+                const double u = uv.x <= s.u_max() || !closed ? uv.x : uv.x - period;
+                // Beyond an open side the surface is the tessellator's extension.
+                if (u < s.u_min() || uv.y < s.v_min() || uv.y > s.v_max()) continue;
                 d.through_uv = std::max(d.through_uv,
                                         to_triangle(evaluate(s, u, uv.y).point, m.positions[tri[0]],
                                                     m.positions[tri[1]], m.positions[tri[2]]));
