@@ -7,7 +7,7 @@
 
 #include <seamless/tessellate/tessellation.h>
 
-#include <nlohmann/json.hpp>
+#include <seamless/tessellate/tessellation_stats_json.h>
 
 #include <pybind11/stl.h>
 
@@ -40,47 +40,6 @@ TessellationOptions tessellation_options(const TessellateArgs& a) {
     return opt;
 }
 
-// The fields of `seamless tessellate --stats` (tools/tessellate.cpp), the
-// output path null.
-std::string stats_json(const std::string& model, double angle_degrees, const TessellationStats& s) {
-    nlohmann::json js{{"model", model},
-                      {"output", nullptr},
-                      {"surfaces", s.surfaces},
-                      {"patches", s.patches},
-                      {"subpatches", s.subpatches},
-                      {"triangles", s.triangles},
-                      {"vertices", s.vertices},
-                      {"shared_edges", s.shared_edges},
-                      {"collapsed_edges", s.collapsed_edges},
-                      {"seams", s.seams},
-                      {"seam_vertices", s.seam_vertices},
-                      {"flipped_surfaces", s.flipped_surfaces},
-                      {"seam_tolerance", s.seam_tolerance},
-                      {"nonplanar_subpatches", s.nonplanar_subpatches},
-                      {"max_depth", s.max_depth},
-                      {"d_max", s.d_max},
-                      {"eps1", s.eps1},
-                      {"eps2", s.eps2},
-                      {"tolerance", s.tolerance},
-                      {"angle_degrees", angle_degrees},
-                      {"max_error_bound", s.max_error_bound},
-                      {"certified_bound", s.max_error_bound},
-                      {"above_tolerance", s.above_tolerance},
-                      {"passes", s.passes},
-                      {"seconds", s.seconds}};
-    const PhaseSeconds& ph = s.phases;
-    js["phase_seconds"] = {{"subdivision", ph.subdivision},
-                           {"boundaries", ph.boundaries},
-                           {"rings", ph.rings},
-                           {"numbering", ph.numbering},
-                           {"bounds", ph.bounds},
-                           {"normals", ph.normals},
-                           {"fans", ph.fans},
-                           {"orientation", ph.orientation},
-                           {"scaling", ph.scaling}};
-    return js.dump();
-}
-
 std::shared_ptr<Mesh> run(py::object model_or_path, const TessellateArgs& args,
                           const std::string& trimmed, py::object progress) {
     TessellationOptions opt = tessellation_options(args);
@@ -96,7 +55,7 @@ std::shared_ptr<Mesh> run(py::object model_or_path, const TessellateArgs& args,
     {
         const py::gil_scoped_release release;
         Tessellation t = tessellate(*model, opt);
-        out->stats = stats_json(model->source, args.angle.value_or(0), t.stats);
+        out->stats = tessellation_stats_json(t.stats, {model->source, "", args.angle.value_or(0)});
         out->mesh = std::move(t.mesh);
     }
     callback.rethrow();

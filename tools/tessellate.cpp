@@ -15,8 +15,7 @@
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
-
-#include <nlohmann/json.hpp>
+#include <seamless/tessellate/tessellation_stats_json.h>
 
 #include <filesystem>
 #include <iostream>
@@ -95,81 +94,6 @@ TessellationOptions tessellation_options(const TessellateArgs& args) {
     return opt;
 }
 
-// The --stats file.
-nlohmann::json tessellation_stats_json(const TessellateArgs& args, const TessellationStats& s) {
-    nlohmann::json js{{"model", args.model},
-                      {"output", args.out},
-                      {"surfaces", s.surfaces},
-                      {"patches", s.patches},
-                      {"subpatches", s.subpatches},
-                      {"triangles", s.triangles},
-                      {"vertices", s.vertices},
-                      {"shared_edges", s.shared_edges},
-                      {"collapsed_edges", s.collapsed_edges},
-                      {"seams", s.seams},
-                      {"seam_vertices", s.seam_vertices},
-                      {"flipped_surfaces", s.flipped_surfaces},
-                      {"seam_tolerance", s.seam_tolerance},
-                      {"nonplanar_subpatches", s.nonplanar_subpatches},
-                      {"max_depth", s.max_depth},
-                      {"d_max", s.d_max},
-                      {"eps1", s.eps1},
-                      {"eps2", s.eps2},
-                      {"tolerance", s.tolerance},
-                      {"angle_degrees", args.angle},
-                      {"max_error_bound", s.max_error_bound},
-                      {"certified_bound", s.max_error_bound},
-                      {"above_tolerance", s.above_tolerance},
-                      {"passes", s.passes},
-                      {"seconds", s.seconds}};
-    if (s.brep.faces > 0) {
-        const BRepStats& b = s.brep;
-        js["brep"] = {{"faces", b.faces},
-                      {"edges", b.edges},
-                      {"edge_points", b.edge_points},
-                      {"interior_points", b.interior_points},
-                      {"resplit_rounds", b.resplit_rounds},
-                      {"resplit_edges", b.resplit_edges},
-                      {"faces_left_out", b.faces_left_out},
-                      {"above_tolerance", b.above_tolerance},
-                      {"angle", b.angle},
-                      {"max_deviation", b.max_deviation},
-                      {"certified", b.certified},
-                      {"bound_triangles", b.bound_triangles},
-                      {"bound_chords", b.bound_chords},
-                      {"max_edge_tolerance", b.max_edge_tolerance},
-                      {"edges_above_tolerance", b.edges_above_tolerance},
-                      {"warnings", b.warnings}};
-    }
-    const PhaseSeconds& ph = s.phases;
-    js["phase_seconds"] = {{"subdivision", ph.subdivision},
-                           {"boundaries", ph.boundaries},
-                           {"rings", ph.rings},
-                           {"numbering", ph.numbering},
-                           {"bounds", ph.bounds},
-                           {"normals", ph.normals},
-                           {"fans", ph.fans},
-                           {"orientation", ph.orientation},
-                           {"scaling", ph.scaling}};
-    const BRepStats& b = s.brep;
-    if (b.faces > 0 || b.faces_left_out > 0) // a B-rep model (tessellate/trimmed/)
-        js["brep"] = {{"faces", b.faces},
-                      {"edges", b.edges},
-                      {"edge_points", b.edge_points},
-                      {"interior_points", b.interior_points},
-                      {"resplit_rounds", b.resplit_rounds},
-                      {"resplit_edges", b.resplit_edges},
-                      {"faces_left_out", b.faces_left_out},
-                      {"above_tolerance", b.above_tolerance},
-                      {"angle", b.angle},
-                      {"max_deviation", b.max_deviation},
-                      {"certified", b.certified},
-                      {"max_edge_tolerance", b.max_edge_tolerance},
-                      {"edges_above_tolerance", b.edges_above_tolerance},
-                      {"warnings", b.warnings}};
-    return js;
-}
-
 void print_tessellation_summary(const TessellationStats& s) {
     if (s.brep.faces > 0) {
         const BRepStats& b = s.brep;
@@ -220,7 +144,8 @@ int run_tessellate(const TessellateArgs& args) {
     print_tessellation_summary(t.stats);
     if (!args.stats.empty())
         write_text_atomically(files.staging(1),
-                              tessellation_stats_json(args, t.stats).dump(2) + "\n");
+                              tessellation_stats_json(t.stats, {args.model, args.out, args.angle}) +
+                                  "\n");
     files.commit(); // both outputs, or neither
     return 0;
 }
