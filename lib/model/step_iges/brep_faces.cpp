@@ -135,19 +135,32 @@ class FaceReader {
         range_ = r;
         period_[0] = s->IsUPeriodic() ? s->UPeriod() : 0;
         period_[1] = s->IsVPeriodic() ? s->VPeriod() : 0;
-        FaceRange turned = r;
+        // The exact form: with the seam turned to 0 where that applies, else
+        // (or where Newton's method cannot relate that one to the file's
+        // parameters) over the file's range.
         Converted c;
-        try {
-            c = convert(seam_at_zero(s, turned), turned.u1, turned.u2, turned.v1, turned.v2,
-                        rel_tol, abs_tol);
-        } catch (const Standard_Failure&) { // approximated below, in the file's parameters
+        for (bool turn : {true, false}) {
+            FaceRange range = r;
+            const Handle(Geom_Surface) to_convert = turn ? seam_at_zero(s, range) : s;
+            if (turn && to_convert == s) continue;
             map_.reset();
+            try {
+                c = convert(to_convert, range.u1, range.u2, range.v1, range.v2, rel_tol, abs_tol);
+            } catch (const Standard_Failure&) { // approximated below, in the file's parameters
+                c = Converted{};
+                continue;
+            }
+            if (c.surface.IsNull()) continue;
+            map_.emplace(s, to_model(c.surface, name), r.u1, r.u2, r.v1, r.v2);
+            if (map_->valid()) break;
         }
-        if (!c.surface.IsNull()) map_.emplace(s, to_model(c.surface, name), r.u1, r.u2, r.v1, r.v2);
         // Where the conversion failed or Newton's method could not relate its
         // parameters to the file's: approximated in the file's parameters,
         // where the pcurves stay as they are.
-        if (!map_ || !map_->valid()) c = approximate(s, r.u1, r.u2, r.v1, r.v2, rel_tol, abs_tol);
+        if (!map_ || !map_->valid()) {
+            map_.reset(); // the file's parameters: the pcurves as they are
+            c = approximate(s, r.u1, r.u2, r.v1, r.v2, rel_tol, abs_tol);
+        }
         if (c.surface.IsNull())
             throw InputError(ctx_.file, name,
                              "cannot convert its " + kind_of(s) + " surface to a B-spline surface");
@@ -159,7 +172,6 @@ class FaceReader {
                                  std::to_string(ctx_.options.limits.max_control_points));
         BSplineSurface model = to_model(c.surface, name);
         validate_surface(model, ctx_.file, name);
-        if (!map_ || !map_->valid()) map_.emplace(s, model, r.u1, r.u2, r.v1, r.v2); // the identity
         m_.surfaces.push_back(std::move(model));
         m_.origins.push_back({name, kind_of(s), c.exact, c.error});
         const GeomAdaptor_Surface adaptor(c.surface);
@@ -223,7 +235,7 @@ class FaceReader {
         if (!cc.ok || !(f < l)) throw edge_error(c.edge, "has a pcurve that cannot be converted");
         if (f != e.t0 || l != e.t1) reparametrise(cc.curve, f, l, e.t0, e.t1);
         into_range(cc.curve, e.t0, e.t1);
-        if (!map_->identity()) {
+        if (map_ && !map_->identity()) {
             double error = 0;
             cc.curve = map_->carry(cc.curve, e.t0, e.t1, uv_tolerance_, error);
             if (cc.curve.points.empty())
@@ -284,7 +296,7 @@ class FaceReader {
     std::vector<bool> edge_read_;
     const std::string* name_ = nullptr; // the face being read, for messages
     double uv_tolerance_ = 0;           // of the face being read's pcurve approximations
-    std::optional<ParameterMap> map_;   // of the face being read
+    std::optional<ParameterMap> map_;   // of the face being read; none: the file's parameters
     FaceRange range_{};                 // of the face being read, in the file's parameters
     double period_[2] = {0, 0};         // its surface's periods in u and v (0: none)
     std::vector<std::string> unordered_;
