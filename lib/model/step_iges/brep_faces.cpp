@@ -15,6 +15,7 @@
 #include <BRep_Tool.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <Geom_ElementarySurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_SurfaceOfRevolution.hxx>
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
@@ -93,7 +94,9 @@ class FaceReader {
     // form), so the surface is turned about its axis to bring the seam
     // there, and r moved to [0, period]: ParameterMap relates the two.
     static Handle(Geom_Surface) seam_at_zero(const Handle(Geom_Surface) & s, FaceRange& r) {
-        if (!s->IsUPeriodic() || r.u1 == 0 || r.u2 - r.u1 < s->UPeriod() * (1 - 1e-12)) return s;
+        // GeomConvert takes a range within Precision::PConfusion() of the
+        // period for the whole period, from 0.
+        if (!s->IsUPeriodic() || r.u1 == 0 || r.u2 - r.u1 < s->UPeriod() - 1e-9) return s;
         gp_Ax1 axis;
         double turn = r.u1;
         if (auto e = Handle(Geom_ElementarySurface)::DownCast(s)) {
@@ -114,16 +117,50 @@ class FaceReader {
     // none) over the face's parameter range, as in the untrimmed reader,
     // and how that form moved the face's parameters.
     void surface(const TopoDS_Face& face, const std::string& name) {
-        const Handle(Geom_Surface) s = BRep_Tool::Surface(face); // located
+        Handle(Geom_Surface) s = BRep_Tool::Surface(face); // located
         if (s.IsNull()) throw InputError(ctx_.file, name, "face without a surface");
+        // A trimmed surface has its basis's parameters; the basis says
+        // whether they are periodic.
+        while (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s)) s = t->BasisSurface();
         FaceRange r = face_range(face, s);
         if (s->IsUPeriodic()) r.u2 = std::min(r.u2, r.u1 + s->UPeriod());
         if (s->IsVPeriodic()) r.v2 = std::min(r.v2, r.v1 + s->VPeriod());
         if (!(r.u1 < r.u2 && r.v1 < r.v2))
             throw InputError(ctx_.file, name, "face with an empty parameter range");
-        const double file_u1 = r.u1;
-        const Converted c = convert(seam_at_zero(s, r), r.u1, r.u2, r.v1, r.v2,
-                                    ctx_.options.approximation_tolerance);
+        // A face is no more precise than its tolerance: approximations
+        // (rare) need not be either.
+        const double face_tol = BRep_Tool::Tolerance(face);
+        const double rel_tol = ctx_.options.approximation_tolerance;
+        const double abs_tol = kApproximationFraction * face_tol;
+        range_ = r;
+        period_[0] = s->IsUPeriodic() ? s->UPeriod() : 0;
+        period_[1] = s->IsVPeriodic() ? s->VPeriod() : 0;
+        // The exact form: with the seam turned to 0 where that applies, else
+        // (or where Newton's method cannot relate that one to the file's
+        // parameters) over the file's range.
+        Converted c;
+        for (bool turn : {true, false}) {
+            FaceRange range = r;
+            const Handle(Geom_Surface) to_convert = turn ? seam_at_zero(s, range) : s;
+            if (turn && to_convert == s) continue;
+            map_.reset();
+            try {
+                c = convert(to_convert, range.u1, range.u2, range.v1, range.v2, rel_tol, abs_tol);
+            } catch (const Standard_Failure&) { // approximated below, in the file's parameters
+                c = Converted{};
+                continue;
+            }
+            if (c.surface.IsNull()) continue;
+            map_.emplace(s, to_model(c.surface, name), r.u1, r.u2, r.v1, r.v2);
+            if (map_->valid()) break;
+        }
+        // Where the conversion failed or Newton's method could not relate its
+        // parameters to the file's: approximated in the file's parameters,
+        // where the pcurves stay as they are.
+        if (!map_ || !map_->valid()) {
+            map_.reset(); // the file's parameters: the pcurves as they are
+            c = approximate(s, r.u1, r.u2, r.v1, r.v2, rel_tol, abs_tol);
+        }
         if (c.surface.IsNull())
             throw InputError(ctx_.file, name,
                              "cannot convert its " + kind_of(s) + " surface to a B-spline surface");
@@ -137,10 +174,8 @@ class FaceReader {
         validate_surface(model, ctx_.file, name);
         m_.surfaces.push_back(std::move(model));
         m_.origins.push_back({name, kind_of(s), c.exact, c.error});
-        map_.emplace(s, m_.surfaces.back(), file_u1, file_u1 + (r.u2 - r.u1), r.v1, r.v2);
         const GeomAdaptor_Surface adaptor(c.surface);
-        const double tol =
-            kApproximationFraction * std::max(BRep_Tool::Tolerance(face), Precision::Confusion());
+        const double tol = kApproximationFraction * std::max(face_tol, Precision::Confusion());
         uv_tolerance_ = std::min(adaptor.UResolution(tol), adaptor.VResolution(tol));
     }
 
@@ -172,6 +207,20 @@ class FaceReader {
         return loop;
     }
 
+    // A pcurve on a periodic surface may lie a whole number of periods away
+    // from the face's range: moved into it by its midpoint.
+    void into_range(BSplineCurve& pc, double t0, double t1) const {
+        const Vec3 mid = evaluate(pc, 0.5 * (t0 + t1)).point;
+        for (int axis : {0, 1}) {
+            const double period = period_[axis], lo = axis == 0 ? range_.u1 : range_.v1;
+            if (period <= 0) continue;
+            const double eps = 1e-9 * period; // a seam's far side stays where it is
+            if (mid[axis] >= lo - eps && mid[axis] <= lo + period + eps) continue;
+            const double shift = -std::floor((mid[axis] - lo) / period) * period;
+            for (Vec3& p : pc.points) p[axis] += shift;
+        }
+    }
+
     BRepCoedge coedge(const TopoDS_Edge& edge, const TopoDS_Face& face) {
         BRepCoedge c;
         c.edge = ctx_.edges.FindIndex(edge) - 1;
@@ -185,7 +234,8 @@ class FaceReader {
         ConvertedCurve cc = convert_pcurve(pc, f, l, uv_tolerance_);
         if (!cc.ok || !(f < l)) throw edge_error(c.edge, "has a pcurve that cannot be converted");
         if (f != e.t0 || l != e.t1) reparametrise(cc.curve, f, l, e.t0, e.t1);
-        if (!map_->identity()) {
+        into_range(cc.curve, e.t0, e.t1);
+        if (map_ && !map_->identity()) {
             double error = 0;
             cc.curve = map_->carry(cc.curve, e.t0, e.t1, uv_tolerance_, error);
             if (cc.curve.points.empty())
@@ -246,7 +296,9 @@ class FaceReader {
     std::vector<bool> edge_read_;
     const std::string* name_ = nullptr; // the face being read, for messages
     double uv_tolerance_ = 0;           // of the face being read's pcurve approximations
-    std::optional<ParameterMap> map_;   // of the face being read
+    std::optional<ParameterMap> map_;   // of the face being read; none: the file's parameters
+    FaceRange range_{};                 // of the face being read, in the file's parameters
+    double period_[2] = {0, 0};         // its surface's periods in u and v (0: none)
     std::vector<std::string> unordered_;
 };
 

@@ -116,6 +116,10 @@ ConvertedCurve convert(const Handle(typename S::Curve) & c, double f, double l, 
         typename S::Approx approx(part, tol, cont, 1000, kMaxDegree);
         if (!approx.HasResult()) continue;
         r.curve = to_model<S>(approx.Curve());
+        // A trimmed periodic curve moves [f, l] into its first period: the
+        // same points, a whole number of periods earlier.
+        const double shift = f - r.curve.t_min();
+        for (double& k : r.curve.knots) k += shift;
         r.ok = true;
         r.error = approx.MaxError();
         return r;

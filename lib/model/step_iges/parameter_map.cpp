@@ -22,6 +22,7 @@ namespace {
 
 constexpr int kNewtonSteps = 50;
 constexpr double kIdentity = 1e-11; // of the range: the conversion kept the parameter
+constexpr double kConverged = 1e-9; // of the diagonal: Newton's method found the point
 constexpr int kMaxSamples = 1024;   // intervals per piece of a carried pcurve
 
 // True when every control point has the same coordinate `axis` (0: u, 1: v).
@@ -62,22 +63,25 @@ ParameterMap::ParameterMap(const Handle(Geom_Surface) & file_surface,
     bool same_u = conv_.u_min() == u1 && conv_.u_max() == u2;
     bool same_v = conv_.v_min() == v1 && conv_.v_max() == v2;
     // Fractions away from the symmetric points of arcs, where the rational
-    // circle's parameter agrees with the angle.
+    // circle's parameter agrees with the angle; on the lines u() and v() use.
+    const Box3 box = control_box(conv_);
+    const double tol = kConverged * distance(box.lo, box.hi);
     for (double a : {0.13, 0.37, 0.58, 0.81, 0.94}) {
-        if (!same_u && !same_v) break;
         const double fu = u1 + (u2 - u1) * a, fv = v2 - (v2 - v1) * a;
-        double cu, cv;
-        invert(fu, fv, cu, cv);
+        double cu = 0, cv = 0;
+        valid_ = valid_ && invert(fu, 0.5 * (v1 + v2), cu, cv) <= tol;
         same_u = same_u && std::abs(cu - fu) <= kIdentity * (u2 - u1);
+        valid_ = valid_ && invert(0.5 * (u1 + u2), fv, cu, cv) <= tol;
         same_v = same_v && std::abs(cv - fv) <= kIdentity * (v2 - v1);
     }
     identity_u_ = same_u;
     identity_v_ = same_v;
+    if (!valid_) return;
     if (!identity_u_) images_u_ = knot_images(0);
     if (!identity_v_) images_v_ = knot_images(1);
 }
 
-void ParameterMap::invert(double fu, double fv, double& cu, double& cv) const {
+double ParameterMap::invert(double fu, double fv, double& cu, double& cv) const {
     const gp_Pnt t = file_->Value(fu, fv);
     const Vec3 target{t.X(), t.Y(), t.Z()};
     const double U1 = conv_.u_min(), U2 = conv_.u_max(), V1 = conv_.v_min(), V2 = conv_.v_max();
@@ -105,6 +109,7 @@ void ParameterMap::invert(double fu, double fv, double& cu, double& cv) const {
         cu = nu, cv = nv;
         if (done) break;
     }
+    return distance(evaluate(conv_, cu, cv).point, target);
 }
 
 double ParameterMap::u(double file_u) const {

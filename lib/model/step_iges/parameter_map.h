@@ -27,6 +27,9 @@ class ParameterMap {
                  double u1, double u2, double v1, double v2);
 
     bool identity() const { return identity_u_ && identity_v_; }
+    // False when Newton's method did not find where the surfaces meet along
+    // the lines u() and v() use (the pcurves cannot be carried over).
+    bool valid() const { return valid_; }
     // The converted surface's parameters of the file's (u, v).
     double u(double file_u) const;
     double v(double file_v) const;
@@ -42,15 +45,16 @@ class ParameterMap {
   private:
     // The converted surface's (u, v) where it meets the file's surface at
     // (fu, fv), by Newton's method from the corners' linear map.
-    void invert(double fu, double fv, double& cu, double& cv) const;
+    // Returns the distance left between the two points.
+    double invert(double fu, double fv, double& cu, double& cv) const;
     // The file's parameters of the converted surface's interior knots.
     std::vector<double> knot_images(int axis) const;
     std::vector<double> breaks(const BSplineCurve& pc, double t0, double t1) const;
 
     Handle(Geom_Surface) file_;
-    const BSplineSurface& conv_;
+    BSplineSurface conv_; // a copy: the model's list may grow
     double u1_, u2_, v1_, v2_;
-    bool identity_u_ = true, identity_v_ = true;
+    bool identity_u_ = true, identity_v_ = true, valid_ = true;
     std::vector<double> images_u_, images_v_; // knot_images, where not identity
 };
 

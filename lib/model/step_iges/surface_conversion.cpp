@@ -23,6 +23,7 @@
 #include <Geom_TrimmedCurve.hxx>
 #include <Standard_Failure.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -78,7 +79,7 @@ std::string kind_of(const Handle(Geom_Surface) & s) {
 }
 
 Converted convert(const Handle(Geom_Surface) & s, double u1, double u2, double v1, double v2,
-                  double rel_tol) {
+                  double rel_tol, double abs_tol) {
     Converted c;
     Handle(Geom_Surface) exact = exact_form(s);
     if (!exact.IsNull()) {
@@ -97,10 +98,16 @@ Converted convert(const Handle(Geom_Surface) & s, double u1, double u2, double v
         if (c.surface->IsVPeriodic()) c.surface->SetVNotPeriodic();
         if (c.surface->UDegree() <= kMaxDegree && c.surface->VDegree() <= kMaxDegree) return c;
     }
+    return approximate(s, u1, u2, v1, v2, rel_tol, abs_tol);
+}
+
+Converted approximate(const Handle(Geom_Surface) & s, double u1, double u2, double v1, double v2,
+                      double rel_tol, double abs_tol) {
+    Converted c;
     Handle(Geom_Surface) part = new Geom_RectangularTrimmedSurface(s, u1, u2, v1, v2);
     Bnd_Box box;
     BndLib_AddSurface::Add(GeomAdaptor_Surface(part), 0.0, box);
-    const double tol = rel_tol * std::sqrt(box.SquareExtent());
+    const double tol = std::max(rel_tol * std::sqrt(box.SquareExtent()), abs_tol);
     // OpenCASCADE allocates for the most segments it may use: where 1000
     // fails (NCollection_Array2::Allocate on a degree-13 patch of
     // ksu_c_el_D_D63_L54), fewer are tried.

@@ -25,9 +25,14 @@ struct Converted {
 
 // The part [u1, u2] x [v1, v2] of `s` as a non-periodic B-spline surface of
 // degree at most kMaxDegree: exact where possible, else approximated within
-// `rel_tol` times its bounding box diagonal.
+// `rel_tol` times its bounding box diagonal or `abs_tol`, the larger.
 Converted convert(const Handle(Geom_Surface) & s, double u1, double u2, double v1, double v2,
-                  double rel_tol);
+                  double rel_tol, double abs_tol = 0);
+
+// The approximation `convert` falls back on, over the same parameters as
+// `s` (GeomConvert_ApproxSurface approximates (u, v) -> s(u, v)).
+Converted approximate(const Handle(Geom_Surface) & s, double u1, double u2, double v1, double v2,
+                      double rel_tol, double abs_tol = 0);
 
 // The model's surface of b, named `name`.
 BSplineSurface to_model(const Handle(Geom_BSplineSurface) & b, const std::string& name);
