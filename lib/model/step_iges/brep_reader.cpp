@@ -99,8 +99,12 @@ Model read_brep(const TransferredFile& t, const std::vector<std::string>& names,
     // reparametrised (OpenCASCADE's own fix; flagged edges are left alone).
     BRepLib::SameParameter(t.shape, 1e-7);
     FaceContext ctx{t, names, file, options, {}, {}};
-    TopExp::MapShapes(t.shape, TopAbs_EDGE, ctx.edges);
-    TopExp::MapShapes(t.shape, TopAbs_VERTEX, ctx.vertices);
+    // Edges and vertices of the faces only: a file's wireframe (AP242
+    // annotations, construction curves) would be edges no face uses.
+    for (int k = 1; k <= t.faces.Extent(); ++k) {
+        TopExp::MapShapes(t.faces(k), TopAbs_EDGE, ctx.edges);
+        TopExp::MapShapes(t.faces(k), TopAbs_VERTEX, ctx.vertices);
+    }
     check_count(file, t.faces.Extent(), "faces", options.limits);
     check_count(file, ctx.edges.Extent(), "edges", options.limits);
     check_count(file, ctx.vertices.Extent(), "vertices", options.limits);

@@ -242,6 +242,9 @@ Tessellation tessellate_brep(const Model& model, const TessellationOptions& opti
         t.stats.tolerance *= up;
         t.stats.brep.max_deviation *= up;
         t.stats.brep.max_edge_tolerance *= up;
+        t.stats.brep.bound_triangles *= up;
+        t.stats.brep.bound_chords *= up;
+        t.stats.max_error_bound *= up;
     }
     const BRepStats& st = t.stats.brep;
     if (st.edges_above_tolerance > 0)

@@ -221,10 +221,12 @@ double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<V
         u0 = std::min(u0, x[0]), u1 = std::max(u1, x[0]);
         v0 = std::min(v0, x[1]), v1 = std::max(v1, x[1]);
     }
-    // Corners a pcurve puts just outside the domain: the surface there is
-    // its clamped evaluation, bounded with the domain's edge.
-    u0 = std::max(u0, surface_.u_min()), u1 = std::min(u1, surface_.u_max());
-    v0 = std::max(v0, surface_.v_min()), v1 = std::min(v1, surface_.v_max());
+    // A corner outside the surface's domain (a pcurve past the surface's
+    // edge, which the tessellator extends) has no surface point to bound
+    // against: not certified.
+    if (u0 < surface_.u_min() || u1 > surface_.u_max() || v0 < surface_.v_min() ||
+        v1 > surface_.v_max())
+        return kInf;
     double corner = 0, wmax = 0, wmin = kInf;
     for (double w : surface_.weights) wmax = std::max(wmax, w), wmin = std::min(wmin, w);
     const double wratio = surface_.weights.empty() ? 1 : wmax / wmin;

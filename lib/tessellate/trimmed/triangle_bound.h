@@ -37,7 +37,8 @@ class TriangleBound {
     explicit TriangleBound(const BSplineSurface& s);
 
     // The bound for the triangle with (u,v) corners uv and mesh corners Q;
-    // +infinity where it cannot be certified (a discontinuous surface).
+    // +infinity where it cannot be certified (a discontinuous surface, a
+    // corner outside the surface's domain).
     double operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q) const;
 
   private:

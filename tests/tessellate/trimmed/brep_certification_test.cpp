@@ -14,6 +14,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 
 using namespace seamless;
 using namespace seamless::test;
@@ -28,7 +29,9 @@ TEST_CASE("trimmed faces: the certified bound holds on the hard cases, within 2 
         const Tessellation t = tessellate(c.model, o);
         const TriangleMesh& m = t.mesh;
         const double bound = t.stats.max_error_bound;
-        REQUIRE(std::isfinite(bound));
+        // A face whose loops pass its surface's domain is not certified.
+        const bool beyond = c.name.find("beyond") != std::string::npos;
+        CHECK(std::isfinite(bound) == !beyond);
         double measured = 0;
         for (int f = 0; f < m.triangle_count(); ++f)
             for (int k = 0; k <= 6; ++k)
@@ -46,6 +49,6 @@ TEST_CASE("trimmed faces: the certified bound holds on the hard cases, within 2 
         CHECK(t.stats.brep.max_deviation <= bound);
         bool rational = false;
         for (const BSplineSurface& s : c.model.surfaces) rational |= s.rational();
-        if (!rational) CHECK(bound <= 2 * D);
+        if (!rational && !beyond) CHECK(bound <= 2 * D);
     }
 }
