@@ -16,9 +16,9 @@
 namespace seamless {
 namespace {
 
-// Triangles per item of the mesh -> face pass: fixed, so that the sums are
-// the same for any thread count.
-constexpr int kTriangleBlock = 256;
+// Vertices or triangles per item of the mesh -> face pass: fixed, so that
+// the sums are the same for any thread count.
+constexpr int kBlock = 256;
 
 struct BRepSampled {
     std::vector<std::unique_ptr<FaceRegion>> regions; // per face
@@ -150,19 +150,19 @@ DeviationStats mesh_to_faces(const Model& model, const TriangleMesh& mesh,
     std::erase_if(
         bary, [](const std::array<double, 3>& w) { return w[0] == 1 || w[1] == 1 || w[2] == 1; });
     const int nv = mesh.vertex_count(), nt = mesh.triangle_count();
-    const int vertex_blocks = (nv + kTriangleBlock - 1) / kTriangleBlock;
-    const int blocks = vertex_blocks + (nt + kTriangleBlock - 1) / kTriangleBlock;
+    const int vertex_blocks = (nv + kBlock - 1) / kBlock;
+    const int blocks = vertex_blocks + (nt + kBlock - 1) / kBlock;
     std::vector<DeviationAccumulator> acc(blocks);
     parallel_chunks(blocks, o.threads, [&](int begin, int end) {
         std::vector<int> nearest;
         for (int b = begin; b < end; ++b) {
             if (b < vertex_blocks) {
-                for (int v = b * kTriangleBlock; v < std::min(nv, (b + 1) * kTriangleBlock); ++v)
+                for (int v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v)
                     if (used[v]) acc[b].add(distance_to_faces(q, mesh.positions[v], nearest));
                 continue;
             }
-            const int first = (b - vertex_blocks) * kTriangleBlock;
-            for (int f = first; f < std::min(nt, first + kTriangleBlock); ++f) {
+            const int first = (b - vertex_blocks) * kBlock;
+            for (int f = first; f < std::min(nt, first + kBlock); ++f) {
                 const auto& tri = mesh.triangles[f];
                 for (const auto& w : bary) {
                     const Vec3 x = w[0] * mesh.positions[tri[0]] + w[1] * mesh.positions[tri[1]] +
