@@ -104,12 +104,14 @@ double distance_to_faces(const FaceSearch& q, Vec3 x, std::vector<int>& nearest)
     int tried[8], n_tried = 0;
     const int max_tried = std::clamp(q.options.max_faces_tried, 0, 8);
     q.face_tree.nearest(x, q.options.face_neighbours, nearest);
-    for (const int i : nearest) {
-        const FaceSample& s = q.sampled.faces[i];
+    for (int k = 0; k < static_cast<int>(nearest.size()); ++k) {
+        const FaceSample& s = q.sampled.faces[nearest[k]];
         best = std::min(best, distance(s.point, x));
-        if (n_tried == max_tried || std::find(tried, tried + n_tried, s.face) != tried + n_tried)
+        const bool new_face = std::find(tried, tried + n_tried, s.face) == tried + n_tried;
+        if (new_face && n_tried < max_tried)
+            tried[n_tried++] = s.face;
+        else if (k >= q.options.newton_seeds)
             continue;
-        tried[n_tried++] = s.face;
         const BSplineSurface& surface = q.model.surfaces[brep.faces[s.face].surface];
         const SurfaceProjection p =
             project_to_surface(surface, x, s.u, s.v, q.options.newton_iterations);
