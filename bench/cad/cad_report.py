@@ -116,7 +116,8 @@ def summary(results, level):
     s = {"files": 0, "seamless_ok": 0, "occt_ok": 0, "occt_complete": 0, "seamless_pass": 0,
          "occt_pass": 0, "within_D": 0, "measured": 0, "ratios": [], "both": 0,
          "t1": [0.0, 0.0], "t2": [0.0, 0.0], "worst_dev": 0.0, "solids": 0,
-         "solids_pass": 0, "seamless_sound": 0, "occt_sound": 0}
+         "solids_pass": 0, "seamless_sound": 0, "occt_sound": 0, "occt_within_D": 0,
+         "occt_measured": 0, "occt_worst_dev": 0.0}
     for row in results["rows"]:
         s["files"] += 1
         entry = row.get("levels", {}).get(key)
@@ -139,6 +140,11 @@ def summary(results, level):
             s["measured"] += 1
             s["within_D"] += max(dev) <= 1
             s["worst_dev"] = max(s["worst_dev"], max(dev))
+        dev = deviation(occ, entry["D"]) if ok_occ else None
+        if dev:
+            s["occt_measured"] += 1
+            s["occt_within_D"] += max(dev) <= 1
+            s["occt_worst_dev"] = max(s["occt_worst_dev"], max(dev))
         if ok_ours and ok_occ and seconds(ours.get("run2")) and seconds(occ.get("run2")):
             s["both"] += 1
             s["ratios"].append(ours["run1"]["triangles"] / occ["run1"]["triangles"])
@@ -173,8 +179,11 @@ def summary_table(results):
         lambda s: "%d of %d" % (s["solids_pass"], s["solids"]))
     add("seamless within D, both ways (measured)",
         lambda s: "%d (%d), worst %s D" % (s["within_D"], s["measured"], num(s["worst_dev"], 3)))
+    add("OpenCASCADE within D, both ways (measured)",
+        lambda s: "%d (%d), worst %s D" % (s["occt_within_D"], s["occt_measured"],
+                                           num(s["occt_worst_dev"], 3)))
     add("files both meshed", lambda s: str(s["both"]))
-    add("triangles, geometric mean of the ratio", lambda s: num(s["geomean"]))
+    add("triangles, geometric mean of the ratio", lambda s: num(s["geomean"], 4))
     add("total time 1 thread: seamless / OpenCASCADE",
         lambda s: "%s / %s" % (num(s["t1"][0]), num(s["t1"][1])))
     add("total time 2 threads: seamless / OpenCASCADE",
@@ -251,7 +260,11 @@ def markdown(results):
         "mesh; mesh->face projects corners, edge midpoints and centroids of every triangle "
         "onto the trimmed faces. Both are sampled, lower estimates of the Hausdorff distance. "
         "A model without trimmed faces is measured against its whole surfaces. Files seamless "
-        "cannot read have no deviation.",
+        "cannot read have no deviation. Each sample's distance is to a point found on the "
+        "faces, so where Newton from the nearest face samples misses the closest point the "
+        "mesh->face figure is too high, by up to the sample spacing (2e-3 of the diagonal): "
+        "OpenCASCADE's mesh of pyocc_surf114.igs (folded C0 B-splines) measures 10.1 D at "
+        "D = 1e-4 x diagonal, 1.9 D with `brep_deviation --spacing 5e-4`.",
         "",
     ]
     table, sums = summary_table(results)

@@ -98,7 +98,7 @@ class Bench:
         os.makedirs(args.work, exist_ok=True)
 
     def out(self, path, level, tool, ext):
-        name = os.path.splitext(os.path.basename(path))[0]
+        name = os.path.basename(path)  # with its extension: torus.igs and torus.step both exist
         return os.path.join(self.args.work, "%s.%g.%s.%s" % (name, level, tool, ext))
 
     def occt_run(self, path, D, threads, output):
@@ -230,6 +230,27 @@ def machine():
             "load": open("/proc/loadavg").read().split()[:3]}
 
 
+def remeasure(bench, args):
+    """The deviations of the meshes a previous run left in WORK, measured again."""
+    results_path = os.path.join(args.work, "results.json")
+    with open(results_path) as f:
+        results = json.load(f)
+    for row in results["rows"]:
+        path = os.path.join(SOURCE, row["file"])
+        for key, entry in row.get("levels", {}).items():
+            for tool in ("seamless", "occt"):
+                side = entry[tool]
+                if side["run1"].get("ok"):
+                    print("==", row["name"], key, tool, flush=True)
+                    side["deviation"] = bench.measure(path, bench.out(path, float(key), tool, "off"))
+    with open(results_path, "w") as f:
+        json.dump(results, f, indent=1)
+    import cad_report
+    with open(args.out, "w") as f:
+        f.write(cad_report.markdown(results))
+    print("wrote", args.out)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--build", default=os.path.join(SOURCE, "build"))
@@ -241,6 +262,9 @@ def main():
     ap.add_argument("--levels", default=",".join(repr(x) for x in LEVELS))
     ap.add_argument("--report-only", action="store_true",
                     help="rewrite the report from WORK/results.json without running anything")
+    ap.add_argument("--deviation-only", action="store_true",
+                    help="measure the meshes of WORK/results.json's run again (after a change "
+                         "to brep_deviation) and rewrite the report")
     ap.add_argument("files", nargs="*", help="default: the whole corpus")
     args = ap.parse_args()
     args.levels = [float(x) for x in args.levels.split(",")]
@@ -256,6 +280,9 @@ def main():
         print("wrote", args.out)
         return
     bench = Bench(args)
+    if args.deviation_only:
+        remeasure(bench, args)
+        return
     for tool in (bench.seamless, bench.occt, bench.deviation):
         if not os.access(tool, os.X_OK):
             sys.exit("missing %s: build with -DSEAMLESS_BUILD_BENCH=ON" % tool)

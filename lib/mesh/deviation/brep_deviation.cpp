@@ -16,9 +16,9 @@
 namespace seamless {
 namespace {
 
-// Triangles per item of the mesh -> face pass: fixed, so that the sums are
-// the same for any thread count.
-constexpr int kTriangleBlock = 256;
+// Vertices or triangles per item of the mesh -> face pass: fixed, so that
+// the sums are the same for any thread count.
+constexpr int kBlock = 256;
 
 struct BRepSampled {
     std::vector<std::unique_ptr<FaceRegion>> regions; // per face
@@ -104,12 +104,14 @@ double distance_to_faces(const FaceSearch& q, Vec3 x, std::vector<int>& nearest)
     int tried[8], n_tried = 0;
     const int max_tried = std::clamp(q.options.max_faces_tried, 0, 8);
     q.face_tree.nearest(x, q.options.face_neighbours, nearest);
-    for (const int i : nearest) {
-        const FaceSample& s = q.sampled.faces[i];
+    for (int k = 0; k < static_cast<int>(nearest.size()); ++k) {
+        const FaceSample& s = q.sampled.faces[nearest[k]];
         best = std::min(best, distance(s.point, x));
-        if (n_tried == max_tried || std::find(tried, tried + n_tried, s.face) != tried + n_tried)
+        const bool new_face = std::find(tried, tried + n_tried, s.face) == tried + n_tried;
+        if (new_face && n_tried < max_tried)
+            tried[n_tried++] = s.face;
+        else if (k >= q.options.newton_seeds)
             continue;
-        tried[n_tried++] = s.face;
         const BSplineSurface& surface = q.model.surfaces[brep.faces[s.face].surface];
         const SurfaceProjection p =
             project_to_surface(surface, x, s.u, s.v, q.options.newton_iterations);
@@ -150,19 +152,19 @@ DeviationStats mesh_to_faces(const Model& model, const TriangleMesh& mesh,
     std::erase_if(
         bary, [](const std::array<double, 3>& w) { return w[0] == 1 || w[1] == 1 || w[2] == 1; });
     const int nv = mesh.vertex_count(), nt = mesh.triangle_count();
-    const int vertex_blocks = (nv + kTriangleBlock - 1) / kTriangleBlock;
-    const int blocks = vertex_blocks + (nt + kTriangleBlock - 1) / kTriangleBlock;
+    const int vertex_blocks = (nv + kBlock - 1) / kBlock;
+    const int blocks = vertex_blocks + (nt + kBlock - 1) / kBlock;
     std::vector<DeviationAccumulator> acc(blocks);
     parallel_chunks(blocks, o.threads, [&](int begin, int end) {
         std::vector<int> nearest;
         for (int b = begin; b < end; ++b) {
             if (b < vertex_blocks) {
-                for (int v = b * kTriangleBlock; v < std::min(nv, (b + 1) * kTriangleBlock); ++v)
+                for (int v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v)
                     if (used[v]) acc[b].add(distance_to_faces(q, mesh.positions[v], nearest));
                 continue;
             }
-            const int first = (b - vertex_blocks) * kTriangleBlock;
-            for (int f = first; f < std::min(nt, first + kTriangleBlock); ++f) {
+            const int first = (b - vertex_blocks) * kBlock;
+            for (int f = first; f < std::min(nt, first + kBlock); ++f) {
                 const auto& tri = mesh.triangles[f];
                 for (const auto& w : bary) {
                     const Vec3 x = w[0] * mesh.positions[tri[0]] + w[1] * mesh.positions[tri[1]] +

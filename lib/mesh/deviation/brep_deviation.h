@@ -16,7 +16,11 @@
 // Both maxima are sampled, lower estimates of the Hausdorff distance: a
 // point between face samples, or of a triangle between its sample points,
 // may lie farther. Each sample's distance is to a point found on the other
-// side, so it is at least the true distance of that sample.
+// side, so it is at least the true distance of that sample: where Newton
+// from the nearest samples misses the closest point, mesh -> face overstates
+// it, by up to the sample spacing (pyocc_surf114's folded B-splines, whose
+// grid crowds where a side collapses: 10 D at D = 1e-4 x diagonal, 1.9 D at
+// a quarter of the spacing; docs/results/cad.md).
 #pragma once
 
 #include <seamless/base/triangle_mesh.h>
@@ -37,8 +41,13 @@ struct BRepDeviationOptions {
     // Mesh -> face: barycentric points (i, j, k) / triangle_level, plus the
     // centroid; the corners (the mesh's vertices) once each.
     int triangle_level = 2;
-    int face_neighbours = 8; // nearest face samples, their faces projected onto
-    int max_faces_tried = 3; // distinct faces among them
+    // Newton projection from each of the newton_seeds nearest face samples
+    // (on a folded surface they may lie on different sheets) and from the
+    // nearest sample of each of up to max_faces_tried faces among the
+    // face_neighbours nearest.
+    int face_neighbours = 8;
+    int newton_seeds = 4;
+    int max_faces_tried = 3;
     // Nearest edge samples, each seeding a projection onto its curve (several:
     // the samples of the edges meeting at a vertex coincide there).
     int edge_neighbours = 4;
