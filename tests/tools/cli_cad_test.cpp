@@ -79,16 +79,16 @@ TEST_CASE("seamless convert writes a JSON model equal to the reader's model", "[
     CHECK_FALSE(std::filesystem::exists(dir / "out.obj"));
 }
 
-TEST_CASE("tire.iges: refused by name, --skip-trimmed and --untrimmed warn", "[cli][cad]") {
+TEST_CASE("tire.iges: read as a B-rep, --skip-trimmed and --untrimmed warn", "[cli][cad]") {
     auto dir = test::scratch_dir("cli-trimmed");
     const auto out = dir / "tire.json";
-    auto refused = test::run_cli("convert " + q(cad("tire.iges")) + " -o " + q(out));
-    CHECK(refused.status == 2);
-    CHECK(lines(refused.err) == 1);
-    CHECK_THAT(refused.err,
-               Catch::StartsWith("error: ") && Catch::Contains("tire.iges: 2 trimmed faces"));
-    CHECK(refused.out.empty());
-    CHECK_FALSE(std::filesystem::exists(out));
+    // By default its two trimmed faces make it a B-rep: a version-2 JSON model.
+    auto brep = test::run_cli("convert " + q(cad("tire.iges")) + " -o " + q(out));
+    CHECK(brep.status == 0);
+    CHECK_THAT(brep.out, Catch::Contains("47 B-rep faces"));
+    const Model read_back = load_model(out);
+    CHECK(read_back.brep.faces.size() == 47);
+    CHECK(read_back.surfaces.size() == 47);
 
     auto skipped = test::run_cli("convert --skip-trimmed " + q(cad("tire.iges")) + " -o " + q(out));
     CHECK(skipped.status == 0);

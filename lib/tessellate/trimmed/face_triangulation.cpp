@@ -15,6 +15,10 @@ namespace {
 
 // Refinement rounds: each inserts a point in every triangle still failing.
 constexpr int kRounds = 64;
+// A face whose refinement does not converge (seen on a torus fillet whose
+// carried pcurves stray from it) stops at this many triangles, the rest
+// counted above the tolerance, instead of filling the model's budget.
+constexpr size_t kMaxFaceTriangles = 20'000;
 
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
 // k), and three points between the centroid and the corners.
@@ -210,7 +214,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             verdicts[i] = hit != known.end() ? hit->second : known[key] = r.judge(tris[i]);
             if (verdicts[i].split) failing.push_back(static_cast<int>(i));
         }
-        if (round == kRounds || failing.empty()) break;
+        if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
         // The worst first: their points make room that their neighbours' need not.
         std::stable_sort(failing.begin(), failing.end(),
                          [&](int a, int b) { return verdicts[a].badness > verdicts[b].badness; });
