@@ -18,7 +18,7 @@ constexpr int kRounds = 64;
 // A face whose refinement does not converge (seen on a torus fillet whose
 // carried pcurves stray from it) stops at this many triangles, the rest
 // counted above the tolerance, instead of filling the model's budget.
-constexpr size_t kMaxFaceTriangles = 20'000;
+constexpr size_t kMaxFaceTriangles = 100'000;
 
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
 // k), and three points between the centroid and the corners.
