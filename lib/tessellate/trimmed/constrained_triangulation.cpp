@@ -104,6 +104,9 @@ bool ConstrainedTriangulation::build(const std::vector<Vec3>& points,
     } catch (const CGAL::Failure_exception&) {
         return false;
     }
+    // Loops whose points all lie on one line (a face collapsed in (u,v)) have
+    // no triangle: there is no face to mark, and nothing to triangulate.
+    if (cdt.dimension() < 2) return false;
     points_ = static_cast<int>(points.size());
     impl_->mark_domain();
     return true;

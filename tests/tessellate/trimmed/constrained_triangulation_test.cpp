@@ -86,3 +86,16 @@ TEST_CASE("constrained triangulation: crossing loops and a loop through a point 
     CHECK(d.build(coincide.points, coincide.keys, coincide.segments));
     CHECK(area(d, coincide.points) == Approx(16 - 1.5));
 }
+
+TEST_CASE("trimmed faces: a loop collapsed onto one line is refused, not marked") {
+    // A face whose (u,v) loop is flat (trj3_s1-al's crashed the marking).
+    Loops l;
+    l.add({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 0, 0}});
+    l.keys[3] = 5; // a distinct vertex on top of point 1: refused as a duplicate too
+    ConstrainedTriangulation cdt;
+    CHECK_FALSE(cdt.build(l.points, l.keys, l.segments));
+    Loops flat;
+    flat.add({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
+    ConstrainedTriangulation line;
+    CHECK_FALSE(line.build(flat.points, flat.keys, flat.segments));
+}
