@@ -239,7 +239,9 @@ double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<V
     // within a few ulps of the surface: their interpolation error differs
     // from the surface's by at most twice that.
     corner += 2 * rounding_allowance(16, magnitude_) * wratio;
-    const auto [A, B, C] = second_derivatives(u0, u1, v0, v1);
+    // Plain names, not a structured binding: the lambda below captures them.
+    const std::array<double, 3> d2 = second_derivatives(u0, u1, v0, v1);
+    const double A = d2[0], B = d2[1], C = d2[2];
     const double Ju = jumps_inside(u_, u0, u1), Jv = jumps_inside(v_, v0, v1);
     if (!std::isfinite(A + B + C + Ju + Jv)) return kInf;
     // In the scaling u' = u alpha, v' = v beta: S_u'u' = S_uu / alpha^2, ...
