@@ -55,9 +55,9 @@ template <class Work> void for_each_item(int n, int threads, Work work) {
 }
 
 // Each face's view of each edge, in face order.
-std::vector<std::vector<EdgeUse>> edge_uses(const Model& model) {
+std::vector<std::vector<EdgeOnFace>> edge_uses(const Model& model) {
     const BRep& brep = model.brep;
-    std::vector<std::vector<EdgeUse>> uses(brep.edges.size());
+    std::vector<std::vector<EdgeOnFace>> uses(brep.edges.size());
     for (const BRepFace& f : brep.faces) {
         const Vec3 inward = face_uv_centre(brep, f);
         const FaceSurface surface(model.surfaces[f.surface]);

@@ -30,7 +30,7 @@ constexpr int kMaxDepth = 24;
 struct Splitter {
     const BRep& brep;
     const BRepEdge& e;
-    const std::vector<EdgeUse>& uses;
+    const std::vector<EdgeOnFace>& uses;
     const EdgeCriteria& c;
     EdgePolyline& line;
 
@@ -62,7 +62,7 @@ struct Splitter {
                 c.angle)
                 return INFINITY;
         }
-        for (const EdgeUse& use : uses) {
+        for (const EdgeOnFace& use : uses) {
             const Vec3 ua = evaluate(*use.pcurve, a).point, ub = evaluate(*use.pcurve, b).point;
             for (double s : {0.25, 0.5, 0.75}) {
                 const Vec3 q = lerp(ua, ub, s);
@@ -103,7 +103,7 @@ struct Splitter {
 
 } // namespace
 
-EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeUse>& uses,
+EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeOnFace>& uses,
                              const EdgeCriteria& criteria) {
     const BRepEdge& e = brep.edges[edge];
     EdgePolyline line;
@@ -122,7 +122,7 @@ EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeU
 
 void halve_segments(const BRep& brep, int edge, EdgePolyline& line) {
     const BRepEdge& e = brep.edges[edge];
-    const std::vector<EdgeUse> none;
+    const std::vector<EdgeOnFace> none;
     const EdgeCriteria criteria;
     Splitter s{brep, e, none, criteria, line};
     std::vector<double> t{line.t.front()};

@@ -18,7 +18,7 @@
 namespace seamless {
 
 // One face's view of an edge.
-struct EdgeUse {
+struct EdgeOnFace {
     FaceSurface surface;
     const BSplineCurve* pcurve = nullptr;
     double tolerance = 0; // the edge's: how far S(pcurve) may be from the curve
@@ -40,7 +40,7 @@ struct EdgePolyline {
     bool limited = false;     // a segment stopped by the depth or point limit
 };
 
-EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeUse>& uses,
+EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeOnFace>& uses,
                              const EdgeCriteria& criteria);
 
 // Inserts the midpoint of every segment: a face whose loops did not

@@ -49,7 +49,7 @@ struct FaceDomain {
 FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& lines, int face);
 
 // Centre of the box of the face's pcurves' control points: a (u,v) point
-// towards the inside of a face from its poles (EdgeUse::inward).
+// towards the inside of a face from its poles (EdgeOnFace::inward).
 Vec3 face_uv_centre(const BRep& brep, const BRepFace& face);
 
 } // namespace seamless
