@@ -20,9 +20,10 @@ namespace {
 constexpr double kDomainSlack = 1e-6;
 // A pcurve may pass its surface's (u,v) domain by this fraction of the
 // domain's width: CAD files' pcurves end a little outside their surfaces
-// (1e-6 to 3e-6 of the width in the corpus, their tolerance), where the
-// surface is evaluated at the domain's edge (clamped).
-constexpr double kSurfaceSlack = 1e-3;
+// (most by their tolerance, one corpus face by 0.15 %). The tessellator
+// extends the surface by its tangent plane there, and the reader's gap check
+// measures the clamped surface against the edge's curve.
+constexpr double kSurfaceSlack = 1e-2;
 // Consecutive pcurves of a loop meet within this fraction of the diagonal of
 // their surface's (u,v) domain (or within the vertex's tolerance in 3D, below).
 constexpr double kLoopGap = 1e-6;
@@ -237,12 +238,27 @@ bool gap_closes(const BSplineSurface& s, const Vec3& a, const Vec3& z, const Vec
     return true;
 }
 
+// True when s's first and last control columns (in u) or rows (in v)
+// coincide: a periodic surface in its NURBS form, on which pcurves may cross
+// the seam (the tessellator wraps them).
+bool closed_in(const BSplineSurface& s, bool in_u) {
+    const double tiny = 1e-12 * control_box(s).max_extent();
+    const int n = in_u ? s.size_v : s.size_u;
+    for (int k = 0; k < n; ++k) {
+        const double gap = in_u ? distance(s.point(0, k), s.point(s.size_u - 1, k))
+                                : distance(s.point(k, 0), s.point(k, s.size_v - 1));
+        if (!(gap <= tiny)) return false;
+    }
+    return true;
+}
+
 // The (u,v) points of pcurve c over [t0, t1] against surface s's domain:
-// the first point outside it (with kSurfaceSlack), or nothing.
+// the first point outside it (with kSurfaceSlack; a closed direction is
+// not bounded), or nothing.
 bool leaves_domain(const BSplineCurve& c, double t0, double t1, const BSplineSurface& s,
                    Vec3& out) {
-    const double su = kSurfaceSlack * (s.u_max() - s.u_min());
-    const double sv = kSurfaceSlack * (s.v_max() - s.v_min());
+    const double su = closed_in(s, true) ? INFINITY : kSurfaceSlack * (s.u_max() - s.u_min());
+    const double sv = closed_in(s, false) ? INFINITY : kSurfaceSlack * (s.v_max() - s.v_min());
     for (int k = c.degree; k < c.size(); ++k) {
         const double a = std::max(t0, c.knots[k]), z = std::min(t1, c.knots[k + 1]);
         if (!(a <= z)) continue;

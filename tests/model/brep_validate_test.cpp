@@ -163,8 +163,8 @@ TEST_CASE("validate_brep refuses each broken face, loop, shell and solid rule by
          (c2 + ".pcurve"), "open in (u,v)"},
         {"pcurve outside the surface's domain",
          [](Model& m) {
-             m.brep.pcurves[0].points[1].y = -0.01;
-             m.brep.pcurves[1].points[0].y = -0.01;
+             m.brep.pcurves[0].points[1].y = -0.05;
+             m.brep.pcurves[1].points[0].y = -0.05;
              m.brep.vertices[1].tolerance = 1; // the chain closes in 3D
          },
          "brep.faces[0].loops[0].coedges[0].pcurve", "leaves the (u,v) domain [0, 1] x [0, 1]"},

@@ -59,7 +59,7 @@ class FaceReader {
     }
 
     void read(int k) {
-        const TopoDS_Face face = TopoDS::Face(ctx_.t.faces(k));
+        const TopoDS_Face face = TopoDS::Face(ctx_.faces(k));
         const std::string& name = ctx_.names[k - 1];
         name_ = &name;
         surface(face, name);
@@ -305,12 +305,12 @@ class FaceReader {
 } // namespace
 
 void read_faces(const FaceContext& ctx, Model& m) {
-    if (ctx.t.faces.Extent() > ctx.options.limits.max_surfaces)
+    if (ctx.faces.Extent() > ctx.options.limits.max_surfaces)
         throw InputError(ctx.file, "",
                          "more than " + std::to_string(ctx.options.limits.max_surfaces) +
                              " surfaces exceed the limit");
     FaceReader reader(ctx, m);
-    for (int k = 1; k <= ctx.t.faces.Extent(); ++k) {
+    for (int k = 1; k <= ctx.faces.Extent(); ++k) {
         try {
             reader.read(k);
         } catch (const Standard_Failure& e) { // named by its face

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <seamless/model/model.h>
-#include <seamless/model/step_iges/file_transfer.h>
 
 #include <TopTools_IndexedMapOfShape.hxx>
 
@@ -16,8 +15,8 @@
 namespace seamless::step_iges {
 
 struct FaceContext {
-    const TransferredFile& t;              // face k is t.faces(k + 1)
-    const std::vector<std::string>& names; // of t.faces, unique
+    const TopTools_IndexedMapOfShape& faces; // face k is faces(k + 1)
+    const std::vector<std::string>& names;   // of faces, unique
     const std::string& file;
     const ModelLoadOptions& options;
     // The shape's edges and vertices: their indices are the B-rep's, plus one.

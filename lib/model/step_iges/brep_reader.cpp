@@ -13,6 +13,7 @@
 #include <seamless/model/step_iges/brep_faces.h>
 #include <seamless/model/step_iges/brep_gaps.h>
 #include <seamless/model/step_iges/messages.h>
+#include <seamless/model/step_iges/sewing.h>
 
 #include <BRepClass3d.hxx>
 #include <BRepLib.hxx>
@@ -38,12 +39,12 @@ void check_count(const std::string& file, int n, const char* what, const ModelLi
 // Every face's shell and solid, in the transferred shape's order.
 class ShellReader {
   public:
-    ShellReader(const TransferredFile& t, const TopTools_IndexedMapOfShape& faces, BRep& brep)
-        : t_(t), faces_(faces), brep_(brep) {}
+    ShellReader(const TransferredFile& t, const SewnShape& s, BRep& brep)
+        : t_(t), shape_(s.shape), faces_(s.faces), brep_(brep) {}
 
     void read() {
         TopTools_IndexedMapOfShape solids;
-        TopExp::MapShapes(t_.shape, TopAbs_SOLID, solids);
+        TopExp::MapShapes(shape_, TopAbs_SOLID, solids);
         std::map<std::string, int> uses;
         for (int k = 1; k <= solids.Extent(); ++k) {
             BRepSolid solid;
@@ -60,7 +61,7 @@ class ShellReader {
             brep_.solids.push_back(std::move(solid));
         }
         // Shells outside solids.
-        for (TopExp_Explorer e(t_.shape, TopAbs_SHELL, TopAbs_SOLID); e.More(); e.Next())
+        for (TopExp_Explorer e(shape_, TopAbs_SHELL, TopAbs_SOLID); e.More(); e.Next())
             shell(e.Current());
     }
 
@@ -85,7 +86,8 @@ class ShellReader {
         return static_cast<int>(brep_.shells.size()) - 1;
     }
 
-    const TransferredFile& t_;
+    const TransferredFile& t_; // for the solids' names
+    const TopoDS_Shape& shape_;
     const TopTools_IndexedMapOfShape& faces_;
     BRep& brep_;
     TopTools_IndexedMapOfShape shells_;
@@ -98,21 +100,23 @@ Model read_brep(const TransferredFile& t, const std::vector<std::string>& names,
     // Edges whose pcurves do not follow their 3D curve's parameter are
     // reparametrised (OpenCASCADE's own fix; flagged edges are left alone).
     BRepLib::SameParameter(t.shape, 1e-7);
-    FaceContext ctx{t, names, file, options, {}, {}};
+    const SewnShape s = sew_free_faces(t, names, file);
+    FaceContext ctx{s.faces, s.names, file, options, {}, {}};
     // Edges and vertices of the faces only: a file's wireframe (AP242
     // annotations, construction curves) would be edges no face uses.
-    for (int k = 1; k <= t.faces.Extent(); ++k) {
-        TopExp::MapShapes(t.faces(k), TopAbs_EDGE, ctx.edges);
-        TopExp::MapShapes(t.faces(k), TopAbs_VERTEX, ctx.vertices);
+    for (int k = 1; k <= s.faces.Extent(); ++k) {
+        TopExp::MapShapes(s.faces(k), TopAbs_EDGE, ctx.edges);
+        TopExp::MapShapes(s.faces(k), TopAbs_VERTEX, ctx.vertices);
     }
-    check_count(file, t.faces.Extent(), "faces", options.limits);
+    check_count(file, s.faces.Extent(), "faces", options.limits);
     check_count(file, ctx.edges.Extent(), "edges", options.limits);
     check_count(file, ctx.vertices.Extent(), "vertices", options.limits);
 
     Model m;
     m.source = file;
+    if (!s.warning.empty()) m.warnings.push_back(s.warning);
     read_faces(ctx, m);
-    ShellReader(t, t.faces, m.brep).read();
+    ShellReader(t, s, m.brep).read();
     check_gaps(m, file);
     validate_brep(m, file, options.limits);
     return m;

@@ -5,6 +5,7 @@
 #include <seamless/tessellate/trimmed/brep_certification.h>
 #include <seamless/tessellate/trimmed/brep_mesh.h>
 #include <seamless/tessellate/trimmed/brep_tessellation.h>
+#include <seamless/tessellate/trimmed/constrained_triangulation.h>
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
 #include <seamless/tessellate/trimmed/face_domain.h>
 #include <seamless/tessellate/trimmed/face_triangulation.h>
@@ -19,9 +20,9 @@ namespace seamless {
 
 namespace {
 
-// Rounds of re-splitting the edges of faces whose loops do not triangulate;
-// each halves their segments.
-constexpr int kResplitRounds = 6;
+// Rounds of re-splitting the edges of faces whose loops do not triangulate
+// or whose refinement is stopped by their boundary; each halves segments.
+constexpr int kResplitRounds = 8;
 // OpenCASCADE's users' default angular deflection, radians.
 constexpr double kDefaultAngle = 0.5;
 // The default deviation as a fraction of the diagonal.
@@ -69,16 +70,6 @@ std::vector<std::vector<EdgeOnFace>> edge_uses(const Model& model) {
     return uses;
 }
 
-std::vector<int> edges_of(const BRep& brep, const std::vector<int>& faces) {
-    std::vector<int> edges;
-    for (int f : faces)
-        for (const BRepLoop& loop : brep.faces[f].loops)
-            for (const BRepCoedge& c : loop.coedges) edges.push_back(c.edge);
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    return edges;
-}
-
 std::vector<int> faces_of(const BRep& brep, const std::vector<int>& edges) {
     std::vector<char> hit(brep.edges.size(), 0);
     for (int e : edges) hit[e] = 1;
@@ -97,8 +88,76 @@ struct Faces {
     int rounds = 0, resplit_edges = 0;
 };
 
-// Triangulates every face; faces whose loops fail get their edges halved
-// (for every face using them) and are redone with those faces.
+// What a re-split round halves: per edge in `edges`, the listed segments
+// (halve_segments' list: empty for all of them).
+struct Resplit {
+    std::vector<int> edges;
+    std::vector<std::vector<int>> segments; // by edge
+};
+
+// Rounds after which loops that overlap along a length are left failed:
+// a two-edge loop of single chords overlaps until split, loops that run
+// along each other (pcurves collapsed onto one line) overlap for good.
+constexpr int kOverlapRounds = 2;
+
+// How far segment i's pcurve strays from its chord at the middle, in the
+// face's scaled domain.
+double sag(const BRep& brep, const std::vector<EdgePolyline>& lines, const FaceDomain& d, int i) {
+    const FaceDomain::Origin& o = d.origins[i];
+    const std::vector<double>& t = lines[o.edge].t;
+    const Vec3 m = evaluate(brep.pcurves[o.pcurve], 0.5 * (t[o.segment] + t[o.segment + 1])).point;
+    const Vec3 a = d.scaled[d.segments[i][0]], b = d.scaled[d.segments[i][1]];
+    return distance(Vec3{m.x * d.su, m.y * d.sv, 0}, 0.5 * (a + b));
+}
+
+// For faces whose loops failed: of each pair of boundary segments that
+// conflict, the one whose pcurve strays farther from its chord, or both
+// where they stray alike. Where two loops touch tangentially the chords
+// cross near the touching point however fine both are (the crossing is
+// self-similar), until the one straying more is split alone. A face whose
+// conflict is not between two segments (collapsed loops) gets all its
+// segments halved. For faces left above the limits, their encroached
+// segments.
+Resplit segments_to_halve(const BRep& brep, const std::vector<EdgePolyline>& lines,
+                          const std::vector<FaceMesh>& meshes, const std::vector<int>& faces,
+                          bool overlaps) {
+    Resplit r;
+    r.segments.resize(brep.edges.size());
+    std::vector<char> listed(brep.edges.size(), 0), all(brep.edges.size(), 0);
+    const auto list = [&](const FaceDomain& d, int i) {
+        r.segments[d.origins[i].edge].push_back(d.origins[i].segment);
+        listed[d.origins[i].edge] = 1;
+    };
+    for (int f : faces) {
+        const FaceDomain& d = meshes[f].domain;
+        for (int i : meshes[f].encroached) list(d, i);
+        if (!meshes[f].failed) continue;
+        const auto pairs = ConstrainedTriangulation::conflicts(d.scaled, d.keys, d.segments);
+        if (!overlaps &&
+            std::any_of(pairs.begin(), pairs.end(),
+                        [](const ConstrainedTriangulation::Conflict& c) { return c.overlap; }))
+            continue;
+        if (pairs.empty())
+            for (const auto& o : d.origins) all[o.edge] = 1;
+        for (const auto& c : pairs) {
+            const double sa = sag(brep, lines, d, c.a), sb = sag(brep, lines, d, c.b);
+            if (!(sb > sa)) list(d, c.a);
+            if (!(sa > sb)) list(d, c.b);
+        }
+    }
+    for (size_t e = 0; e < brep.edges.size(); ++e) {
+        std::vector<int>& h = r.segments[e];
+        if (all[e]) h.clear();
+        std::sort(h.begin(), h.end());
+        h.erase(std::unique(h.begin(), h.end()), h.end());
+        if (all[e] || listed[e]) r.edges.push_back(static_cast<int>(e));
+    }
+    return r;
+}
+
+// Triangulates every face; faces whose loops fail get the segments in
+// conflict halved (for every face using their edges) and are redone with
+// those faces.
 Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
                         const FaceCriteria& criteria, int threads) {
     const BRep& brep = model.brep;
@@ -110,16 +169,22 @@ Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
         for_each_item(static_cast<int>(pending.size()), threads, [&](int i) {
             r.meshes[pending[i]] = triangulate_face(model, lines, pending[i], criteria);
         });
-        r.failed.clear();
+        std::vector<int> redo;
         for (int f : pending)
-            if (r.meshes[f].failed) r.failed.push_back(f);
-        if (r.failed.empty() || r.rounds == kResplitRounds) break;
-        const std::vector<int> edges = edges_of(brep, r.failed);
-        r.resplit_edges += static_cast<int>(edges.size());
-        for_each_item(static_cast<int>(edges.size()), threads,
-                      [&](int i) { halve_segments(brep, edges[i], lines[edges[i]]); });
-        pending = faces_of(brep, edges);
+            if (r.meshes[f].failed || !r.meshes[f].encroached.empty()) redo.push_back(f);
+        if (redo.empty() || r.rounds == kResplitRounds) break;
+        const Resplit halve =
+            segments_to_halve(brep, lines, r.meshes, redo, r.rounds < kOverlapRounds);
+        r.resplit_edges += static_cast<int>(halve.edges.size());
+        for_each_item(static_cast<int>(halve.edges.size()), threads, [&](int i) {
+            const int e = halve.edges[i];
+            halve_segments(brep, e, lines[e], halve.segments[e]);
+        });
+        pending = faces_of(brep, halve.edges);
+        if (pending.empty()) break;
     }
+    for (size_t f = 0; f < r.meshes.size(); ++f)
+        if (r.meshes[f].failed) r.failed.push_back(static_cast<int>(f));
     return r;
 }
 

@@ -4,10 +4,13 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Intersections_2/Segment_2_Segment_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <deque>
+#include <tuple>
 
 namespace seamless {
 
@@ -60,6 +63,10 @@ Vec3 vec(const Point& p) {
 
 struct ConstrainedTriangulation::Impl {
     Cdt cdt;
+    // By point index: the start of each point location's walk, which from
+    // a near vertex takes a few steps instead of O(sqrt n) (CGAL's locate
+    // without a hint starts anywhere).
+    std::vector<Cdt::Vertex_handle> vertex;
 
     void mark_domain() {
         for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info().nesting = -1;
@@ -81,10 +88,14 @@ bool ConstrainedTriangulation::build(const std::vector<Vec3>& points,
                                      const std::vector<std::int64_t>& keys,
                                      const std::vector<std::array<int, 2>>& segments) {
     Cdt& cdt = impl_->cdt;
-    std::vector<Cdt::Vertex_handle> handle(points.size());
+    std::vector<Cdt::Vertex_handle>& handle = impl_->vertex;
+    handle.assign(points.size(), {});
     try {
         for (size_t i = 0; i < points.size(); ++i) {
-            handle[i] = cdt.insert(Point(points[i].x, points[i].y));
+            // Loop points come in order along their loops: the previous one
+            // is near.
+            const Cdt::Face_handle near = i > 0 ? handle[i - 1]->face() : Cdt::Face_handle();
+            handle[i] = cdt.insert(Point(points[i].x, points[i].y), near);
             int& index = handle[i]->info().index;
             if (index == -1)
                 index = static_cast<int>(i);
@@ -112,6 +123,66 @@ bool ConstrainedTriangulation::build(const std::vector<Vec3>& points,
     return true;
 }
 
+std::vector<ConstrainedTriangulation::Conflict>
+ConstrainedTriangulation::conflicts(const std::vector<Vec3>& points,
+                                    const std::vector<std::int64_t>& keys,
+                                    const std::vector<std::array<int, 2>>& segments) {
+    const K::Orientation_2 orientation;
+    const auto at = [&](int i) { return Point(points[i].x, points[i].y); };
+    // p on the closed segment ab (exact: collinear, then within the box).
+    const auto on = [&](const Point& p, const Point& a, const Point& b) {
+        return orientation(a, b, p) == CGAL::COLLINEAR &&
+               CGAL::collinear_are_ordered_along_line(a, p, b);
+    };
+    // 0: none; 1: a conflict; 2: an overlap along a length.
+    const auto conflict = [&](const std::array<int, 2>& s, const std::array<int, 2>& r) {
+        const Point a = at(s[0]), b = at(s[1]), c = at(r[0]), d = at(r[1]);
+        const bool collinear =
+            orientation(a, b, c) == CGAL::COLLINEAR && orientation(a, b, d) == CGAL::COLLINEAR;
+        // Ends at one place: one mesh vertex (the loops meet there) when the
+        // keys agree, else two vertices a triangulation cannot tell apart.
+        for (int i : s)
+            for (int j : r)
+                if (at(i) == at(j)) {
+                    if (keys[i] != keys[j]) return 1;
+                    // Sharing an end, they conflict only where one runs along
+                    // the other: its far end on the other segment.
+                    const Point far_s = at(i == s[0] ? s[1] : s[0]);
+                    const Point far_r = at(j == r[0] ? r[1] : r[0]);
+                    return on(far_s, c, d) || on(far_r, a, b) ? 2 : 0;
+                }
+        const K::Segment_2 ab(a, b), cd(c, d);
+        if (!CGAL::do_intersect(ab, cd)) return 0;
+        if (!collinear) return 1;
+        // Collinear: along a length, or touching at one point.
+        const auto x = CGAL::intersection(ab, cd);
+        return x && boost::get<K::Segment_2>(&*x) ? 2 : 1;
+    };
+    // A sweep along x over the segments' boxes.
+    std::vector<int> order(segments.size());
+    std::vector<double> lo(segments.size()), hi(segments.size());
+    for (size_t i = 0; i < segments.size(); ++i) {
+        order[i] = static_cast<int>(i);
+        lo[i] = std::min(points[segments[i][0]].x, points[segments[i][1]].x);
+        hi[i] = std::max(points[segments[i][0]].x, points[segments[i][1]].x);
+    }
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return lo[a] < lo[b]; });
+    std::vector<Conflict> out;
+    for (size_t i = 0; i < order.size(); ++i)
+        for (size_t j = i + 1; j < order.size() && lo[order[j]] <= hi[order[i]]; ++j) {
+            const auto& s = segments[order[i]];
+            const auto& r = segments[order[j]];
+            if (s[0] == s[1] || r[0] == r[1]) continue;
+            if (const int kind = conflict(s, r))
+                out.push_back(
+                    {std::min(order[i], order[j]), std::max(order[i], order[j]), kind == 2});
+        }
+    std::sort(out.begin(), out.end(), [](const Conflict& x, const Conflict& y) {
+        return std::tie(x.a, x.b) < std::tie(y.a, y.b);
+    });
+    return out;
+}
+
 void ConstrainedTriangulation::triangles(std::vector<DomainTriangle>& out) const {
     out.clear();
     for (auto f = impl_->cdt.finite_faces_begin(); f != impl_->cdt.finite_faces_end(); ++f) {
@@ -125,12 +196,12 @@ void ConstrainedTriangulation::triangles(std::vector<DomainTriangle>& out) const
     }
 }
 
-int ConstrainedTriangulation::insert(Vec3 p, double clearance) {
+int ConstrainedTriangulation::insert(Vec3 p, double clearance, int near) {
     Cdt& cdt = impl_->cdt;
     const Point q(p.x, p.y);
     Cdt::Locate_type type;
     int li = 0;
-    const Cdt::Face_handle f = cdt.locate(q, type, li);
+    const Cdt::Face_handle f = cdt.locate(q, type, li, impl_->vertex[near]->face());
     if (type != Cdt::FACE || cdt.is_infinite(f) || f->info().nesting % 2 != 1) return kOutside;
     for (int k = 0; k < 3; ++k)
         if (f->is_constrained(k) &&
@@ -142,6 +213,7 @@ int ConstrainedTriangulation::insert(Vec3 p, double clearance) {
     const int nesting = f->info().nesting;
     const Cdt::Vertex_handle v = cdt.insert(q, f);
     v->info().index = points_;
+    impl_->vertex.push_back(v);
     // Every face the insertion made is incident to the new vertex, and lies
     // in the region of the face it fell in (flips do not cross constraints).
     auto c = cdt.incident_faces(v), done = c;

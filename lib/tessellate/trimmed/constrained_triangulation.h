@@ -35,14 +35,26 @@ class ConstrainedTriangulation {
     // segment, a crack): the caller re-splits the edges.
     bool build(const std::vector<Vec3>& points, const std::vector<std::int64_t>& keys,
                const std::vector<std::array<int, 2>>& segments);
+    // Why build() failed: the pairs of segments (indices into `segments`)
+    // that cross, overlap, or where one passes through the other's end point,
+    // found with the same exact predicates; two points with different keys
+    // at one place count as their segments' conflict.
+    struct Conflict {
+        int a = 0, b = 0;     // a < b
+        bool overlap = false; // collinear along a length: splitting never parts them
+    };
+    static std::vector<Conflict> conflicts(const std::vector<Vec3>& points,
+                                           const std::vector<std::int64_t>& keys,
+                                           const std::vector<std::array<int, 2>>& segments);
     // The domain's triangles, in the triangulation's (deterministic) order.
     void triangles(std::vector<DomainTriangle>& out) const;
     // Inserts p as point size() when it lies strictly inside a domain
     // triangle at least `clearance` from its corners and from its boundary
     // edges; returns its index, else kOutside (outside the domain or too near
-    // a boundary edge) or kCrowded (too near a corner).
+    // a boundary edge) or kCrowded (too near a corner). The search for p's
+    // triangle starts at point `near` (any index: a near one is fast).
     static constexpr int kOutside = -1, kCrowded = -2;
-    int insert(Vec3 p, double clearance);
+    int insert(Vec3 p, double clearance, int near);
     int size() const { return points_; }
 
   private:

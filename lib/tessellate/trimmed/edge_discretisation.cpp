@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace seamless {
 
@@ -26,6 +27,8 @@ double angle_between(Vec3 a, Vec3 b) {
 namespace {
 
 constexpr int kMaxDepth = 24;
+// Tangents at a segment's ends are taken this fraction inside it.
+constexpr double kInside = 1e-9;
 
 struct Splitter {
     const BRep& brep;
@@ -56,7 +59,10 @@ struct Splitter {
             for (double knot : curve.knots)
                 if (knot > a && knot < b)
                     d = std::max(d, point_segment_distance(evaluate(curve, knot).point, pa, pb));
-            const Vec3 ta = evaluate(curve, a).tangent, tb = evaluate(curve, b).tangent,
+            // The ends' tangents from inside [a, b]: at a kink (a break of
+            // discretise_edge) the curve's other side turns away.
+            const double in = kInside * (b - a);
+            const Vec3 ta = evaluate(curve, a + in).tangent, tb = evaluate(curve, b - in).tangent,
                        tm = evaluate(curve, 0.5 * (a + b)).tangent;
             if (std::max({angle_between(ta, tm), angle_between(tm, tb), angle_between(ta, tb)}) >
                 c.angle)
@@ -70,11 +76,13 @@ struct Splitter {
                 d = std::max(d, point_segment_distance(use.surface.at(q).point, pa, pb) -
                                     use.tolerance);
             }
-            // The midpoint too: a closed edge's ends have one normal.
+            // The midpoint too: a closed edge's ends have one normal. Across
+            // a crease the normal jumps however short the segment.
+            const Vec3 um = evaluate(*use.pcurve, 0.5 * (a + b)).point;
+            if (use.surface.crosses_crease({ua, um, ub})) continue;
             const Vec3 na = unit_normal(use.surface, ua, use.inward),
                        nb = unit_normal(use.surface, ub, use.inward),
-                       nm = unit_normal(use.surface, evaluate(*use.pcurve, 0.5 * (a + b)).point,
-                                        use.inward);
+                       nm = unit_normal(use.surface, um, use.inward);
             if (std::max({angle_between(na, nm), angle_between(nm, nb), angle_between(na, nb)}) >
                 c.angle)
                 return INFINITY;
@@ -110,26 +118,47 @@ EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeO
     Splitter s{brep, e, uses, criteria, line};
     line.t.push_back(e.t0);
     line.points.push_back(s.point(e.t0));
-    // A closed edge needs three segments to bound anything.
+    // A closed edge needs three segments to bound anything; a curve only C0
+    // at a knot (a polyline's corner) turns there however short the chords,
+    // so its kinks are points of the polyline from the start.
+    std::vector<double> breaks;
     const int pieces = !e.degenerate() && e.start == e.end ? 4 : 1;
-    for (int k = 0; k < pieces; ++k) {
-        const double a = k == 0 ? e.t0 : e.t0 + (e.t1 - e.t0) * k / pieces;
-        const double b = k == pieces - 1 ? e.t1 : e.t0 + (e.t1 - e.t0) * (k + 1) / pieces;
-        s.split(a, b, 0);
+    for (int k = 1; k < pieces; ++k) breaks.push_back(e.t0 + (e.t1 - e.t0) * k / pieces);
+    if (!e.degenerate()) {
+        const BSplineCurve& curve = brep.curves[e.curve];
+        for (int i = curve.degree + 1; i < curve.size();) {
+            int j = i;
+            while (j < curve.size() && curve.knots[j] == curve.knots[i]) ++j;
+            if (j - i >= curve.degree && curve.knots[i] > e.t0 && curve.knots[i] < e.t1)
+                breaks.push_back(curve.knots[i]);
+            i = j;
+        }
+    }
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    breaks.push_back(e.t1);
+    double a = e.t0;
+    for (double b : breaks) {
+        if (b > a) s.split(a, b, 0);
+        a = std::max(a, b);
     }
     return line;
 }
 
-void halve_segments(const BRep& brep, int edge, EdgePolyline& line) {
+void halve_segments(const BRep& brep, int edge, EdgePolyline& line,
+                    const std::vector<int>& segments) {
     const BRepEdge& e = brep.edges[edge];
     const std::vector<EdgeOnFace> none;
     const EdgeCriteria criteria;
     Splitter s{brep, e, none, criteria, line};
     std::vector<double> t{line.t.front()};
     std::vector<Vec3> points{line.points.front()};
+    auto next = segments.begin();
     for (size_t k = 1; k < line.t.size(); ++k) {
+        const bool listed = next != segments.end() && *next == static_cast<int>(k - 1);
+        if (listed) ++next;
         const double m = 0.5 * (line.t[k - 1] + line.t[k]);
-        if (m > line.t[k - 1] && m < line.t[k]) {
+        if ((segments.empty() || listed) && m > line.t[k - 1] && m < line.t[k]) {
             t.push_back(m);
             points.push_back(s.point(m));
         }

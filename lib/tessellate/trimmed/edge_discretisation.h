@@ -43,9 +43,12 @@ struct EdgePolyline {
 EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeOnFace>& uses,
                              const EdgeCriteria& criteria);
 
-// Inserts the midpoint of every segment: a face whose loops did not
-// triangulate gets finer loops, and so does every other face of the edge.
-void halve_segments(const BRep& brep, int edge, EdgePolyline& line);
+// Inserts the midpoint of each listed segment (k: between points k and
+// k + 1; sorted), or of every segment when the list is empty: a face whose
+// loops did not triangulate gets finer loops, and so does every other face
+// of the edge.
+void halve_segments(const BRep& brep, int edge, EdgePolyline& line,
+                    const std::vector<int>& segments = {});
 
 // The unit normal dP/du x dP/dv at uv; where it vanishes (a pole, an apex),
 // the normal a small step towards `inward`; zero if that vanishes too.

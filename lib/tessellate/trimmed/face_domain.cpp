@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/tessellate/trimmed/face_domain.h>
 
 #include <algorithm>
@@ -41,6 +42,32 @@ void metric_scale(const FaceSurface& s, const Box3& box, double& su, double& sv)
     sv /= kGrid * kGrid;
 }
 
+// The pcurves of two edges meeting at a vertex end at (u,v) points a
+// rounding or the vertex's tolerance apart; left apart, the constrained
+// triangulation sees two points and the segments leaving them cross where
+// the loops meet at a small angle. Images of one vertex closer than its
+// tolerance (on the scaled domain, whose unit is about one model unit) or
+// than rounding are made one; a seam's or a pole's images are far apart.
+void merge_vertex_images(const BRep& brep, const Box3& box, FaceDomain& d) {
+    const double rounding =
+        1e-12 * norm(Vec3{(box.hi.x - box.lo.x) * d.su, (box.hi.y - box.lo.y) * d.sv, 0});
+    std::vector<std::pair<std::int64_t, int>> first; // key, first image
+    for (int i = 0; i < d.size(); ++i) {
+        if (!is_vertex_key(d.keys[i])) continue;
+        const double near =
+            std::max(rounding, brep.vertices[static_cast<size_t>(d.keys[i])].tolerance);
+        bool merged = false;
+        for (const auto& [key, j] : first)
+            if (key == d.keys[i] && distance(d.scaled[i], d.scaled[j]) <= near) {
+                d.uv[i] = d.uv[j];
+                d.scaled[i] = d.scaled[j];
+                merged = true;
+                break;
+            }
+        if (!merged) first.push_back({d.keys[i], i});
+    }
+}
+
 } // namespace
 
 int FaceDomain::add_interior(const FaceSurface& s, Vec3 at) {
@@ -75,11 +102,13 @@ FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& line
                 d.points.push_back(line.points[k]);
                 d.keys.push_back(boundary_key(brep, c.edge, k, line));
                 d.pole.push_back(pole);
+                d.origins.push_back({c.edge, c.reversed ? k - 1 : k, c.pcurve});
             }
         }
         const int last = d.size();
         for (int i = first; i < last; ++i) d.segments.push_back({i, i + 1 < last ? i + 1 : first});
     }
+    SEAMLESS_CHECK(d.origins.size() == d.segments.size(), "one origin per loop segment");
     d.boundary_points = d.size();
     // A pole's vertex where another edge meets it is the pole as well.
     std::vector<std::pair<std::int64_t, Vec3>> poles;
@@ -94,6 +123,7 @@ FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& line
     const FaceSurface s(model.surfaces[f.surface]);
     metric_scale(s, box, d.su, d.sv);
     for (const Vec3& p : d.uv) d.scaled.push_back({p.x * d.su, p.y * d.sv, 0});
+    merge_vertex_images(brep, box, d);
     return d;
 }
 

@@ -37,8 +37,14 @@ struct FaceDomain {
     std::vector<std::int64_t> keys;
     std::vector<Vec3> pole;
     std::vector<std::array<int, 2>> segments; // the loops' segments, point indices
-    double su = 1, sv = 1;                    // the metric's scale of u and v
-    double tolerance = 0;                     // largest tolerance of the face's edges
+    // Per segment: its edge, its segment of the edge's polyline (k: from
+    // point k to k + 1), which re-splitting halves, and the coedge's pcurve.
+    struct Origin {
+        int edge = 0, segment = 0, pcurve = 0;
+    };
+    std::vector<Origin> origins;
+    double su = 1, sv = 1; // the metric's scale of u and v
+    double tolerance = 0;  // largest tolerance of the face's edges
     int boundary_points = 0;
 
     int size() const { return static_cast<int>(uv.size()); }

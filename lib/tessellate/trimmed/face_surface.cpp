@@ -15,9 +15,38 @@ double wrap(double t, double lo, double hi) {
     return lo + (t - lo - period * std::floor((t - lo) / period));
 }
 
+// The interior knots of multiplicity >= degree.
+std::vector<double> creases(const std::vector<double>& knots, int degree, int size) {
+    std::vector<double> out;
+    for (int i = degree + 1; i < size;) {
+        int j = i;
+        while (j < size && knots[j] == knots[i]) ++j;
+        if (j - i >= degree) out.push_back(knots[i]);
+        i = j;
+    }
+    return out;
+}
+
+bool crosses(const std::vector<double>& creases, bool closed, double lo, double hi, double a,
+             double b, double c) {
+    const double from = std::min({a, b, c}), to = std::max({a, b, c});
+    const double period = hi - lo;
+    for (double k : creases)
+        for (int shift = closed ? -1 : 0; shift <= (closed ? 1 : 0); ++shift)
+            if (k + shift * period >= from && k + shift * period <= to) return true;
+    return false;
+}
+
 } // namespace
 
-FaceSurface::FaceSurface(const BSplineSurface& s) : s_(&s) {
+bool FaceSurface::crosses_crease(const std::array<Vec3, 3>& uv) const {
+    return crosses(creases_u_, closed_u_, s_->u_min(), s_->u_max(), uv[0].x, uv[1].x, uv[2].x) ||
+           crosses(creases_v_, closed_v_, s_->v_min(), s_->v_max(), uv[0].y, uv[1].y, uv[2].y);
+}
+
+FaceSurface::FaceSurface(const BSplineSurface& s)
+    : s_(&s), creases_u_(creases(s.knots_u, s.degree_u, s.size_u)),
+      creases_v_(creases(s.knots_v, s.degree_v, s.size_v)) {
     const double tiny = 1e-12 * control_box(s).max_extent();
     closed_u_ = closed_v_ = true;
     for (int j = 0; j < s.size_v; ++j)

@@ -6,9 +6,15 @@
 // beyond the domain, as CAD files write them) map to the surface instead of
 // being clamped to its edge; beyond an open side it is extended by its
 // tangent plane there (a plane's patch smaller than its face's loops).
+// Its creases are the interior knot lines where it is only C0 (a knot of
+// multiplicity >= the degree: a piecewise-planar extrusion's corners), across
+// which its normal jumps.
 #pragma once
 
 #include <seamless/spline/bspline_surface.h>
+
+#include <array>
+#include <vector>
 
 namespace seamless {
 
@@ -17,10 +23,16 @@ class FaceSurface {
     explicit FaceSurface(const BSplineSurface& s);
     SurfacePoint at(Vec3 uv) const;
     const BSplineSurface& surface() const { return *s_; }
+    // True when a crease passes through the box of the (u,v) points (a
+    // closed direction's creases repeat by its period).
+    bool crosses_crease(const std::array<Vec3, 3>& uv) const;
+    // True when uv lies on a crease, where the normal is one side's.
+    bool on_crease(Vec3 uv) const { return crosses_crease({uv, uv, uv}); }
 
   private:
     const BSplineSurface* s_;
     bool closed_u_ = false, closed_v_ = false;
+    std::vector<double> creases_u_, creases_v_;
 };
 
 } // namespace seamless

@@ -21,7 +21,9 @@ constexpr int kRounds = 64;
 constexpr size_t kMaxFaceTriangles = 100'000;
 
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
-// k), and three points between the centroid and the corners.
+// k), three points between the centroid and the corners, and three between
+// the centroid and the edge midpoints (where a boundary triangle's largest
+// deviation lies when its boundary side is long).
 struct Sample {
     double l[3];
     int edge; // -1: interior
@@ -32,7 +34,18 @@ constexpr Sample kSamples[] = {{{1.0 / 3, 1.0 / 3, 1.0 / 3}, -1},
                                {{0.5, 0.5, 0}, 2},
                                {{2.0 / 3, 1.0 / 6, 1.0 / 6}, -1},
                                {{1.0 / 6, 2.0 / 3, 1.0 / 6}, -1},
-                               {{1.0 / 6, 1.0 / 6, 2.0 / 3}, -1}};
+                               {{1.0 / 6, 1.0 / 6, 2.0 / 3}, -1},
+                               {{1.0 / 6, 5.0 / 12, 5.0 / 12}, -1},
+                               {{5.0 / 12, 1.0 / 6, 5.0 / 12}, -1},
+                               {{5.0 / 12, 5.0 / 12, 1.0 / 6}, -1}};
+
+// A triangle this thin (height over longest side) is a sliver.
+constexpr double kSliver = 1e-3;
+// A corner on a crease takes its normal this fraction of the way towards
+// the triangle's centre (on the triangle's side of the crease).
+constexpr double kNudge = 1e-6;
+// A triangle whose sides are within this many edge tolerances is small.
+constexpr double kTolerances = 8;
 
 // Samples can miss a triangle's largest deviation, which lies between them:
 // the refinement aims this much below D.
@@ -86,7 +99,8 @@ struct Refiner {
     const FaceCriteria& c;
     FaceDomain& d;
     Vec3 inward;
-    std::vector<Vec3> normal; // per point, computed once
+    std::vector<Vec3> normal;                   // per point, computed once
+    std::vector<std::array<int, 2>> encroached; // boundary sides, point indices
 
     Vec3 point_normal(int i) {
         while (static_cast<int>(normal.size()) <= i)
@@ -122,44 +136,86 @@ struct Refiner {
         const Vec3 centre = (uv[0] + uv[1] + uv[2]) / 3.0;
         // A triangle on the boundary keeps its segment's deviation, which the
         // edge's own samples held below kMargin * D but the face's may find a
-        // little above: up to D it is the edge's, not the triangle's.
-        const bool boundary = t.boundary[0] || t.boundary[1] || t.boundary[2];
+        // little above: up to D it is the edge's, not the triangle's. Not at
+        // a pole, where the (u,v) samples are distorted and miss more.
+        const bool pole =
+            d.pole[k[0]] != Vec3{} || d.pole[k[1]] != Vec3{} || d.pole[k[2]] != Vec3{};
+        const bool boundary = !pole && (t.boundary[0] || t.boundary[1] || t.boundary[2]);
         const double target = (boundary ? 1.0 : kMargin) * c.deviation + d.tolerance;
+        // At a pole the normal is the one facing the triangle; on a crease,
+        // that of the triangle's side.
+        const bool crease = s.crosses_crease(uv);
         for (int i = 0; i < 3; ++i)
-            v.normals[i] =
-                d.pole[k[i]] != Vec3{} ? unit_normal(s, uv[i], centre) : point_normal(k[i]);
+            v.normals[i] = d.pole[k[i]] != Vec3{} ? unit_normal(s, uv[i], centre)
+                           : crease && s.on_crease(uv[i])
+                               ? unit_normal(s, uv[i] + kNudge * (centre - uv[i]), centre)
+                               : point_normal(k[i]);
         for (const Sample& smp : kSamples) {
             // Boundary segments were measured with their edge.
             if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
             const Vec3 q = smp.l[0] * uv[0] + smp.l[1] * uv[1] + smp.l[2] * uv[2];
             // The surface's point against the flat triangle, as edges measure
             // against their chords; else the flat point against the surface.
+            // At a pole the (u,v) samples miss the flat triangle's farthest
+            // points (the meridians' chords), which are measured as well;
+            // across a crease the flat triangle cuts the fold, which only the
+            // surface's points see.
             double dev = point_triangle_distance(s.at(q).point, p[0], p[1], p[2]);
-            if (dev > target) {
-                const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
+            const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
+            if (pole || crease)
+                dev = std::max(dev, distance_to_surface(s, flat, q, 0));
+            else if (dev > target)
                 dev = std::min(dev, distance_to_surface(s, flat, q, target));
-            }
             v.deviation = std::max(v.deviation, dev);
         }
         // The corner normals within the angle of each other, and the flat
         // triangle's within it of theirs: no fold or needle on the surface.
+        // Across a crease the normal jumps however small the triangle, and a
+        // sliver between three boundary points (a boundary polyline's kink of
+        // a rounding) has no room for a point and no normal of its own: the
+        // deviation alone judges those.
         const Vec3 a = p[1] - p[0], b = p[2] - p[0], e = p[2] - p[1];
         const Vec3 n = cross(a, b);
-        double turn = 0;
-        for (int i = 0; i < 3; ++i)
-            turn = std::max({turn, angle_between(v.normals[i], v.normals[(i + 1) % 3]),
-                             angle_between(v.normals[i], n)});
         const double longest = std::max({dot(a, a), dot(b, b), dot(e, e)});
-        const bool flat = !(norm(n) > 1e-12 * longest);
+        const bool ear = k[0] < d.boundary_points && k[1] < d.boundary_points &&
+                         k[2] < d.boundary_points && !(norm(n) > kSliver * longest);
+        // Boundary points lie on their edge's curve, up to the edge's
+        // tolerance off the surface: a triangle within a few tolerances has
+        // a flat normal the tolerance tilts, and only its corners' count.
+        const bool small = longest <= kTolerances * kTolerances * d.tolerance * d.tolerance;
+        double turn = 0;
+        if (!ear && !crease)
+            for (int i = 0; i < 3; ++i)
+                turn = std::max({turn, angle_between(v.normals[i], v.normals[(i + 1) % 3]),
+                                 small ? 0.0 : angle_between(v.normals[i], n)});
+        const bool flat = !ear && !(norm(n) > 1e-12 * longest);
         v.badness = flat ? INFINITY : std::max(v.deviation / target, turn / c.angle);
         v.split = v.badness > 1;
         return v;
     }
 
+    // Records t's boundary sides but those along a pole's degenerate edge,
+    // which halving would not change (all its points are the pole); false
+    // when there are none.
+    bool record_encroached(const DomainTriangle& t) {
+        bool any = false;
+        for (int k = 0; k < 3; ++k) {
+            const int a = t.corners[(k + 1) % 3], b = t.corners[(k + 2) % 3];
+            if (!t.boundary[k] || (d.pole[a] != Vec3{} && d.pole[b] != Vec3{})) continue;
+            encroached.push_back({a, b});
+            any = true;
+        }
+        return any;
+    }
+
     // The point to insert for t: its circumcentre where that lies in the
     // domain clear of constraints (Delaunay: no earlier point lies inside its
     // circumcircle, so one nearer than half the radius was inserted for a
-    // neighbour in this round, and t is left to the next), else its centroid.
+    // neighbour in this round, and t is left to the next). Where it does not
+    // and t has a boundary side, that side is encroached (Ruppert): a point
+    // near it would make a sliver whose flat side is the segment's chord,
+    // which can stray from the surface (a curved edge on a narrow face), so
+    // the side is recorded for halving instead. Else t's centroid.
     bool insert_for(ConstrainedTriangulation& cdt, const DomainTriangle& t) {
         const Vec3 a = d.scaled[t.corners[0]], b = d.scaled[t.corners[1]],
                    c3 = d.scaled[t.corners[2]];
@@ -171,15 +227,31 @@ struct Refiner {
         const double ab2 = dot(ab, ab), ac2 = dot(ac, ac);
         const Vec3 offset{(ac.y * ab2 - ab.y * ac2) / den, (ab.x * ac2 - ac.x * ab2) / den, 0};
         Vec3 at = a + offset;
-        int index = cdt.insert(at, 0.75 * norm(offset));
+        int index = cdt.insert(at, 0.75 * norm(offset), t.corners[0]);
         if (index == ConstrainedTriangulation::kCrowded) return false;
-        if (index < 0) index = cdt.insert(at = (a + b + c3) / 3.0, 1e-3 * shortest);
+        if (index == ConstrainedTriangulation::kOutside && record_encroached(t)) return false;
+        if (index < 0) index = cdt.insert(at = (a + b + c3) / 3.0, 1e-3 * shortest, t.corners[0]);
         if (index < 0) return false;
         SEAMLESS_CHECK(index == d.size(), "the triangulation numbers inserted points in order");
         d.add_interior(s, at);
         return true;
     }
 };
+
+// The boundary segments (indices into d.segments) joining the given pairs of
+// points, sorted, each once.
+std::vector<int> segments_of(const FaceDomain& d, std::vector<std::array<int, 2>> sides) {
+    for (auto& s : sides) s = {std::min(s[0], s[1]), std::max(s[0], s[1])};
+    std::sort(sides.begin(), sides.end());
+    sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+    std::vector<int> out;
+    for (size_t i = 0; i < d.segments.size(); ++i) {
+        const std::array<int, 2> s{std::min(d.segments[i][0], d.segments[i][1]),
+                                   std::max(d.segments[i][0], d.segments[i][1])};
+        if (std::binary_search(sides.begin(), sides.end(), s)) out.push_back(static_cast<int>(i));
+    }
+    return out;
+}
 
 } // namespace
 
@@ -195,7 +267,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         out.failed = true;
         return out;
     }
-    Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}};
+    Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}, {}};
     std::vector<DomainTriangle> tris;
     std::vector<Verdict> verdicts;
     // A triangle the insertions left alone keeps its verdict.
@@ -223,6 +295,8 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (r.insert_for(cdt, tris[i])) inserted = true;
         if (!inserted) break;
     }
+    if (std::any_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.split; }))
+        out.encroached = segments_of(d, r.encroached);
     for (size_t i = 0; i < tris.size(); ++i) {
         const Verdict& v = verdicts[i];
         if (v.drop) continue;

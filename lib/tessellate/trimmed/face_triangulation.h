@@ -30,6 +30,11 @@ struct FaceMesh {
     double deviation = 0;                      // largest sampled deviation of the triangles
     int above_tolerance = 0;                   // triangles the limits left above D or the angle
     bool failed = false; // the loops did not triangulate (crossing or overlapping segments)
+    // When triangles stay above the limits: boundary segments (indices into
+    // domain.segments) whose triangles' circumcentres fell outside the face
+    // (Ruppert's encroachment): no interior point mends such a triangle,
+    // halving the segment does.
+    std::vector<int> encroached;
 };
 
 // Throws TriangleBudgetError (file `model.source`) past max_triangles.

@@ -4,6 +4,7 @@
 
 #include <seamless/tessellate/trimmed/brep_tessellation.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -347,6 +348,59 @@ BRepCase crossing_loops() {
             [](int, Vec3 p) { return plane_distance(p); }};
 }
 
+BRepCase tangent_hole() {
+    BRepBuilder b;
+    const int s = b.surface(kXY.surface(-0.1, 1.1, -0.1, 1.1), "plane");
+    // Both circles start at the top, where they touch with one tangent.
+    const int top = b.vertex({0.5, 0.95, 0});
+    const BSplineCurve rim = nurbs_circle({0.5, 0.5, 0}, 0.45, kY, -1 * kX);
+    b.new_loop();
+    b.use(b.edge(rim, top, top), false, kXY.pcurve(rim));
+    add_hole(b, kXY, {0.5, 0.75, 0}, 0.2, kY, -1 * kX, top);
+    b.face(s, false, "#tangent");
+    return {"disk with a tangent hole", b.finish(false, "tangent"), false, 0,
+            [](int, Vec3 p) { return plane_distance(p); }};
+}
+
+BRepCase bent_plate() {
+    BRepBuilder b;
+    // u in [0, 1] along x on z = 0, then u in [1, 2] up z at x = 1; v is y.
+    BSplineSurface bent;
+    bent.degree_u = bent.degree_v = 1;
+    bent.size_u = 3;
+    bent.size_v = 2;
+    bent.knots_u = {0, 0, 1, 2, 2};
+    bent.knots_v = {0, 0, 1, 1};
+    bent.points = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {1, 0, 1}, {1, 1, 1}};
+    const int s = b.surface(bent, "bent");
+    // The trimming loop [0.2, 1.8] x [0.2, 0.8]: its edges along u are bent
+    // lines with the crease's knot, the same parameter as their pcurves.
+    const auto bent_line = [](double y) {
+        BSplineCurve c = nurbs_line({0.2, y, 0}, {1, y, 0.8});
+        c.knots = {0, 0, 0.8, 1.6, 1.6};
+        c.points = {{0.2, y, 0}, {1, y, 0}, {1, y, 0.8}};
+        return c;
+    };
+    const int a = b.vertex({0.2, 0.2, 0}), c = b.vertex({1, 0.2, 0.8}), d = b.vertex({1, 0.8, 0.8}),
+              e = b.vertex({0.2, 0.8, 0});
+    const BSplineCurve low = bent_line(0.2), high = bent_line(0.8);
+    const BSplineCurve up = nurbs_line({1, 0.2, 0.8}, {1, 0.8, 0.8}),
+                       back = nurbs_line({0.2, 0.8, 0}, {0.2, 0.2, 0});
+    b.new_loop();
+    BSplineCurve pl = uv_line({0.2, 0.2, 0}, {1.8, 0.2, 0}, 1.6), ph = pl;
+    ph.points = {{0.2, 0.8, 0}, {1.8, 0.8, 0}};
+    b.use(b.edge(low, a, c), false, pl);
+    b.use(b.edge(up, c, d), false, uv_line({1.8, 0.2, 0}, {1.8, 0.8, 0}, 1));
+    b.use(b.edge(high, e, d), true, ph);
+    b.use(b.edge(back, e, a), false, uv_line({0.2, 0.8, 0}, {0.2, 0.2, 0}, 1));
+    b.face(s, false, "#bent");
+    return {"bent plate", b.finish(false, "bent"), false, 1, [](int, Vec3 p) {
+                const double flat = p.x <= 1 ? std::abs(p.z) : std::hypot(p.x - 1, p.z);
+                const double up = p.z >= 0 ? std::abs(p.x - 1) : std::hypot(p.x - 1, p.z);
+                return std::min(flat, up);
+            }};
+}
+
 std::vector<BRepCase> all_brep_cases() {
     std::vector<BRepCase> c;
     for (int h = 0; h <= 4; ++h) c.push_back(plate_with_holes(h));
@@ -365,6 +419,8 @@ std::vector<BRepCase> all_brep_cases() {
     c.push_back(torus_solid());
     c.push_back(freeform_face());
     c.push_back(sliver_face(1e-3));
+    c.push_back(tangent_hole());
+    c.push_back(bent_plate());
     return c;
 }
 

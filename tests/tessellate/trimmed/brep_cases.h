@@ -36,6 +36,8 @@ BRepCase torus_solid();
 BRepCase freeform_face(); // a bicubic graph z = f(x, y) trimmed to [0.2, 0.8]^2 by iso-curves
 BRepCase sliver_face(double height); // a lens between a line and a flat arc of this height
 BRepCase crossing_loops();           // a hole crossing the outer loop: cannot be triangulated
+BRepCase tangent_hole(); // a disk whose hole touches its rim tangentially, at the rim's vertex
+BRepCase bent_plate();   // one degree-1 surface folded by 90 degrees at a C0 knot (a crease)
 
 // Every case above with its default arguments and the scaled cylinders.
 std::vector<BRepCase> all_brep_cases();

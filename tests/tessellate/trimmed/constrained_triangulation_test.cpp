@@ -52,11 +52,11 @@ TEST_CASE("constrained triangulation: a square with a square hole", "[brep]") {
     REQUIRE(cdt.build(l.points, l.keys, l.segments));
     CHECK(area(cdt, l.points) == Approx(15));
     // Inside the hole and outside the square: refused; in the domain: taken.
-    CHECK(cdt.insert({1.5, 1.5, 0}, 0) == ConstrainedTriangulation::kOutside);
-    CHECK(cdt.insert({5, 5, 0}, 0) == ConstrainedTriangulation::kOutside);
-    CHECK(cdt.insert({3.2, 2.6, 0}, 0.1) == 8);
-    CHECK(cdt.insert({3.21, 2.6, 0}, 0.1) == ConstrainedTriangulation::kCrowded);
-    CHECK(cdt.insert({3.97, 2, 0}, 0.1) == ConstrainedTriangulation::kOutside); // near a side
+    CHECK(cdt.insert({1.5, 1.5, 0}, 0, 0) == ConstrainedTriangulation::kOutside);
+    CHECK(cdt.insert({5, 5, 0}, 0, 0) == ConstrainedTriangulation::kOutside);
+    CHECK(cdt.insert({3.2, 2.6, 0}, 0.1, 0) == 8);
+    CHECK(cdt.insert({3.21, 2.6, 0}, 0.1, 7) == ConstrainedTriangulation::kCrowded);
+    CHECK(cdt.insert({3.97, 2, 0}, 0.1, 3) == ConstrainedTriangulation::kOutside); // near a side
     std::vector<Vec3> points = l.points;
     points.push_back({3.2, 2.6, 0});
     CHECK(area(cdt, points) == Approx(15));
