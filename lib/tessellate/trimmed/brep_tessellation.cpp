@@ -99,6 +99,7 @@ struct Resplit {
 // a two-edge loop of single chords overlaps until split, loops that run
 // along each other (pcurves collapsed onto one line) overlap for good.
 constexpr int kOverlapRounds = 2;
+constexpr double kEven = 1.5;
 
 // How far segment i's pcurve strays from its chord at the middle, in the
 // face's scaled domain.
@@ -112,9 +113,11 @@ double sag(const BRep& brep, const std::vector<EdgePolyline>& lines, const FaceD
 
 // For faces whose loops failed: of each pair of boundary segments that
 // conflict, the one whose pcurve strays farther from its chord, or both
-// where they stray alike. Where two loops touch tangentially the chords
-// cross near the touching point however fine both are (the crossing is
-// self-similar), until the one straying more is split alone. A face whose
+// where they stray within a factor kEven of each other. Where two loops
+// touch tangentially at a vertex the chords leaving it cross however fine
+// both are (the crossing is self-similar), until the one straying more is
+// split alone: segments that meet are split alike only when they stray
+// exactly alike. A face whose
 // conflict is not between two segments (collapsed loops) gets all its
 // segments halved. For faces left above the limits, their encroached
 // segments.
@@ -141,8 +144,13 @@ Resplit segments_to_halve(const BRep& brep, const std::vector<EdgePolyline>& lin
             for (const auto& o : d.origins) all[o.edge] = 1;
         for (const auto& c : pairs) {
             const double sa = sag(brep, lines, d, c.a), sb = sag(brep, lines, d, c.b);
-            if (!(sb > sa)) list(d, c.a);
-            if (!(sa > sb)) list(d, c.b);
+            const auto& x = d.segments[c.a];
+            const auto& y = d.segments[c.b];
+            const bool meet = d.keys[x[0]] == d.keys[y[0]] || d.keys[x[0]] == d.keys[y[1]] ||
+                              d.keys[x[1]] == d.keys[y[0]] || d.keys[x[1]] == d.keys[y[1]];
+            const double even = meet ? 1 : kEven;
+            if (!(sb > even * sa)) list(d, c.a);
+            if (!(sa > even * sb)) list(d, c.b);
         }
     }
     for (size_t e = 0; e < brep.edges.size(); ++e) {

@@ -44,8 +44,10 @@ constexpr double kSliver = 1e-3;
 // A corner on a crease takes its normal this fraction of the way towards
 // the triangle's centre (on the triangle's side of the crease).
 constexpr double kNudge = 1e-6;
-// A triangle whose sides are within this many edge tolerances is small.
+// A triangle whose sides are within this many edge tolerances is small,
+// within this fraction of the deviation tiny.
 constexpr double kTolerances = 8;
+constexpr double kTiny = 1.0 / 8;
 
 // Samples can miss a triangle's largest deviation, which lies between them:
 // the refinement aims this much below D.
@@ -172,19 +174,25 @@ struct Refiner {
         // triangle's within it of theirs: no fold or needle on the surface.
         // Across a crease the normal jumps however small the triangle, and a
         // sliver between three boundary points (a boundary polyline's kink of
-        // a rounding) has no room for a point and no normal of its own: the
-        // deviation alone judges those.
+        // a rounding) or an ear of two boundary segments (the sag between a
+        // curved edge's polyline and its chord, standing off the surface) has
+        // no room for a point and no normal of its own: the deviation alone
+        // judges those.
         const Vec3 a = p[1] - p[0], b = p[2] - p[0], e = p[2] - p[1];
         const Vec3 n = cross(a, b);
         const double longest = std::max({dot(a, a), dot(b, b), dot(e, e)});
-        const bool ear = k[0] < d.boundary_points && k[1] < d.boundary_points &&
-                         k[2] < d.boundary_points && !(norm(n) > kSliver * longest);
+        const bool ear = (t.boundary[0] + t.boundary[1] + t.boundary[2] >= 2) ||
+                         (k[0] < d.boundary_points && k[1] < d.boundary_points &&
+                          k[2] < d.boundary_points && !(norm(n) > kSliver * longest));
         // Boundary points lie on their edge's curve, up to the edge's
         // tolerance off the surface: a triangle within a few tolerances has
-        // a flat normal the tolerance tilts, and only its corners' count.
-        const bool small = longest <= kTolerances * kTolerances * d.tolerance * d.tolerance;
+        // a flat normal the tolerance tilts, and only its corners' count. A
+        // triangle within a fraction of D is judged by its deviation alone:
+        // at an apex or a pole the normals turn however small it is.
+        const bool tiny = longest <= kTiny * kTiny * c.deviation * c.deviation;
+        const bool small = tiny || longest <= kTolerances * kTolerances * d.tolerance * d.tolerance;
         double turn = 0;
-        if (!ear && !crease)
+        if (!ear && !crease && !tiny)
             for (int i = 0; i < 3; ++i)
                 turn = std::max({turn, angle_between(v.normals[i], v.normals[(i + 1) % 3]),
                                  small ? 0.0 : angle_between(v.normals[i], n)});
