@@ -6,9 +6,13 @@
 namespace seamless {
 
 int find_span(int degree, int n, const std::vector<double>& knots, double t) {
-    for (int k = n - 1; k > degree; --k)
-        if (knots[k] <= t && knots[k] < knots[k + 1]) return k;
-    return degree;
+    // The last knot at or below t among t_(p+1) .. t_(n-1), by bisection
+    // (curves carried through parameter maps have thousands of spans), then
+    // down past empty spans at the top.
+    const auto first = knots.begin() + degree + 1, last = knots.begin() + n;
+    int k = static_cast<int>(std::upper_bound(first, last, t) - knots.begin()) - 1;
+    while (k > degree && !(knots[k] < knots[k + 1])) --k;
+    return k;
 }
 
 void basis_functions(int p, int k, const std::vector<double>& U, double t, double* N0, double* N1) {

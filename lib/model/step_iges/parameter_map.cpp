@@ -198,12 +198,21 @@ BSplineCurve ParameterMap::carry(const BSplineCurve& pc, double t0, double t1, d
     for (size_t k = 0; k + 1 < b.size(); ++k) {
         Handle(Geom2d_BSplineCurve) piece;
         double worst = 0;
-        for (int n = 4; n <= kMaxSamples; n *= 2) {
+        // The samples of each round are the last round's and its check
+        // points (the midpoints), mapped once.
+        std::vector<double> ts, mids;
+        std::vector<gp_Pnt2d> at, at_mids;
+        for (int i = 0; i <= 4; ++i) {
+            ts.push_back(i == 4 ? b[k + 1] : b[k] + (b[k + 1] - b[k]) * i / 4);
+            at.push_back(mapped(ts.back()));
+        }
+        for (;;) {
+            const int n = static_cast<int>(ts.size()) - 1;
             Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, n + 1);
             Handle(TColStd_HArray1OfReal) params = new TColStd_HArray1OfReal(1, n + 1);
             for (int i = 0; i <= n; ++i) {
-                params->SetValue(i + 1, i == n ? b[k + 1] : b[k] + (b[k + 1] - b[k]) * i / n);
-                points->SetValue(i + 1, mapped(params->Value(i + 1)));
+                params->SetValue(i + 1, ts[i]);
+                points->SetValue(i + 1, at[i]);
             }
             try {
                 Geom2dAPI_Interpolate interpolate(points, params, Standard_False, 1e-15);
@@ -214,11 +223,22 @@ BSplineCurve ParameterMap::carry(const BSplineCurve& pc, double t0, double t1, d
                 piece = line(points->Value(1), points->Value(n + 1), b[k], b[k + 1]);
             }
             worst = 0;
+            mids.clear();
+            at_mids.clear();
             for (int i = 0; i < n; ++i) {
-                const double t = b[k] + (b[k + 1] - b[k]) * (i + 0.5) / n;
-                worst = std::max(worst, piece->Value(t).Distance(mapped(t)));
+                mids.push_back(0.5 * (ts[i] + ts[i + 1]));
+                at_mids.push_back(mapped(mids.back()));
+                worst = std::max(worst, piece->Value(mids.back()).Distance(at_mids.back()));
             }
-            if (worst <= uv_tol) break;
+            if (worst <= uv_tol || 2 * n > kMaxSamples) break;
+            std::vector<double> ts2{ts[0]};
+            std::vector<gp_Pnt2d> at2{at[0]};
+            for (int i = 0; i < n; ++i) {
+                ts2.insert(ts2.end(), {mids[i], ts[i + 1]});
+                at2.insert(at2.end(), {at_mids[i], at[i + 1]});
+            }
+            ts = std::move(ts2);
+            at = std::move(at2);
         }
         error = std::max(error, worst);
         const ConvertedCurve c = convert_pcurve(piece, b[k], b[k + 1], uv_tol);
