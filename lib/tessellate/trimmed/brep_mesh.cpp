@@ -1,7 +1,57 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/tessellate/trimmed/brep_mesh.h>
 
+#include <algorithm>
+#include <map>
+
 namespace seamless {
+
+namespace {
+
+// Two faces meeting along an edge whose discretised pcurve bends into both
+// of them (in (u,v), by a rounding where re-splitting crowded its points)
+// each keep the ear of three consecutive edge points: the same triangle,
+// once each way round, a fin of no volume. Both go: the chord between the
+// ear's outer points then joins the faces' other triangles, the edge's
+// middle point is left unused, and the mesh stays closed and manifold.
+void remove_fins(TriangleMesh& m) {
+    std::map<std::array<int, 3>, std::vector<int>> by_corners;
+    for (int t = 0; t < m.triangle_count(); ++t) {
+        std::array<int, 3> key = m.triangles[t];
+        std::sort(key.begin(), key.end());
+        by_corners[key].push_back(t);
+    }
+    const auto opposite = [&](int a, int b) {
+        const auto& x = m.triangles[a];
+        const auto& y = m.triangles[b];
+        for (int r = 0; r < 3; ++r)
+            if (x[0] == y[r] && x[1] == y[(r + 2) % 3] && x[2] == y[(r + 1) % 3]) return true;
+        return false;
+    };
+    std::vector<char> drop(m.triangles.size(), 0);
+    bool any = false;
+    for (const auto& [key, list] : by_corners)
+        for (size_t i = 0; i < list.size(); ++i)
+            for (size_t j = i + 1; j < list.size() && !drop[list[i]]; ++j)
+                if (!drop[list[j]] && opposite(list[i], list[j]))
+                    drop[list[i]] = drop[list[j]] = 1, any = true;
+    if (!any) return;
+    size_t kept = 0;
+    for (size_t t = 0; t < drop.size(); ++t) {
+        if (drop[t]) continue;
+        m.triangles[kept] = m.triangles[t];
+        m.triangle_surface[kept] = m.triangle_surface[t];
+        m.corner_normals[kept] = m.corner_normals[t];
+        m.corner_uvs[kept] = m.corner_uvs[t];
+        ++kept;
+    }
+    m.triangles.resize(kept);
+    m.triangle_surface.resize(kept);
+    m.corner_normals.resize(kept);
+    m.corner_uvs.resize(kept);
+}
+
+} // namespace
 
 TriangleMesh brep_mesh(const Model& model, const std::vector<EdgePolyline>& lines,
                        const std::vector<FaceMesh>& meshes) {
@@ -44,6 +94,7 @@ TriangleMesh brep_mesh(const Model& model, const std::vector<EdgePolyline>& line
             m.corner_uvs.push_back(uv);
         }
     }
+    remove_fins(m);
     return m;
 }
 
