@@ -87,7 +87,9 @@ template <class OMesh> std::vector<int> vertex_numbers(const OMesh& om, Triangle
         for (auto v : om.vertices()) {
             const auto original = copies ? om.property(copy_of, v) : typename OMesh::VertexHandle();
             if (original.is_valid() != (pass == 1)) continue;
-            if (pass == 1 && index[original.idx()] >= 0) {
+            // A copy whose original is gone (deleted, or a stale handle) stays a vertex.
+            if (pass == 1 && original.idx() < static_cast<int>(index.size()) &&
+                index[original.idx()] >= 0) {
                 index[v.idx()] = index[original.idx()];
                 continue;
             }

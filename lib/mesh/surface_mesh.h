@@ -92,7 +92,9 @@ inline std::vector<int> vertex_numbers(const CgalSurfaceMesh& sm, TriangleMesh& 
         for (V v : sm.vertices()) {
             const V original = copies ? get(copy_of, v) : V();
             if (original.is_valid() != (pass == 1)) continue;
-            if (pass == 1 && index[std::size_t(original)] >= 0) {
+            // A copy whose original is gone (removed, or a stale index) stays a vertex.
+            if (pass == 1 && std::size_t(original) < index.size() &&
+                index[std::size_t(original)] >= 0) {
                 index[std::size_t(v)] = index[std::size_t(original)];
                 continue;
             }
