@@ -21,8 +21,9 @@ namespace py = pybind11;
 // views without a copy (the views keep this object alive), and where it came from.
 struct Mesh {
     TriangleMesh mesh;
-    std::string source; // the file read or the model tessellated; "" when built from arrays
-    std::string stats;  // tessellate's statistics as JSON ("" when not tessellated)
+    std::vector<int> face_id; // per triangle B-rep face, -1 unknown; empty without a B-rep
+    std::string source;       // the file read or the model tessellated; "" when built from arrays
+    std::string stats;        // tessellate's statistics as JSON ("" when not tessellated)
 };
 
 void bind_errors(py::module_& m);

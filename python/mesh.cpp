@@ -137,6 +137,16 @@ void bind_mesh_class(py::module_& m) {
                 });
             },
             "(m,) int32 source surface of each triangle (index into surface_names), or None")
+        .def_property_readonly(
+            "face_id",
+            [](py::object self) {
+                const std::vector<int>& ids = self.cast<const Mesh&>().face_id;
+                return optional_view(!ids.empty(), [&] {
+                    return readonly_view<std::int32_t>(ids.data(), {py::ssize_t(ids.size())}, self);
+                });
+            },
+            "(m,) int32 B-rep face of each triangle (-1 where not known), or None without a "
+            "B-rep")
         .def_property_readonly("surface_names", [](const Mesh& s) { return s.mesh.surface_names; })
         .def_property_readonly("source", [](const Mesh& s) { return s.source; })
         .def_property_readonly(

@@ -2,12 +2,20 @@
 """Figures of docs/results/batch.md: the batch's per-file overhead (many
 small files, one worker, against the same CLI calls in a plain loop; wall
 and CPU seconds) and its speed-up from 1 to 2 local workers on a corpus,
-with the speed-up an idle machine allows (the 1-worker run's per-file times
-scheduled largest first on 2 workers).
+with the speed-up an idle machine allows (the fastest 1-worker run's
+per-file wall and CPU seconds scheduled on 2 workers in the batch's order,
+largest file first, and longest job first).
 
-    PYTHONPATH=build/python /usr/bin/python3 python/bench/measure_batch.py [CORPUS] [SMALL_MODEL]
+    PYTHONPATH=build/python /usr/bin/python3 python/bench/measure_batch.py \
+        [--corpus DIR|LIST] [--small MODEL] [--time-limit S] [--repeat N] [--skip-overhead]
+        [--raw FILE.json]
+
+The speed-up runs alternate 1 and 2 workers --repeat times; each run's
+load average (1 minute) is printed beside it, and --raw keeps every run's
+per-file seconds.
 """
 
+import argparse
 import heapq
 import json
 import os
@@ -15,7 +23,6 @@ import pathlib
 import resource
 import shutil
 import subprocess
-import sys
 import tempfile
 import time
 
@@ -51,41 +58,93 @@ def overhead(model, n=200):
     return batch, plain
 
 
-def lpt_makespan(seconds, workers):
-    """Finish time of the jobs given largest first to whichever worker is free."""
+def list_makespan(seconds, workers):
+    """Finish time of the jobs, in this order, each given to whichever worker is free first."""
     loads = [0.0] * workers
-    for s in sorted(seconds, reverse=True):
+    for s in seconds:
         heapq.heappush(loads, heapq.heappop(loads) + s)
     return max(loads)
 
 
-def speedup(corpus):
-    times, per_file = {}, []
-    for workers in (1, 2):
-        with tempfile.TemporaryDirectory() as tmp:
-            start = time.monotonic()
-            summary = run_batch([corpus], tmp, workers=workers, check=True)
-            times[workers] = time.monotonic() - start
-            if workers == 1:
-                with open(os.path.join(tmp, "manifest.jsonl")) as f:
-                    per_file = [json.loads(line)["seconds"] for line in f]
-    return times, per_file, summary
+def lpt_makespan(seconds, workers):
+    """The same, the longest job first (longest-processing-time-first)."""
+    return list_makespan(sorted(seconds, reverse=True), workers)
+
+
+def one_run(corpus, workers, time_limit):
+    """(wall seconds, {input: (outcome, seconds)}, summary) of one batch over the corpus."""
+    with tempfile.TemporaryDirectory() as tmp:
+        start = time.monotonic()
+        summary = run_batch([corpus], tmp, workers=workers, check=True, time_limit=time_limit)
+        wall = time.monotonic() - start
+        with open(os.path.join(tmp, "manifest.jsonl")) as f:
+            files = {}
+            for line in f:
+                e = json.loads(line)
+                files[os.path.basename(e["input"])] = {
+                    k: e.get(k) for k in ("outcome", "size", "seconds", "cpu_seconds")}
+    return wall, files, summary
+
+
+def speedups(corpus, time_limit, repeat):
+    runs = []
+    for r in range(repeat):
+        for workers in (1, 2):
+            load = os.getloadavg()[0]
+            wall, files, summary = one_run(corpus, workers, time_limit)
+            runs.append({"workers": workers, "wall": wall, "load_before": load,
+                         "load_after": os.getloadavg()[0], "files": files,
+                         "outcomes": summary["outcomes"]})
+            print(f"run {r + 1}, {workers} worker(s): {wall:.2f} s, load {load:.2f} -> "
+                  f"{runs[-1]['load_after']:.2f}, outcomes {summary['outcomes']}", flush=True)
+    return runs
+
+
+def report_speedups(runs):
+    ones = [r for r in runs if r["workers"] == 1]
+    twos = [r for r in runs if r["workers"] == 2]
+    ratios = [a["wall"] / b["wall"] for a, b in zip(ones, twos)]
+    print("speed-ups (1-worker wall / 2-worker wall, pairwise): "
+          + ", ".join(f"{x:.2f}" for x in ratios))
+    best1, best2 = min(r["wall"] for r in ones), min(r["wall"] for r in twos)
+    print(f"best 1 worker {best1:.2f} s, best 2 workers {best2:.2f} s: {best1 / best2:.2f}")
+    files = min(ones, key=lambda r: r["wall"])["files"]
+    for key in ("seconds", "cpu_seconds"):
+        cost = {name: f[key] for name, f in files.items() if f[key] is not None}
+        if not cost:
+            continue
+        total = sum(cost.values())
+        by_size = [cost[n] for n in sorted(cost, key=lambda n: -files[n]["size"])]
+        print(f"per-file {key} of the best 1-worker run: sum {total:.2f}, longest "
+              f"{max(cost.values()):.2f}; 2 workers on an idle machine: largest file first "
+              f"(the batch's order) {total / list_makespan(by_size, 2):.2f}x, longest job "
+              f"first {total / lpt_makespan(list(cost.values()), 2):.2f}x")
+    slowest = sorted(files.items(), key=lambda kv: -kv[1]["seconds"])[:8]
+    for name, f in slowest:
+        print(f"  {f['seconds']:8.2f} s wall {f['cpu_seconds'] or 0:8.2f} s CPU "
+              f"{f['outcome']:10} {name}")
 
 
 def main():
-    corpus = sys.argv[1] if len(sys.argv) > 1 else str(ROOT.parent / "shared/models/cad-corpus")
-    small = sys.argv[2] if len(sys.argv) > 2 else str(ROOT / "data/models/bilinear.json")
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--corpus", default=str(ROOT.parent / "shared/models/cad-corpus"))
+    ap.add_argument("--small", default=str(ROOT / "data/models/bilinear.json"))
+    ap.add_argument("--time-limit", type=float, default=600)
+    ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("--skip-overhead", action="store_true")
+    ap.add_argument("--raw", help="write every run's figures here (JSON)")
+    a = ap.parse_args()
     print(f"load average before: {os.getloadavg()}")
-    batch, plain = overhead(small)
-    print("per file (wall, batch's own CPU, children's CPU), ms: "
-          f"batch {tuple(round(x * 1e3, 1) for x in batch)}, "
-          f"CLI loop {tuple(round(x * 1e3, 1) for x in plain)}")
-    times, per_file, summary = speedup(corpus)
-    print(f"corpus {corpus}: {summary['files']} files, outcomes {summary['outcomes']}")
-    total, longest = sum(per_file), max(per_file)
-    print(f"1 worker {times[1]:.2f} s (files {total:.2f} s, longest {longest:.2f} s), "
-          f"2 workers {times[2]:.2f} s: speed-up {times[1] / times[2]:.2f}; "
-          f"idle-machine bound {total / lpt_makespan(per_file, 2):.2f}")
+    if not a.skip_overhead:
+        batch, plain = overhead(a.small)
+        print("per file (wall, batch's own CPU, children's CPU), ms: "
+              f"batch {tuple(round(x * 1e3, 1) for x in batch)}, "
+              f"CLI loop {tuple(round(x * 1e3, 1) for x in plain)}", flush=True)
+    runs = speedups(a.corpus, a.time_limit, a.repeat)
+    report_speedups(runs)
+    if a.raw:
+        with open(a.raw, "w") as f:
+            json.dump(runs, f, indent=1)
     print(f"load average after: {os.getloadavg()}")
 
 

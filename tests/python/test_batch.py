@@ -71,6 +71,7 @@ def test_outcomes_are_contained_and_a_rerun_skips_the_good(tmp_path):
     for name in GOOD:
         entry = by_name[name]
         assert entry["outcome"] == "ok" and entry["figures"]["triangles"] > 0
+        assert entry["cpu_seconds"] > 0  # the file's processes' own, from os.wait4
         assert (out / "models" / f"{name}.glb").is_file()  # the input tree, mirrored
         assert json.loads((out / "models" / f"{name}.check.json").read_text())["passed"]
     assert not list(out.rglob("hang*")) and not list(out.rglob("crash*"))

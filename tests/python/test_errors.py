@@ -101,3 +101,9 @@ def test_wrong_types_are_type_errors():
         seamless.check(3.5)
     with pytest.raises(TypeError):
         seamless.tessellate(TEAPOT, tolerance="fine")
+    with pytest.raises(TypeError, match="threads"):
+        seamless.tessellate(TEAPOT, threads=1.5)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'tolerence'"):
+        seamless.tessellate(TEAPOT, tolerence=1e-3)
+    with pytest.raises(TypeError):  # keywords only after the model
+        seamless.tessellate(TEAPOT, 1e-3)

@@ -100,3 +100,24 @@ def test_mesh_from_arrays_writes_like_the_library(tmp_path):
     seamless.write_mesh(mesh, tmp_path / "a.off")
     seamless.write_mesh(copy, tmp_path / "b.off")
     assert (tmp_path / "a.off").read_bytes() == (tmp_path / "b.off").read_bytes()
+
+
+def test_face_id_of_a_brep_model():
+    model = seamless.load_model(DATA / "models" / "cad" / "b123d_M6-1x12-countersunk-screw.step")
+    mesh = seamless.tessellate(model, tolerance=model.d_max * 1e-3)
+    ids = mesh.face_id
+    assert ids.dtype == np.int32 and ids.shape == (len(mesh.triangles),)
+    assert not ids.flags.writeable and np.shares_memory(ids, mesh.face_id)
+    # A STEP file's faces each have a surface of their own: every face id
+    # known, and as many faces as surfaces meshed, one for one.
+    assert ids.min() >= 0 and ids.max() < model.brep["faces"]
+    pairs = set(zip(ids.tolist(), mesh.surface_id.tolist()))
+    assert len(pairs) == len(set(ids.tolist())) == len(set(mesh.surface_id.tolist()))
+    # Without a B-rep the faces are not known.
+    assert seamless.tessellate(TEAPOT).face_id is None
+
+
+def test_keywords_take_numpy_scalars():
+    a = seamless.tessellate(TEAPOT, tolerance=np.float64(1e-2), threads=np.int64(1))
+    b = seamless.tessellate(TEAPOT, tolerance=1e-2, threads=1)
+    assert np.array_equal(a.vertices, b.vertices)

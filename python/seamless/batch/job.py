@@ -44,6 +44,24 @@ def _limits(memory_bytes):
     return apply
 
 
+class _Process(subprocess.Popen):
+    """Popen that keeps the child's CPU seconds (user + system, os.wait4) when
+    it reaps it: what a file costs, whatever the machine's load (None if
+    another path reaped it). Popen reaps through _try_wait (CPython 3.8 to
+    3.13); os.wait4 is its waitpid with the rusage."""
+
+    cpu_seconds = None
+
+    def _try_wait(self, wait_flags):
+        try:
+            pid, status, usage = os.wait4(self.pid, wait_flags)
+        except ChildProcessError:  # reaped elsewhere (SIGCHLD ignored): status unknown
+            return self.pid, 0
+        if pid == self.pid:
+            self.cpu_seconds = usage.ru_utime + usage.ru_stime
+        return pid, status
+
+
 # The CLI processes running in this process's jobs, for stop_all().
 _running = set()
 _running_lock = threading.Lock()
@@ -59,12 +77,12 @@ def stop_all():
             proc.kill()
 
 
-def _run(command, time_limit, memory_bytes):
-    """(outcome, reason, stdout) of one CLI process."""
+def _run(command, time_limit, memory_bytes, cpu):
+    """(outcome, reason, stdout) of one CLI process; its CPU seconds added to cpu[0]."""
     with _running_lock:
         if _stopped.is_set():
             return CRASHED, "interrupted", ""
-        proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        proc = _Process(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                 text=True, errors="replace", preexec_fn=_limits(memory_bytes))
         _running.add(proc)
     try:
@@ -76,6 +94,10 @@ def _run(command, time_limit, memory_bytes):
     finally:
         with _running_lock:
             _running.discard(proc)
+        if proc.cpu_seconds is not None and cpu[0] is not None:
+            cpu[0] += proc.cpu_seconds
+        else:
+            cpu[0] = None
     lines = stderr.strip().splitlines()
     last = lines[-1] if lines else ""
     if last.startswith("error: "):
@@ -124,9 +146,9 @@ def outputs_of(out_dir, relative, fmt, check):
     return paths
 
 
-def _check(cli, mesh, report_path, time_limit, memory):
+def _check(cli, mesh, report_path, time_limit, memory, cpu):
     """(outcome, reason, figures) of `seamless check --json MESH`, its report written."""
-    outcome, reason, text = _run([cli, "check", "--json", mesh], time_limit, memory)
+    outcome, reason, text = _run([cli, "check", "--json", mesh], time_limit, memory, cpu)
     report = _parse_json(text) if outcome == OK else None
     if outcome != OK:
         return outcome, reason, {}
@@ -147,7 +169,8 @@ def _tessellate_and_check(input_path, outputs, options):
     command += ["--threads", str(options["threads"])]
     if options.get("tolerance"):
         command += ["--tolerance", repr(options["tolerance"])]
-    outcome, reason, _ = _run(command, limit, memory)
+    cpu = [0.0]  # the file's processes' CPU seconds; None when one of them was not measured
+    outcome, reason, _ = _run(command, limit, memory, cpu)
     stats = _read_json(outputs["stats"]) if outcome == OK else None
     if outcome == OK and stats is None:
         outcome, reason = CRASHED, "exit status 0 without its --stats file"
@@ -157,7 +180,8 @@ def _tessellate_and_check(input_path, outputs, options):
         figures["tessellate_seconds"] = stats.get("seconds")
         if "check" in outputs:
             left = max(limit - (time.monotonic() - start), 1)
-            outcome, reason, checked = _check(cli, outputs["mesh"], outputs["check"], left, memory)
+            outcome, reason, checked = _check(cli, outputs["mesh"], outputs["check"], left, memory,
+                                             cpu)
             figures.update(checked)
     done = {k: p for k, p in outputs.items() if outcome == OK and os.path.exists(p)}
     return {
@@ -167,6 +191,7 @@ def _tessellate_and_check(input_path, outputs, options):
         "outputs": done,
         "output_sha256": {k: file_hash(p) for k, p in done.items()},
         "seconds": round(time.monotonic() - start, 6),
+        "cpu_seconds": None if cpu[0] is None else round(cpu[0], 6),
         "host": socket.gethostname(),
     }
 
@@ -174,7 +199,8 @@ def _tessellate_and_check(input_path, outputs, options):
 def failed(reason):
     """The manifest fields of a file whose job itself failed."""
     return {"outcome": CRASHED, "reason": reason, "figures": {}, "outputs": {},
-            "output_sha256": {}, "seconds": 0, "host": socket.gethostname()}
+            "output_sha256": {}, "seconds": 0, "cpu_seconds": None,
+            "host": socket.gethostname()}
 
 
 def run_file(input_path, outputs, options):
