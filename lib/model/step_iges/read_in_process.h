@@ -16,4 +16,9 @@ namespace seamless::step_iges {
 // throws std::bad_alloc.
 Model read_step_iges_in_process(const std::filesystem::path& path, const ModelLoadOptions& options);
 
+// What every read needs done once: OpenCASCADE's printers off, its STEP and
+// IGES readers' tables built (the reader's server does it before forking its
+// workers, so that no read pays it).
+void prepare_reader();
+
 } // namespace seamless::step_iges

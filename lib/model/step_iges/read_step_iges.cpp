@@ -17,8 +17,10 @@
 #include <seamless/model/step_iges/surface_conversion.h>
 
 #include <BRep_Tool.hxx>
+#include <IGESControl_Reader.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
+#include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
 #include <Standard_OutOfMemory.hxx>
 #include <TopoDS.hxx>
@@ -186,6 +188,13 @@ Model read_with_occt(const std::filesystem::path& path, const ModelLoadOptions& 
 Model step_iges::read_step_iges_in_process(const std::filesystem::path& path,
                                            const ModelLoadOptions& options) {
     return read_with_occt(path, options);
+}
+
+void step_iges::prepare_reader() {
+    std::lock_guard<std::mutex> lock(occt_mutex());
+    silence_occt();
+    STEPControl_Reader step; // their constructors load the readers' protocols
+    IGESControl_Reader iges;
 }
 
 } // namespace seamless

@@ -1,21 +1,29 @@
 // SPDX-License-Identifier: MIT
-// seamless-step-iges: reads one STEP or IGES file with OpenCASCADE and answers
-// the library that ran it (step_iges_process.h: arguments, answer, exit
-// statuses). A crash here is this process's end, which the library reports as
-// one line naming the file; the caller's process goes on.
+// seamless-step-iges --server: the STEP/IGES reader's server
+// (step_iges_process.h). It loads OpenCASCADE and initialises its STEP and
+// IGES readers once, then forks a worker per request, which reads one file
+// and answers. A crash is the worker's end, which the library reports as one
+// line naming the file; the server and the caller go on. The server is
+// single-threaded, so fork is safe here.
 #include <seamless/base/error.h>
 #include <seamless/model/model_exchange.h>
 #include <seamless/model/step_iges/read_in_process.h>
 #include <seamless/model/step_iges_process.h>
 
+#include <poll.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/signalfd.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <map>
 #include <new>
 
 namespace {
@@ -44,43 +52,151 @@ void limit_self(std::uint64_t memory_bytes) {
     if (memory_bytes == 0 || kAddressSanitizer) return;
     rlimit as{};
     getrlimit(RLIMIT_AS, &as);
-    const rlim_t want = static_cast<rlim_t>(memory_bytes);
-    as.rlim_cur = std::min(as.rlim_max, want); // never above what the caller was given
+    as.rlim_cur =
+        std::min(as.rlim_max, static_cast<rlim_t>(memory_bytes)); // never above the caller's
     setrlimit(RLIMIT_AS, &as);
 }
 
-bool write_all(int fd, const std::string& s) {
-    size_t done = 0;
-    while (done < s.size()) {
-        const ssize_t n = write(fd, s.data() + done, s.size() - done);
+bool write_all(int fd, const void* data, size_t size) {
+    const char* p = static_cast<const char*>(data);
+    while (size > 0) {
+        const ssize_t n = write(fd, p, size);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) return false;
-        done += static_cast<size_t>(n);
+        p += n;
+        size -= static_cast<size_t>(n);
     }
     return true;
+}
+
+// The worker: reads `file` and answers on `answer`; never returns.
+[[noreturn]] void work(int answer, const seamless::ModelLoadOptions& options, const char* file) {
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    signal(SIGPIPE, SIG_DFL);
+    prctl(PR_SET_PDEATHSIG, SIGKILL); // the server's end is the worker's
+    limit_self(options.reader_memory_limit);
+    std::string out;
+    try {
+        out = "M" + seamless::write_model_exchange(
+                        seamless::step_iges::read_step_iges_in_process(file, options));
+    } catch (const seamless::InputError& e) {
+        out = proc::encode_error(e);
+    } catch (const std::bad_alloc&) {
+        _exit(proc::kOutOfMemory);
+    }
+    // _exit: OpenCASCADE's global tables need no tearing down.
+    _exit(write_all(answer, out.data(), out.size()) ? 0 : 1);
+}
+
+// One request: its payload and its two pipes' write ends (or -1).
+struct Request {
+    std::string options, file;
+    int answer = -1, status = -1;
+};
+
+// The next request; false at the end of the socket (the callers are gone).
+// A malformed one comes back with its pipes but without a file.
+bool receive(Request& r) {
+    static char buf[1 << 16];
+    alignas(cmsghdr) char control[CMSG_SPACE(2 * sizeof(int))];
+    iovec iov{buf, sizeof buf};
+    msghdr msg{};
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control;
+    msg.msg_controllen = sizeof control;
+    ssize_t n;
+    while ((n = recvmsg(proc::kServerFd, &msg, MSG_CMSG_CLOEXEC)) < 0 && errno == EINTR) {
+    }
+    if (n <= 0) return false;
+    r = Request{};
+    for (cmsghdr* c = CMSG_FIRSTHDR(&msg); c; c = CMSG_NXTHDR(&msg, c))
+        if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_RIGHTS &&
+            c->cmsg_len == CMSG_LEN(2 * sizeof(int))) {
+            int fds[2];
+            std::memcpy(fds, CMSG_DATA(c), sizeof fds);
+            r.answer = fds[0];
+            r.status = fds[1];
+        }
+    const std::string_view payload(buf, static_cast<size_t>(n));
+    const size_t zero = payload.find('\0');
+    if (zero != std::string_view::npos && !(msg.msg_flags & MSG_TRUNC)) {
+        r.options = payload.substr(0, zero);
+        r.file = payload.substr(zero + 1);
+    }
+    return true;
+}
+
+// Workers running: pid -> the write end of their status pipe.
+std::map<pid_t, int> workers;
+
+void start(const Request& r) {
+    seamless::ModelLoadOptions options;
+    const bool ok = r.answer >= 0 && !r.file.empty() && proc::decode_options(r.options, options);
+    const pid_t pid = ok ? fork() : -1;
+    if (pid == 0) {
+        close(proc::kServerFd);
+        work(r.answer, options, r.file.c_str());
+    }
+    if (r.answer >= 0) close(r.answer);
+    // Not started: the status pipe closes without a pid, which the library reports.
+    if (pid < 0 || !write_all(r.status, &pid, sizeof pid)) {
+        if (r.status >= 0) close(r.status);
+        return;
+    }
+    workers[pid] = r.status;
+}
+
+void reap() {
+    int status;
+    pid_t pid;
+    while ((pid = waitpid(-1, &status, WNOHANG)) > 0) {
+        const auto w = workers.find(pid);
+        if (w == workers.end()) continue;
+        write_all(w->second, &status, sizeof status); // a caller gone meanwhile: ignored
+        close(w->second);
+        workers.erase(w);
+    }
+}
+
+int serve() {
+    seamless::step_iges::prepare_reader();
+    signal(SIGPIPE, SIG_IGN); // a caller that has given up on a read
+    sigset_t chld;
+    sigemptyset(&chld);
+    sigaddset(&chld, SIGCHLD);
+    sigprocmask(SIG_BLOCK, &chld, nullptr);
+    const int children = signalfd(-1, &chld, SFD_CLOEXEC);
+    if (children < 0) return 1;
+    for (;;) {
+        pollfd p[2] = {{proc::kServerFd, POLLIN, 0}, {children, POLLIN, 0}};
+        if (poll(p, 2, -1) < 0) {
+            if (errno == EINTR) continue;
+            return 1;
+        }
+        if (p[1].revents & POLLIN) {
+            signalfd_siginfo info;
+            (void)!read(children, &info, sizeof info);
+            reap();
+        }
+        if (p[0].revents & (POLLIN | POLLHUP | POLLERR)) {
+            Request r;
+            if (!receive(r)) break;
+            start(r);
+        }
+    }
+    return 0; // the workers end with the server (PR_SET_PDEATHSIG)
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
-    // A caller killed meanwhile takes its reader along.
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    seamless::ModelLoadOptions options;
-    if (argc != 3 || !proc::decode_options(argv[1], options)) {
-        std::fprintf(stderr, "seamless-step-iges: run by libseamless to read a STEP or IGES "
-                             "file (lib/model/step_iges_process.h), not by hand\n");
+    if (argc != 2 || std::strcmp(argv[1], proc::kServerArgument) != 0) {
+        std::fprintf(stderr, "seamless-step-iges: the STEP/IGES reader libseamless runs "
+                             "(lib/model/step_iges_process.h), not a command\n");
         return proc::kUsage;
     }
-    limit_self(options.reader_memory_limit);
-    std::string answer;
-    try {
-        answer = "M" + seamless::write_model_exchange(
-                           seamless::step_iges::read_step_iges_in_process(argv[2], options));
-    } catch (const seamless::InputError& e) {
-        answer = proc::encode_error(e);
-    } catch (const std::bad_alloc&) {
-        _exit(proc::kOutOfMemory);
-    }
-    // _exit: OpenCASCADE's global tables need no tearing down.
-    _exit(write_all(proc::kAnswerFd, answer) ? 0 : 1);
+    _exit(serve());
 }
