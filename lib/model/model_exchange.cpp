@@ -8,6 +8,7 @@
 
 #include <seamless/base/error.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -74,8 +75,7 @@ class Writer {
 
 void Writer::brep(const BRep& b) {
     list(b.vertices, [&](const BRepVertex& v) {
-        points({v.point});
-        scalar(v.tolerance);
+        scalar(v.point.x), scalar(v.point.y), scalar(v.point.z), scalar(v.tolerance);
     });
     list(b.curves, [&](const BSplineCurve& c) { curve(c); });
     list(b.pcurves, [&](const BSplineCurve& c) { curve(c); });
@@ -227,7 +227,10 @@ void Reader::brep(Model& m) {
     b.vertices.resize(items("brep.vertices", 4 * sizeof(double)));
     for (std::size_t k = 0; k < b.vertices.size(); ++k) {
         const std::string f = at("brep.vertices", k);
-        b.vertices[k].point = points(f + ".point", 1).at(0);
+        Vec3& p = b.vertices[k].point;
+        p = {scalar<double>(f + ".point"), scalar<double>(f + ".point"),
+             scalar<double>(f + ".point")};
+        if (!is_finite(p)) fail(f + ".point", "not a finite point");
         b.vertices[k].tolerance = number(f + ".tolerance");
     }
     b.curves.resize(items("brep.curves", 28));

@@ -10,6 +10,7 @@
 #include <seamless/model/step_iges/read_in_process.h>
 #include <seamless/model/step_iges_process.h>
 
+#include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -42,10 +43,37 @@ constexpr bool kAddressSanitizer = false;
 constexpr bool kAddressSanitizer = false;
 #endif
 
+std::uint64_t memory_limit = 0; // bytes of address space; 0: none
+
+// The worker's address space, in bytes, from /proc/self/statm (with
+// async-signal-safe calls only: it is read in a signal handler).
+std::uint64_t address_space() {
+    const int fd = open("/proc/self/statm", O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return 0;
+    char buf[64];
+    const ssize_t n = read(fd, buf, sizeof buf);
+    close(fd);
+    std::uint64_t pages = 0;
+    for (ssize_t i = 0; i < n && buf[i] >= '0' && buf[i] <= '9'; ++i)
+        pages = 10 * pages + static_cast<std::uint64_t>(buf[i] - '0');
+    return pages * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
+}
+
+// OpenCASCADE does not check every allocation: past the memory limit it
+// dereferences the null pointer malloc returned (errno ENOMEM), or the stack
+// cannot grow. Such a crash is reported as running out of memory.
+void on_crash(int sig) {
+    const int e = errno;
+    if (e == ENOMEM || address_space() + (std::uint64_t(1) << 20) >= memory_limit)
+        _exit(proc::kOutOfMemory);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
 // No core file of a crash (the library reports it), and the memory limit:
 // past it allocations fail, which ends the read as kOutOfMemory. ASan's
 // shadow memory alone takes terabytes of address space, so its builds have
-// no limit.
+// no limit (and keep ASan's own crash reports).
 void limit_self(std::uint64_t memory_bytes) {
     const rlimit no_core{0, 0};
     setrlimit(RLIMIT_CORE, &no_core);
@@ -55,6 +83,15 @@ void limit_self(std::uint64_t memory_bytes) {
     as.rlim_cur =
         std::min(as.rlim_max, static_cast<rlim_t>(memory_bytes)); // never above the caller's
     setrlimit(RLIMIT_AS, &as);
+    memory_limit = as.rlim_cur;
+    // The handler's own stack: the crash may be the stack's failure to grow.
+    static char stack[1 << 16];
+    const stack_t alt{stack, 0, sizeof stack};
+    sigaltstack(&alt, nullptr);
+    struct sigaction a = {};
+    a.sa_handler = on_crash;
+    a.sa_flags = SA_ONSTACK;
+    for (int sig : {SIGSEGV, SIGBUS, SIGABRT}) sigaction(sig, &a, nullptr);
 }
 
 bool write_all(int fd, const void* data, size_t size) {
@@ -79,8 +116,9 @@ bool write_all(int fd, const void* data, size_t size) {
     limit_self(options.reader_memory_limit);
     std::string out;
     try {
-        out = "M" + seamless::write_model_exchange(
-                        seamless::step_iges::read_step_iges_in_process(file, options));
+        out = "M";
+        out += seamless::write_model_exchange(
+            seamless::step_iges::read_step_iges_in_process(file, options));
     } catch (const seamless::InputError& e) {
         out = proc::encode_error(e);
     } catch (const std::bad_alloc&) {
