@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 # ctest driver: install the build tree into a scratch prefix, build the consumer
-# project against it, run it on the teapot and expect 32 patches.
+# project against it, run it on the teapot and expect 32 patches, and on an
+# IGES torus, read by the installed STEP/IGES reader beside the library.
 set(prefix ${WORK_DIR}/prefix)
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix}
@@ -25,3 +26,13 @@ if(rc OR NOT out STREQUAL "32")
   message(FATAL_ERROR "consumer printed '${out}' (status ${rc}), expected 32")
 endif()
 message(STATUS "consumer built against the installed package reports ${out} patches")
+execute_process(COMMAND ${WORK_DIR}/build/consumer ${SOURCE_DIR}/data/models/cad/torus.igs
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(STRIP "${out}" out)
+if(rc OR NOT out MATCHES "^[1-9][0-9]*$")
+  message(FATAL_ERROR "consumer on torus.igs printed '${out}' (status ${rc}): ${err}")
+endif()
+if(NOT EXISTS ${prefix}/lib/seamless-step-iges AND NOT EXISTS ${prefix}/lib64/seamless-step-iges)
+  message(FATAL_ERROR "the STEP/IGES reader is not installed beside the library")
+endif()
+message(STATUS "the installed STEP/IGES reader read torus.igs: ${out} patches")
