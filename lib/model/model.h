@@ -80,7 +80,7 @@ struct ModelLoadOptions {
     // seconds (0: none), and bytes of address space (RLIMIT_AS; 0: none; not
     // applied in AddressSanitizer builds, whose shadow memory takes terabytes
     // of it). docs/formats.md, Limits.
-    double reader_time_limit = 600;
+    double reader_time_limit = 1800; // 3 times the slowest corpus file (occt_as1_motor.step)
     std::uint64_t reader_memory_limit = std::uint64_t(4) << 30; // 4 GiB
 };
 
