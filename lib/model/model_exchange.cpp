@@ -43,11 +43,13 @@ class Writer {
     }
     void doubles(const std::vector<double>& v) {
         count(v.size());
-        out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+        if (!v.empty())
+            out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
     }
     void points(const std::vector<Vec3>& v) {
         count(v.size());
-        out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(Vec3));
+        if (!v.empty())
+            out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(Vec3));
     }
     void ints(const std::vector<int>& v) {
         count(v.size());
@@ -175,7 +177,7 @@ class Reader {
     }
     std::vector<double> doubles(const Path& field, long long limit) {
         std::vector<double> v(count(field, limit, sizeof(double)));
-        std::memcpy(v.data(), in_.data() + at_, v.size() * sizeof(double));
+        if (!v.empty()) std::memcpy(v.data(), in_.data() + at_, v.size() * sizeof(double));
         at_ += v.size() * sizeof(double);
         return v;
     }
@@ -185,7 +187,8 @@ class Reader {
     }
     std::vector<Vec3> points(const Path& field, long long limit) {
         std::vector<Vec3> v(count(field, limit, 3 * sizeof(double)));
-        std::memcpy(static_cast<void*>(v.data()), in_.data() + at_, v.size() * sizeof(Vec3));
+        if (!v.empty())
+            std::memcpy(static_cast<void*>(v.data()), in_.data() + at_, v.size() * sizeof(Vec3));
         at_ += v.size() * sizeof(Vec3);
         return v;
     }
