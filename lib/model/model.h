@@ -75,6 +75,13 @@ struct ModelLoadOptions {
     // offset curves, degrees above kMaxDegree) are approximated within this
     // fraction of their bounding box diagonal; the error reached is reported.
     double approximation_tolerance = 1e-7;
+    // STEP and IGES are read in a process of their own (step_iges.h), stopped
+    // past these limits with one InputError naming the file: wall-clock
+    // seconds (0: none), and bytes of address space (RLIMIT_AS; 0: none; not
+    // applied in AddressSanitizer builds, whose shadow memory takes terabytes
+    // of it). docs/formats.md, Limits.
+    double reader_time_limit = 600; // far above the slowest corpus file (docs/formats.md, Limits)
+    std::uint64_t reader_memory_limit = std::uint64_t(4) << 30; // 4 GiB
 };
 
 // Reads a model by extension: .json, .bpt, .step/.stp, .iges/.igs (anything

@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: MIT
 # ctest driver: install the build tree into a scratch prefix, build the consumer
-# project against it, run it on the teapot and expect 32 patches, and its
-# OpenMesh round trip (the installed opt-in header) to give the mesh back.
+# project against it, run it on the teapot and expect 32 patches, its
+# OpenMesh round trip (the installed opt-in header) to give the mesh back,
+# and on an IGES torus, read by the installed STEP/IGES reader beside the
+# library.
 set(prefix ${WORK_DIR}/prefix)
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix}
@@ -32,3 +34,13 @@ expect_output(consumer 32)
 message(STATUS "consumer built against the installed package reports 32 patches")
 expect_output(consumer_openmesh same)
 message(STATUS "the installed <seamless/mesh/openmesh.h> round-trips the teapot")
+execute_process(COMMAND ${WORK_DIR}/build/consumer ${SOURCE_DIR}/data/models/cad/torus.igs
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(STRIP "${out}" out)
+if(rc OR NOT out MATCHES "^[1-9][0-9]*$")
+  message(FATAL_ERROR "consumer on torus.igs printed '${out}' (status ${rc}): ${err}")
+endif()
+if(NOT EXISTS ${prefix}/lib/seamless-step-iges AND NOT EXISTS ${prefix}/lib64/seamless-step-iges)
+  message(FATAL_ERROR "the STEP/IGES reader is not installed beside the library")
+endif()
+message(STATUS "the installed STEP/IGES reader read torus.igs: ${out} patches")

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // STEP and IGES through OpenCASCADE: this folder is the only code that
-// includes its headers, built as its own module (libseamless_step_iges.so)
-// that step_iges_loader.cpp loads when a STEP or IGES file is read, so that
-// other runs do not pay for mapping OpenCASCADE's libraries at start-up.
+// includes its headers, built into the reader's own executable
+// (seamless-step-iges, reader_main.cpp), which the library runs for each
+// STEP or IGES file (step_iges_loader.cpp): a crash in OpenCASCADE ends that
+// process, not the caller's, and other runs never map its libraries.
 // Each face of the transferred file (file_transfer.h) becomes one surface
 // (surface_conversion.h) unless it is trimmed (face_range.h).
 #include <seamless/model/step_iges.h>
@@ -12,12 +13,16 @@
 #include <seamless/model/step_iges/face_range.h>
 #include <seamless/model/step_iges/file_transfer.h>
 #include <seamless/model/step_iges/messages.h>
+#include <seamless/model/step_iges/read_in_process.h>
 #include <seamless/model/step_iges/surface_conversion.h>
 
 #include <BRep_Tool.hxx>
+#include <IGESControl_Reader.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
+#include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
+#include <Standard_OutOfMemory.hxx>
 #include <TopoDS.hxx>
 
 #include <algorithm>
@@ -168,6 +173,8 @@ Model read_with_occt(const std::filesystem::path& path, const ModelLoadOptions& 
     silence_occt();
     try {
         return read_locked(path, options);
+    } catch (const Standard_OutOfMemory&) {
+        throw std::bad_alloc(); // the reader's process reports it as such
     } catch (const Standard_Failure& e) {
         const char* what = e.GetMessageString();
         throw InputError(path.string(), "",
@@ -178,11 +185,16 @@ Model read_with_occt(const std::filesystem::path& path, const ModelLoadOptions& 
 
 } // namespace
 
-} // namespace seamless
-
-// The module's one entry (step_iges_loader.cpp finds it by this name).
-extern "C" __attribute__((visibility("default"))) void
-seamless_read_step_iges(const std::filesystem::path* path,
-                        const seamless::ModelLoadOptions* options, seamless::Model* out) {
-    *out = seamless::read_with_occt(*path, *options);
+Model step_iges::read_step_iges_in_process(const std::filesystem::path& path,
+                                           const ModelLoadOptions& options) {
+    return read_with_occt(path, options);
 }
+
+void step_iges::prepare_reader() {
+    std::lock_guard<std::mutex> lock(occt_mutex());
+    silence_occt();
+    STEPControl_Reader step; // their constructors load the readers' protocols
+    IGESControl_Reader iges;
+}
+
+} // namespace seamless

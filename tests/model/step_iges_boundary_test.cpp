@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+// STEP/IGES behind the process boundary (step_iges.h): OpenCASCADE's crashes
+// on the reproducers of ../shared/reproducers, a time-out and a memory
+// blow-up end as one InputError naming the file; the calling process never
+// maps OpenCASCADE; reads from several threads at once give the same models.
+#include "test_util.h"
+
+#include <seamless/base/error.h>
+#include <seamless/model/model_exchange.h>
+#include <seamless/model/step_iges.h>
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <thread>
+
+using namespace seamless;
+
+namespace {
+
+std::vector<std::filesystem::path> reproducers() {
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(test::shared_dir() / "reproducers"))
+        if (is_step_iges_extension(e.path().extension().string())) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::string error_of(const std::filesystem::path& file, const ModelLoadOptions& options = {}) {
+    try {
+        load_model(file, options);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+bool maps_opencascade() {
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line))
+        if (line.find("libTK") != std::string::npos) return true;
+    return false;
+}
+
+std::filesystem::path corpus(const std::string& name) {
+    return test::shared_dir() / "models" / "cad-corpus" / name;
+}
+
+} // namespace
+
+TEST_CASE("OpenCASCADE's crashes on the reproducers are one InputError naming the file",
+          "[model][step_iges][heavy]") {
+    const auto files = reproducers();
+    REQUIRE(files.size() >= 6);
+    for (const auto& f : files) {
+        INFO(f);
+        const std::string e = error_of(f);
+        CHECK_THAT(e, Catch::StartsWith(f.string() + ": OpenCASCADE crashed reading it (signal"));
+        CHECK(e.find('\n') == std::string::npos);
+    }
+    // This process read STEP and IGES without mapping OpenCASCADE.
+    CHECK_FALSE(maps_opencascade());
+}
+
+TEST_CASE("A good file read after a crash, and from four threads at once, gives one model",
+          "[model][step_iges][heavy]") {
+    const auto torus = test::model_path("cad/torus.igs");
+    const std::string expected = write_model_exchange(load_model(torus));
+    const auto crasher = reproducers().front();
+    std::vector<std::string> got(8);
+    std::vector<std::thread> threads;
+    for (size_t k = 0; k < got.size(); ++k)
+        threads.emplace_back([&, k] {
+            if (k % 2)
+                got[k] = error_of(crasher);
+            else
+                got[k] = write_model_exchange(load_model(torus));
+        });
+    for (auto& t : threads) t.join();
+    for (size_t k = 0; k < got.size(); ++k) {
+        INFO(k);
+        if (k % 2)
+            CHECK_THAT(got[k], Catch::Contains("OpenCASCADE crashed reading it"));
+        else
+            CHECK(got[k] == expected);
+    }
+    CHECK_FALSE(maps_opencascade());
+}
+
+TEST_CASE("The reader's time limit ends a long read with one line", "[model][step_iges][heavy]") {
+    ModelLoadOptions o;
+    o.reader_time_limit = 0.005;
+    const auto f = corpus("b123d_M6-1x12-countersunk-screw.step");
+    CHECK(error_of(f, o) == f.string() +
+                                ": OpenCASCADE took longer than the time limit of 0.005 s reading "
+                                "it (ModelLoadOptions::reader_time_limit)");
+    // The reader goes on serving: the same file within the default limit.
+    CHECK_FALSE(load_model(f).surfaces.empty());
+}
+
+TEST_CASE("The reader's memory limit ends a read that needs more with one line",
+          "[model][step_iges][heavy][native-allocator]") {
+    // Below what OpenCASCADE has mapped already: its first allocations fail.
+    ModelLoadOptions o;
+    o.reader_memory_limit = std::uint64_t(16) << 20;
+    const auto f = test::model_path("cad/torus.igs");
+    CHECK(error_of(f, o) == f.string() +
+                                ": OpenCASCADE ran out of memory reading it (the reader's limit is "
+                                "16 MiB, ModelLoadOptions::reader_memory_limit)");
+    CHECK_FALSE(load_model(f).surfaces.empty());
+}
+
+TEST_CASE("An InputError of the reader reaches the caller as it was raised",
+          "[model][step_iges][heavy]") {
+    const auto dir = test::scratch_dir("boundary-error");
+    const auto f = dir / "empty.step";
+    test::write_file(f, "ISO-10303-21;\nEND-ISO-10303-21;\n");
+    try {
+        load_model(f);
+        FAIL("read");
+    } catch (const InputError& e) {
+        CHECK(e.file() == f.string());
+        CHECK_THAT(e.message(), !Catch::Contains("crashed") && !Catch::Contains("malformed"));
+    }
+}
