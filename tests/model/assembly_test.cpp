@@ -16,48 +16,8 @@
 
 using namespace seamless;
 
-namespace {
-
-AffineMap translation(double x, double y, double z) {
-    AffineMap m;
-    m.m[3] = x;
-    m.m[7] = y;
-    m.m[11] = z;
-    return m;
-}
-
-// x -> -x: a mirroring placement.
-AffineMap mirror_x() {
-    AffineMap m;
-    m.m[0] = -1;
-    return m;
-}
-
-// Two parts, "plate" (the plate with a hole, red) and "tube" (a cylinder,
-// its face green), placed four times: the plate once at the root, the tube
-// twice beside it (once mirrored) and once in a sub-assembly moved up.
-Model small_assembly() {
-    Model m = test::plate_with_hole();
-    const Model tube = test::revolved(1);
-    append_brep(m.brep, tube.brep, static_cast<int>(m.surfaces.size()), AffineMap{});
-    m.surfaces.insert(m.surfaces.end(), tube.surfaces.begin(), tube.surfaces.end());
-    Assembly& a = m.assembly;
-    a.colours = {{1, 0, 0, 1}, {0, 1, 0, 0.5}};
-    a.parts = {{"plate", 1, 1, 0, 0}, {"tube", 1, 1, 0, -1}};
-    a.face_colours = {-1, 1};
-    a.nodes = {{"top", -1, AffineMap{}, -1},
-               {"plate-1", 0, AffineMap{}, 0},
-               {"tube-1", 0, translation(20, 0, 0), 1},
-               {"tube-2", 0, mirror_x(), 1},
-               {"sub", 0, translation(0, 0, 5), -1},
-               {"tube-3", 4, translation(0, 30, 0), 1}};
-    return m;
-}
-
-} // namespace
-
 TEST_CASE("Assemblies round-trip through version-2 JSON bit for bit", "[model][assembly]") {
-    const Model m = small_assembly();
+    const Model m = test::small_assembly();
     validate_assembly(m, "a.json");
     const std::string text = to_json(m);
     CHECK(text.find("\"assembly\"") != std::string::npos);
@@ -97,37 +57,37 @@ TEST_CASE("Assembly defects are refused with the field named", "[model][assembly
         }
         return false;
     };
-    Model m = small_assembly();
+    Model m = test::small_assembly();
     m.assembly.nodes[1].parent = 3; // a child before its parent
     CHECK(refused(m, "assembly.nodes[1].parent"));
-    m = small_assembly();
+    m = test::small_assembly();
     m.assembly.nodes[2].placement.m[5] = std::nan("");
     CHECK(refused(m, "assembly.nodes[2].placement[5]"));
-    m = small_assembly();
+    m = test::small_assembly();
     m.assembly.nodes[2].placement = AffineMap{{0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}};
     CHECK(refused(m, "assembly.nodes[2].placement"));
-    m = small_assembly();
+    m = test::small_assembly();
     m.assembly.nodes[2].part = 2;
     CHECK(refused(m, "assembly.nodes[2].part"));
-    m = small_assembly();
+    m = test::small_assembly();
     m.assembly.parts[0].face_count = 2;
     CHECK(refused(m, "assembly.parts"));
-    m = small_assembly();
+    m = test::small_assembly();
     m.assembly.colours[1].a = 1.5;
     CHECK(refused(m, "assembly.colours[1]"));
-    m = small_assembly();
+    m = test::small_assembly();
     m.assembly.face_colours = {0};
     CHECK(refused(m, "assembly.face_colours"));
-    m = small_assembly();
+    m = test::small_assembly();
     m.assembly.face_colours[1] = 7;
     CHECK(refused(m, "assembly.face_colours[1]"));
-    m = small_assembly();
+    m = test::small_assembly();
     m.brep.shells[0].faces = {1}; // the plate's shell uses the tube's face
     CHECK(refused(m, "assembly.parts[0]"));
 }
 
 TEST_CASE("Assembly JSON defects are refused with the field named", "[model][assembly]") {
-    std::string text = to_json(small_assembly());
+    std::string text = to_json(test::small_assembly());
     const auto refused = [](const std::string& t, const std::string& field) {
         try {
             parse_model_json(t, "a.json");
@@ -152,7 +112,7 @@ TEST_CASE("Assembly JSON defects are refused with the field named", "[model][ass
 
 TEST_CASE("Flattening places every instance: copies mapped, names unique, colours resolved",
           "[model][assembly]") {
-    const Model m = small_assembly();
+    const Model m = test::small_assembly();
     const Model flat = flatten_assembly(m);
     REQUIRE(flat.brep.faces.size() == 4); // one plate and three tubes
     CHECK(flat.surfaces.size() == 4);
@@ -183,7 +143,7 @@ TEST_CASE("Flattening places every instance: copies mapped, names unique, colour
 TEST_CASE("load_model flattens an assembly unless asked to keep it", "[model][assembly]") {
     const std::filesystem::path dir = test::scratch_dir("assembly_load");
     const std::filesystem::path file = dir / "a.json";
-    test::write_file(file, to_json(small_assembly()));
+    test::write_file(file, to_json(test::small_assembly()));
     const Model flat = load_model(file);
     CHECK(flat.brep.faces.size() == 4);
     CHECK(!flat.assembly.has_tree());
