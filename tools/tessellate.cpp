@@ -141,7 +141,9 @@ int run_tessellate(const TessellateArgs& args) {
     keep_freed_memory(); // the passes reuse each other's pages (huge_pages.h)
     const MeshFormat format = mesh_format(std::filesystem::path(args.out));
     ModelLoadOptions load = args.load;
-    load.keep_assembly = (format == MeshFormat::gltf || format == MeshFormat::glb) && !args.flatten;
+    const bool structured =
+        (format == MeshFormat::gltf || format == MeshFormat::glb) && !args.flatten;
+    load.keep_assembly = structured;
     const Model m = [&] {
         const WorkersWarmUp warm_up(args.threads); // while the model is read
         return load_model(args.model, load);
@@ -164,7 +166,7 @@ int run_tessellate(const TessellateArgs& args) {
     }();
     bar.finish();
     for (const std::string& w : t.stats.brep.warnings) std::cerr << "warning: " << w << "\n";
-    if (tree)
+    if (structured && !m.assembly.empty() && !m.brep.empty())
         write_mesh_assembly(files.staging(0), t.mesh, m);
     else
         write_mesh(files.staging(0), t.mesh);

@@ -27,7 +27,8 @@ void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, boo
 // that places the part; one node per assembly node, named as it and placed
 // by its matrix; one material per colour (PBR metallic-roughness: the
 // colour, linearised, as baseColorFactor, its alpha blended). Throws
-// InputError naming `name` on failure.
+// InputError naming `name` on failure. A B-rep model with colours and no
+// tree is written as one part placed once.
 void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
                          const Model& model, bool binary, const std::string& name);
 

@@ -218,10 +218,21 @@ void finish_and_write(tinygltf::Model& model, const std::filesystem::path& path,
         throw InputError(name, "", "cannot write glTF file");
 }
 
-} // namespace
+// A model with colours but no tree as one part placed once.
+Model one_part(const Model& m, const std::string& name) {
+    Model one = m;
+    AssemblyPart part;
+    part.name = std::filesystem::path(m.source.empty() ? name : m.source).stem().string();
+    part.face_count = static_cast<int>(m.brep.faces.size());
+    part.shell_count = static_cast<int>(m.brep.shells.size());
+    part.solid_count = static_cast<int>(m.brep.solids.size());
+    one.assembly.parts = {part};
+    one.assembly.nodes = {{part.name, -1, AffineMap{}, 0}};
+    return one;
+}
 
-void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
-                         const Model& m, bool binary, const std::string& name) {
+void write_tree(const std::filesystem::path& path, const TriangleMesh& mesh, const Model& m,
+                bool binary, const std::string& name) {
     const Assembly& a = m.assembly;
     const size_t nf = mesh.triangles.size();
     const CornerData has{mesh.corner_normals.size() == nf && nf > 0,
@@ -258,6 +269,16 @@ void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& 
     }
     model.scenes.push_back(scene);
     finish_and_write(model, path, binary, name);
+}
+
+} // namespace
+
+void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
+                         const Model& m, bool binary, const std::string& name) {
+    if (m.assembly.has_tree())
+        write_tree(path, mesh, m, binary, name);
+    else
+        write_tree(path, mesh, one_part(m, name), binary, name);
 }
 
 void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, bool binary,

@@ -97,3 +97,17 @@ TEST_CASE("The corpus assemblies as glTF: every instance a node sharing its part
         CHECK(instances == instance_count(m.assembly));
     }
 }
+
+TEST_CASE("A coloured model without a tree is one part placed once", "[mesh][io][assembly]") {
+    Model m = test::plate_with_hole();
+    m.assembly.colours = {{0.2, 0.2, 0.2, 1}};
+    m.assembly.face_colours = {0};
+    const tinygltf::Model g = written(m, test::scratch_dir("gltf_coloured") / "a.glb");
+    REQUIRE(g.meshes.size() == 1);
+    CHECK(g.nodes.size() == 1);
+    REQUIRE(g.materials.size() == 1);
+    CHECK(g.meshes[0].primitives[0].material == 0);
+    const double dark = g.materials[0].pbrMetallicRoughness.baseColorFactor[0];
+    CHECK(dark < 0.2); // sRGB 0.2 is linear 0.033
+    CHECK(dark > 0);
+}
