@@ -31,6 +31,9 @@ void add_convert(CLI::App& app, Action& action) {
         ->required();
     cmd->add_option("-o,--output", args->out, "JSON model file to write (.json)")->required();
     add_model_options(cmd, args->load);
+    cmd->add_flag("--keep-assembly", args->load.keep_assembly,
+                  "write a STEP/IGES assembly as its tree: each part once in its own "
+                  "coordinates, with its instances' placements (default: every instance placed)");
     cmd->callback([&action, args] {
         action = [args] {
             std::string ext = std::filesystem::path(args->out).extension().string();

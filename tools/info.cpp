@@ -78,6 +78,52 @@ void print_brep(const BRep& b) {
             std::cout << "solid " << k << ": " << b.solids[k].name << "\n";
 }
 
+nlohmann::json assembly_json(const Assembly& a) {
+    nlohmann::json parts = nlohmann::json::array(), nodes = nlohmann::json::array(),
+                   colours = nlohmann::json::array();
+    for (const AssemblyPart& p : a.parts)
+        parts.push_back({{"name", p.name},
+                         {"faces", p.face_count},
+                         {"solids", p.solid_count},
+                         {"colour", p.colour}});
+    for (const AssemblyNode& n : a.nodes)
+        nodes.push_back({{"name", n.name},
+                         {"parent", n.parent},
+                         {"part", n.part},
+                         {"placement", std::vector<double>(n.placement.m, n.placement.m + 12)}});
+    for (const Rgba& c : a.colours) colours.push_back({c.r, c.g, c.b, c.a});
+    int coloured = 0;
+    for (int c : a.face_colours) coloured += c >= 0;
+    return {{"parts", parts},
+            {"nodes", nodes},
+            {"colours", colours},
+            {"instances", instance_count(a)},
+            {"faces_coloured", coloured}};
+}
+
+// The tree, one node a line, indented by depth: "name (part k)" or
+// "name [assembly]", with the node's offset from its parent when it has one.
+void print_assembly(const Assembly& a) {
+    std::cout << "assembly: " << plural(static_cast<int>(a.parts.size()), "part", "parts") << ", "
+              << plural(instance_count(a), "instance", "instances") << ", "
+              << plural(static_cast<int>(a.colours.size()), "colour", "colours") << "\n";
+    std::vector<int> depth(a.nodes.size(), 0);
+    for (size_t k = 0; k < a.nodes.size(); ++k) {
+        const AssemblyNode& n = a.nodes[k];
+        if (n.parent >= 0) depth[k] = depth[n.parent] + 1;
+        std::cout << std::string(2 * depth[k] + 2, ' ') << n.name;
+        if (n.part >= 0)
+            std::cout << " (part " << n.part << ": " << a.parts[n.part].name << ", "
+                      << plural(a.parts[n.part].face_count, "face", "faces") << ")";
+        else
+            std::cout << " [assembly]";
+        const double* m = n.placement.m;
+        if (m[3] != 0 || m[7] != 0 || m[11] != 0)
+            std::cout << " at (" << m[3] << ", " << m[7] << ", " << m[11] << ")";
+        std::cout << "\n";
+    }
+}
+
 } // namespace
 
 void add_info(CLI::App& app, Action& action) {
@@ -94,8 +140,12 @@ void add_info(CLI::App& app, Action& action) {
     add_model_options(cmd, *load);
     cmd->callback([&action, model, as_json, load] {
         action = [model, as_json, load] {
-            const Model m = load_model(*model, *load);
-            print_warnings(m);
+            ModelLoadOptions keep = *load;
+            keep.keep_assembly = true;
+            const Model tree = load_model(*model, keep);
+            print_warnings(tree);
+            // The rest describes the model as placed, as other commands see it.
+            const Model m = flatten_assembly(tree);
             const Box3 box = control_box(m);
             int total = 0;
             nlohmann::json js;
@@ -145,6 +195,7 @@ void add_info(CLI::App& app, Action& action) {
                               {"max", {box.hi.x, box.hi.y, box.hi.z}}};
                 js["d_max"] = dmax;
                 if (!m.brep.empty()) js["brep"] = brep_json(m.brep);
+                if (tree.assembly.has_tree()) js["assembly"] = assembly_json(tree.assembly);
                 js["warnings"] = m.warnings;
                 std::cout << js.dump(2) << "\n";
             } else {
@@ -156,6 +207,7 @@ void add_info(CLI::App& app, Action& action) {
                           << box.hi.z << "]\n"
                           << "d_max: " << dmax << "\n";
                 if (!m.brep.empty()) print_brep(m.brep);
+                if (tree.assembly.has_tree()) print_assembly(tree.assembly);
             }
             return 0;
         };

@@ -32,6 +32,7 @@ struct TessellateArgs {
     long long max_triangles = TessellationOptions{}.max_triangles;
     int threads = TessellationOptions{}.threads;
     bool allow_holes = TessellationOptions{}.allow_holes;
+    bool flatten = false;
     ModelLoadOptions load;
 };
 
@@ -76,6 +77,10 @@ void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
     cmd->add_flag("--allow-holes", args.allow_holes,
                   "B-rep models: write the mesh without a face that cannot be triangulated, "
                   "with a warning naming it (default: refuse the model, naming the face)");
+    cmd->add_flag("--flatten", args.flatten,
+                  "glTF of a STEP/IGES assembly: one node per surface with every instance placed, "
+                  "as the other formats (default: the assembly's tree, each part meshed once and "
+                  "shared by its instances, with the file's names and colours)");
     add_model_options(cmd, args.load);
 }
 
@@ -92,6 +97,18 @@ TessellationOptions tessellation_options(const TessellateArgs& args) {
     opt.angle = args.angle * 3.14159265358979323846 / 180;
     opt.patch_trees = false; // the renderer's, not written
     return opt;
+}
+
+// B-rep models' default deviation, 0.001 of the diagonal of the box of the
+// B-rep's vertices and curves (brep_tessellation.cpp), for the model placed.
+double placed_default_tolerance(const Model& m) {
+    const Model flat = flatten_assembly(m);
+    Box3 box;
+    for (const BRepVertex& v : flat.brep.vertices) box.extend(v.point);
+    for (const BSplineCurve& c : flat.brep.curves)
+        for (const Vec3& p : c.points) box.extend(p);
+    if (box.empty() || !(norm(box.extent()) > 0)) box.extend(control_box(flat));
+    return 1e-3 * norm(box.extent());
 }
 
 void print_tessellation_summary(const TessellationStats& s) {
@@ -122,12 +139,21 @@ int run_tessellate(const TessellateArgs& args) {
     if (!args.stats.empty()) outs.push_back(args.stats);
     OutputFiles files(outs, {args.model});
     keep_freed_memory(); // the passes reuse each other's pages (huge_pages.h)
+    const MeshFormat format = mesh_format(std::filesystem::path(args.out));
+    ModelLoadOptions load = args.load;
+    const bool structured =
+        (format == MeshFormat::gltf || format == MeshFormat::glb) && !args.flatten;
+    load.keep_assembly = structured;
     const Model m = [&] {
         const WorkersWarmUp warm_up(args.threads); // while the model is read
-        return load_model(args.model, args.load);
+        return load_model(args.model, load);
     }();
     print_warnings(m);
     TessellationOptions opt = tessellation_options(args);
+    const bool tree = m.assembly.has_tree();
+    // The parts lie in their own coordinates: the default deviation is that
+    // of the model as placed.
+    if (tree && opt.tolerance == 0) opt.tolerance = placed_default_tolerance(m);
     ProgressBar bar("tessellate");
     opt.progress = [&bar](double f) { bar.update(f); };
     const Tessellation t = [&] {
@@ -140,7 +166,10 @@ int run_tessellate(const TessellateArgs& args) {
     }();
     bar.finish();
     for (const std::string& w : t.stats.brep.warnings) std::cerr << "warning: " << w << "\n";
-    write_mesh(files.staging(0), t.mesh);
+    if (structured && !m.assembly.empty() && !m.brep.empty())
+        write_mesh_assembly(files.staging(0), t.mesh, m);
+    else
+        write_mesh(files.staging(0), t.mesh);
     print_tessellation_summary(t.stats);
     if (!args.stats.empty())
         write_text_atomically(files.staging(1),

@@ -21,4 +21,9 @@ void read_brep_json(const JsonFields& r, const Json& j, const ModelLimits& limit
 // model's members), numbers with 17 significant digits.
 void write_brep_json(std::ostream& os, const BRep& b);
 
+// The "assembly" object (assembly_json.cpp): read into a, checked for its
+// JSON shape and sizes; validate_assembly checks it against the B-rep.
+void read_assembly_json(const JsonFields& r, const Json& j, const ModelLimits& limits, Assembly& a);
+void write_assembly_json(std::ostream& os, const Assembly& a);
+
 } // namespace seamless

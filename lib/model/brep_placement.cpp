@@ -6,10 +6,22 @@
 namespace seamless {
 
 double AffineMap::stretch() const {
-    double s = 0;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) s += m[4 * r + c] * m[4 * r + c];
-    return std::sqrt(s);
+    // A^T A: s^2 I for a rotation scaled by s (CAD placements, to rounding).
+    double ata[3][3], frobenius = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            ata[i][j] = m[i] * m[j] + m[4 + i] * m[4 + j] + m[8 + i] * m[8 + j];
+    for (int i = 0; i < 3; ++i) frobenius += ata[i][i];
+    const double s2 = frobenius / 3;
+    bool similarity = true, identity = true;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            similarity = similarity && std::abs(ata[i][j] - (i == j ? s2 : 0)) <= 1e-9 * s2;
+            identity = identity && m[4 * i + j] == (i == j ? 1 : 0);
+        }
+    if (identity) return 1;
+    // The rounding's 1e-9 added: still an upper bound.
+    return similarity ? std::sqrt(s2) * (1 + 1e-9) : std::sqrt(frobenius);
 }
 
 void append_brep(BRep& into, const BRep& from, int surface_offset, const AffineMap& map) {

@@ -18,8 +18,9 @@ struct AffineMap {
                 m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
                 m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
     }
-    // An upper bound of how much A stretches a length (its Frobenius norm),
-    // by which tolerances grow.
+    // An upper bound of how much A stretches a length, by which tolerances
+    // grow: 1 for the identity, s for a rotation scaled by s, else A's
+    // Frobenius norm.
     double stretch() const;
 };
 

@@ -146,7 +146,12 @@ Model load_model(const std::filesystem::path& path, const ModelLoadOptions& opti
                                            : parse_model_json(text, file, limits);
     });
     m.source = file;
-    return m;
+    if (options.keep_assembly || !m.assembly.has_tree()) return m;
+    Model flat = naming_file_on_oom(file, [&] { return flatten_assembly(m); });
+    // Placements can carry coordinates beyond the limit.
+    for (size_t k = 0; k < flat.surfaces.size(); ++k)
+        validate_surface(flat.surfaces[k], file, "surfaces[" + std::to_string(k) + "]");
+    return flat;
 }
 
 Box3 control_box(const Model& m) {

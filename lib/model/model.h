@@ -7,6 +7,7 @@
 #pragma once
 
 #include <seamless/base/vec.h>
+#include <seamless/model/assembly.h>
 #include <seamless/model/brep.h>
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/spline/bspline_surface.h>
@@ -35,6 +36,9 @@ struct Model {
     // Empty: the surfaces are the model, each its whole (u,v) rectangle. Else
     // the model is the B-rep's faces, each a trimmed part of its surface.
     BRep brep;
+    // Empty: no structure. Else the file's tree, names and colours; with a
+    // tree, `brep` holds each part once in its own coordinates (assembly.h).
+    Assembly assembly;
 };
 
 // Limits that reject absurd sizes before anything is allocated for them.
@@ -82,6 +86,9 @@ struct ModelLoadOptions {
     // of it). docs/formats.md, Limits.
     double reader_time_limit = 600; // far above the slowest corpus file (docs/formats.md, Limits)
     std::uint64_t reader_memory_limit = std::uint64_t(4) << 30; // 4 GiB
+    // An assembly is placed into one B-rep (flatten_assembly) unless this
+    // asks for it as the file has it: each part once, with its instances.
+    bool keep_assembly = false;
 };
 
 // Reads a model by extension: .json, .bpt, .step/.stp, .iges/.igs (anything

@@ -20,10 +20,12 @@ constexpr std::string_view kTag = "seamless-model-exchange 1\n";
 
 // A member added to one of these types must be written and read below; the
 // sizes (x86-64, libstdc++) stop the build until it is.
-static_assert(sizeof(Model) == 272 && sizeof(BRep) == 168 && sizeof(SurfaceOrigin) == 80 &&
-                  sizeof(BSplineSurface) == 144 && sizeof(BSplineCurve) == 80 &&
-                  sizeof(BRepFace) == 64 && sizeof(BRepEdge) == 40 && sizeof(BRepSolid) == 56 &&
-                  sizeof(BRepShell) == 32 && sizeof(BRepCoedge) == 12 && sizeof(BRepVertex) == 32,
+static_assert(sizeof(Model) == 392 && sizeof(BRep) == 168 && sizeof(Assembly) == 120 &&
+                  sizeof(AssemblyPart) == 48 && sizeof(AssemblyNode) == 144 && sizeof(Rgba) == 32 &&
+                  sizeof(SurfaceOrigin) == 80 && sizeof(BSplineSurface) == 144 &&
+                  sizeof(BSplineCurve) == 80 && sizeof(BRepFace) == 64 && sizeof(BRepEdge) == 40 &&
+                  sizeof(BRepSolid) == 56 && sizeof(BRepShell) == 32 && sizeof(BRepCoedge) == 12 &&
+                  sizeof(BRepVertex) == 32,
               "a member was added to Model or its parts: write and read it in model_exchange.cpp");
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "points are written as their doubles");
@@ -75,7 +77,25 @@ class Writer {
         doubles(c.weights);
     }
     void brep(const BRep& b);
+    void assembly(const Assembly& a);
 };
+
+void Writer::assembly(const Assembly& a) {
+    list(a.parts, [&](const AssemblyPart& p) {
+        string(p.name);
+        for (int i : {p.face_count, p.shell_count, p.solid_count, p.colour})
+            scalar<std::int32_t>(i);
+    });
+    list(a.nodes, [&](const AssemblyNode& n) {
+        string(n.name);
+        scalar<std::int32_t>(n.parent);
+        for (double x : n.placement.m) scalar(x);
+        scalar<std::int32_t>(n.part);
+    });
+    list(a.colours, [&](const Rgba& c) { scalar(c.r), scalar(c.g), scalar(c.b), scalar(c.a); });
+    ints(a.solid_colours);
+    ints(a.face_colours);
+}
 
 void Writer::brep(const BRep& b) {
     list(b.vertices, [&](const BRepVertex& v) {
@@ -209,6 +229,7 @@ class Reader {
     BSplineSurface surface(const Path& f);
     BSplineCurve curve(const Path& f);
     void brep(Model& m);
+    void assembly(Assembly& a);
 
   private:
     std::string_view in_;
@@ -307,6 +328,42 @@ void Reader::brep(Model& m) {
     }
 }
 
+// The tree's indices and numbers are checked by validate_assembly after the
+// whole model is read; here only what reading needs: counts within the bytes
+// left, finite numbers.
+void Reader::assembly(Assembly& a) {
+    a.parts.resize(items({nullptr, "assembly.parts"}, 24));
+    for (std::size_t k = 0; k < a.parts.size(); ++k) {
+        const Path f{nullptr, "assembly.parts", static_cast<long long>(k)};
+        AssemblyPart& p = a.parts[k];
+        p.name = string({&f, "name"});
+        p.face_count = integer({&f, "face_count"});
+        p.shell_count = integer({&f, "shell_count"});
+        p.solid_count = integer({&f, "solid_count"});
+        p.colour = integer({&f, "colour"});
+    }
+    a.nodes.resize(items({nullptr, "assembly.nodes"}, 8 + 4 + 12 * sizeof(double) + 4));
+    for (std::size_t k = 0; k < a.nodes.size(); ++k) {
+        const Path f{nullptr, "assembly.nodes", static_cast<long long>(k)};
+        AssemblyNode& n = a.nodes[k];
+        n.name = string({&f, "name"});
+        n.parent = integer({&f, "parent"});
+        for (double& x : n.placement.m) x = number({&f, "placement"});
+        n.part = integer({&f, "part"});
+    }
+    a.colours.resize(items({nullptr, "assembly.colours"}, 4 * sizeof(double)));
+    for (std::size_t k = 0; k < a.colours.size(); ++k) {
+        const Path f{nullptr, "assembly.colours", static_cast<long long>(k)};
+        Rgba& c = a.colours[k];
+        c.r = number(f), c.g = number(f), c.b = number(f), c.a = number(f);
+    }
+    for (auto [list, name] : {std::pair{&a.solid_colours, "assembly.solid_colours"},
+                              std::pair{&a.face_colours, "assembly.face_colours"}}) {
+        list->resize(items({nullptr, name}, 4));
+        for (int& i : *list) i = integer({nullptr, name});
+    }
+}
+
 } // namespace
 
 std::string write_model_exchange(const Model& m) {
@@ -322,6 +379,7 @@ std::string write_model_exchange(const Model& m) {
     });
     w.list(m.warnings, [&](const std::string& s) { w.string(s); });
     w.brep(m.brep);
+    w.assembly(m.assembly);
     return std::move(w.out);
 }
 
@@ -352,7 +410,9 @@ Model read_model_exchange(std::string_view bytes, const std::string& file,
     for (std::size_t k = 0; k < m.warnings.size(); ++k)
         m.warnings[k] = r.string({nullptr, "warnings", static_cast<long long>(k)});
     r.brep(m);
+    r.assembly(m.assembly);
     r.end();
+    if (!m.assembly.empty()) validate_assembly(m, file);
     return m;
 }
 

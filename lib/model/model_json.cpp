@@ -106,12 +106,18 @@ Model parse_model_json(const std::string& text, const std::string& file,
     if (version == 1) {
         // Ignoring it, as other unknown members are, would drop the trims.
         if (brep) r.fail("brep", "a B-rep needs \"version\": 2");
+        if (JsonFields::find(root, "assembly"))
+            r.fail("assembly", "an assembly needs \"version\": 2");
         return m;
     }
     if (!brep) r.fail("brep", "missing (version 2 is surfaces and a B-rep)");
     read_brep_json(r, *brep, limits, m.brep);
     if (m.brep.empty()) r.fail("brep.faces", "expected at least one face");
     validate_brep(m, file, limits);
+    if (const Json* assembly = JsonFields::find(root, "assembly")) {
+        read_assembly_json(r, *assembly, limits, m.assembly);
+        validate_assembly(m, file);
+    }
     return m;
 }
 
@@ -152,6 +158,10 @@ std::string to_json(const Model& m) {
     if (!m.brep.empty()) {
         os << ",\n \"brep\": ";
         write_brep_json(os, m.brep);
+        if (!m.assembly.empty()) {
+            os << ",\n \"assembly\": ";
+            write_assembly_json(os, m.assembly);
+        }
     }
     os << "}\n";
     return os.str();

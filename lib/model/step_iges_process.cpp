@@ -12,7 +12,9 @@ namespace {
 
 // A member added to ModelLoadOptions must be passed on below; the size
 // (x86-64) stops the build until it is.
-static_assert(sizeof(ModelLoadOptions) == 72 && sizeof(ModelLimits) == 40,
+// keep_assembly is not passed on: the reader always returns the tree, and
+// the caller's load_model places its instances.
+static_assert(sizeof(ModelLoadOptions) == 80 && sizeof(ModelLimits) == 40,
               "a member was added to ModelLoadOptions: pass it on in step_iges_process.cpp");
 
 void append_double(std::string& s, double x) {

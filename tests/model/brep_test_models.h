@@ -3,7 +3,7 @@
 // square plate with a square hole (a degree-1 surface and lines), and a
 // surface of revolution around z whose face is bounded by two circles and a
 // seam edge used twice with its two pcurves; a top radius of 0 makes it a
-// cone whose apex is a degenerate edge.
+// cone whose apex is a degenerate edge. And an assembly of the two.
 #pragma once
 
 #include <seamless/model/model.h>
@@ -124,6 +124,42 @@ inline Model revolved(double top_radius) {
     face.loops.push_back({{{0, false, 0}, {2, false, 3}, {1, true, 1}, {2, true, 2}}});
     b.faces.push_back(face);
     b.shells.push_back({{0}, false});
+    return m;
+}
+
+inline AffineMap translation(double x, double y, double z) {
+    AffineMap m;
+    m.m[3] = x;
+    m.m[7] = y;
+    m.m[11] = z;
+    return m;
+}
+
+// x -> -x: a mirroring placement.
+inline AffineMap mirror_x() {
+    AffineMap m;
+    m.m[0] = -1;
+    return m;
+}
+
+// Two parts, "plate" (the plate with a hole, red) and "tube" (a cylinder,
+// its face green), placed four times: the plate once at the root, the tube
+// twice beside it (once mirrored) and once in a sub-assembly moved up.
+inline Model small_assembly() {
+    Model m = test::plate_with_hole();
+    const Model tube = test::revolved(1);
+    append_brep(m.brep, tube.brep, static_cast<int>(m.surfaces.size()), AffineMap{});
+    m.surfaces.insert(m.surfaces.end(), tube.surfaces.begin(), tube.surfaces.end());
+    Assembly& a = m.assembly;
+    a.colours = {{1, 0, 0, 1}, {0, 1, 0, 0.5}};
+    a.parts = {{"plate", 1, 1, 0, 0}, {"tube", 1, 1, 0, -1}};
+    a.face_colours = {-1, 1};
+    a.nodes = {{"top", -1, AffineMap{}, -1},
+               {"plate-1", 0, AffineMap{}, 0},
+               {"tube-1", 0, translation(20, 0, 0), 1},
+               {"tube-2", 0, mirror_x(), 1},
+               {"sub", 0, translation(0, 0, 5), -1},
+               {"tube-3", 4, translation(0, 30, 0), 1}};
     return m;
 }
 

@@ -71,6 +71,31 @@ TEST_CASE("The exchange form carries every member of a model bit for bit", "[mod
     CHECK(r.brep.shells[0].closed);
 }
 
+TEST_CASE("The exchange form carries an assembly: parts, placed nodes and colours",
+          "[model][exchange]") {
+    const Model m = test::small_assembly();
+    REQUIRE(m.assembly.has_tree());
+    const std::string bytes = write_model_exchange(m);
+    const Model r = read_model_exchange(bytes, "x.step");
+    CHECK(write_model_exchange(r) == bytes);
+    REQUIRE(r.assembly.parts.size() == m.assembly.parts.size());
+    REQUIRE(r.assembly.nodes.size() == m.assembly.nodes.size());
+    for (size_t k = 0; k < m.assembly.nodes.size(); ++k) {
+        CHECK(r.assembly.nodes[k].name == m.assembly.nodes[k].name);
+        CHECK(r.assembly.nodes[k].parent == m.assembly.nodes[k].parent);
+        CHECK(r.assembly.nodes[k].part == m.assembly.nodes[k].part);
+        CHECK(std::memcmp(r.assembly.nodes[k].placement.m, m.assembly.nodes[k].placement.m,
+                          sizeof(double) * 12) == 0);
+    }
+    CHECK(r.assembly.colours == m.assembly.colours);
+    CHECK(r.assembly.face_colours == m.assembly.face_colours);
+    CHECK(r.assembly.solid_colours == m.assembly.solid_colours);
+    // A node naming a part that is not there is refused by name.
+    Model bad = m;
+    bad.assembly.nodes.back().part = 99;
+    CHECK_THAT(error_of(write_model_exchange(bad)), Catch::Contains("assembly.nodes["));
+}
+
 TEST_CASE("Every truncation and every flipped byte of an answer is refused or read whole",
           "[model][exchange]") {
     const std::string bytes = write_model_exchange(full_model());

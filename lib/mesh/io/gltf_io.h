@@ -5,6 +5,7 @@
 #pragma once
 
 #include <seamless/base/triangle_mesh.h>
+#include <seamless/model/model.h>
 
 #include <filesystem>
 #include <string>
@@ -18,6 +19,18 @@ namespace seamless {
 // caller provides atomicity); throws InputError naming `name` on failure.
 void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, bool binary,
                 const std::string& name);
+
+// A CAD assembly as glTF: `mesh` is the tessellation of `model`, a model
+// that keeps its assembly (each part once, in its own coordinates, its faces
+// on surfaces of their own: triangle_surface names the face). One glTF mesh
+// per part, one primitive per colour of its faces, shared by every node
+// that places the part; one node per assembly node, named as it and placed
+// by its matrix; one material per colour (PBR metallic-roughness: the
+// colour, linearised, as baseColorFactor, its alpha blended). Throws
+// InputError naming `name` on failure. A B-rep model with colours and no
+// tree is written as one part placed once.
+void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
+                         const Model& model, bool binary, const std::string& name);
 
 // Every triangle primitive (modes 4, 5, 6) of every mesh, as indexed, no welding;
 // triangle_surface is the glTF mesh index, surface_names the mesh names; corner

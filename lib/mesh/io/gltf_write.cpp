@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -154,7 +155,131 @@ void add_surface_node(tinygltf::Model& model, tinygltf::Scene& scene, const Tria
     scene.nodes.push_back(static_cast<int>(model.nodes.size()) - 1);
 }
 
+// sRGB (how CAD files write colours) to glTF's linear baseColorFactor.
+double linear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+void add_material(tinygltf::Model& model, const Rgba& c, int k) {
+    tinygltf::Material m;
+    m.name = "colour-" + std::to_string(k);
+    m.pbrMetallicRoughness.baseColorFactor = {linear(c.r), linear(c.g), linear(c.b), c.a};
+    m.pbrMetallicRoughness.metallicFactor = 0; // glTF's default, 1, would be metal
+    m.pbrMetallicRoughness.roughnessFactor = 0.5;
+    if (c.a < 1) m.alphaMode = "BLEND";
+    model.materials.push_back(std::move(m));
+}
+
+// The node's placement as glTF's column-major 4x4 matrix; none for the identity.
+std::vector<double> node_matrix(const AffineMap& p) {
+    const AffineMap id;
+    if (std::equal(p.m, p.m + 12, id.m)) return {};
+    std::vector<double> m(16, 0.0);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) m[4 * c + r] = p.m[4 * r + c];
+    m[15] = 1;
+    return m;
+}
+
+// Per part, its triangles grouped by their face's colour (-1: none).
+std::vector<std::map<int, std::vector<int>>>
+part_triangles(const TriangleMesh& mesh, const Model& model, const std::string& name) {
+    const size_t nf = mesh.triangles.size();
+    if (mesh.triangle_surface.size() != nf)
+        throw InputError(name, "", "the mesh does not say which face each triangle is on");
+    std::vector<int> face_of(model.surfaces.size(), -1), part_of(model.brep.faces.size(), -1);
+    for (size_t f = 0; f < model.brep.faces.size(); ++f)
+        face_of[model.brep.faces[f].surface] = static_cast<int>(f);
+    const std::vector<PartRange> ranges = part_ranges(model.assembly);
+    for (size_t p = 0; p < ranges.size(); ++p)
+        for (int f = 0; f < ranges[p].face_count; ++f)
+            part_of[ranges[p].first_face + f] = static_cast<int>(p);
+    const std::vector<int> colours = face_colours(model);
+    std::vector<std::map<int, std::vector<int>>> out(ranges.size());
+    for (size_t t = 0; t < nf; ++t) {
+        const int s = mesh.triangle_surface[t];
+        const int f = s >= 0 && s < static_cast<int>(face_of.size()) ? face_of[s] : -1;
+        if (f < 0 || part_of[f] < 0)
+            throw InputError(name, "", "triangle " + std::to_string(t) + " is on no part's face");
+        out[part_of[f]][colours[f]].push_back(static_cast<int>(t));
+    }
+    return out;
+}
+
+void finish_and_write(tinygltf::Model& model, const std::filesystem::path& path, bool binary,
+                      const std::string& name) {
+    // The glb BIN chunk must be padded to 4 bytes (tinygltf pads, but keep the length honest).
+    while (model.buffers[0].data.size() % 4 != 0) model.buffers[0].data.push_back(0);
+    if (model.buffers[0].data.empty()) model.buffers.clear(); // an empty buffer is invalid
+    model.defaultScene = 0;
+    tinygltf::TinyGLTF gltf;
+    if (!gltf.WriteGltfSceneToFile(&model, path.string(), /*embedImages=*/true,
+                                   /*embedBuffers=*/true, /*prettyPrint=*/!binary, binary))
+        throw InputError(name, "", "cannot write glTF file");
+}
+
+// A model with colours but no tree as one part placed once.
+Model one_part(const Model& m, const std::string& name) {
+    Model one = m;
+    AssemblyPart part;
+    part.name = std::filesystem::path(m.source.empty() ? name : m.source).stem().string();
+    part.face_count = static_cast<int>(m.brep.faces.size());
+    part.shell_count = static_cast<int>(m.brep.shells.size());
+    part.solid_count = static_cast<int>(m.brep.solids.size());
+    one.assembly.parts = {part};
+    one.assembly.nodes = {{part.name, -1, AffineMap{}, 0}};
+    return one;
+}
+
+void write_tree(const std::filesystem::path& path, const TriangleMesh& mesh, const Model& m,
+                bool binary, const std::string& name) {
+    const Assembly& a = m.assembly;
+    const size_t nf = mesh.triangles.size();
+    const CornerData has{mesh.corner_normals.size() == nf && nf > 0,
+                         mesh.corner_uvs.size() == nf && nf > 0};
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "seamless";
+    model.buffers.resize(1);
+    for (size_t k = 0; k < a.colours.size(); ++k) add_material(model, a.colours[k], int(k));
+    const auto parts = part_triangles(mesh, m, name);
+    for (size_t p = 0; p < parts.size(); ++p) {
+        tinygltf::Mesh gmesh;
+        gmesh.name = a.parts[p].name;
+        for (const auto& [colour, tris] : parts[p]) {
+            tinygltf::Primitive prim = add_primitive(model, primitive_arrays(mesh, tris, has), has);
+            prim.material = colour;
+            gmesh.primitives.push_back(std::move(prim));
+        }
+        model.meshes.push_back(std::move(gmesh));
+    }
+    tinygltf::Scene scene;
+    for (size_t k = 0; k < a.nodes.size(); ++k) {
+        const AssemblyNode& n = a.nodes[k];
+        tinygltf::Node node;
+        node.name = n.name;
+        node.matrix = node_matrix(n.placement);
+        // A part without triangles (no faces) has an empty mesh, which glTF forbids.
+        if (n.part >= 0 && !model.meshes[n.part].primitives.empty()) node.mesh = n.part;
+        model.nodes.push_back(std::move(node));
+        if (n.parent < 0)
+            scene.nodes.push_back(static_cast<int>(k));
+        else
+            model.nodes[n.parent].children.push_back(static_cast<int>(k));
+    }
+    model.scenes.push_back(scene);
+    finish_and_write(model, path, binary, name);
+}
+
 } // namespace
+
+void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
+                         const Model& m, bool binary, const std::string& name) {
+    if (m.assembly.has_tree())
+        write_tree(path, mesh, m, binary, name);
+    else
+        write_tree(path, mesh, one_part(m, name), binary, name);
+}
 
 void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, bool binary,
                 const std::string& name) {
@@ -176,16 +301,8 @@ void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, boo
     for (const auto& [surface, tris] : groups)
         add_surface_node(model, scene, mesh, surface,
                          add_primitive(model, primitive_arrays(mesh, tris, has), has));
-    // The glb BIN chunk must be padded to 4 bytes (tinygltf pads, but keep the length honest).
-    while (model.buffers[0].data.size() % 4 != 0) model.buffers[0].data.push_back(0);
-    if (model.buffers[0].data.empty()) model.buffers.clear(); // an empty buffer is invalid
     model.scenes.push_back(scene);
-    model.defaultScene = 0;
-
-    tinygltf::TinyGLTF gltf;
-    if (!gltf.WriteGltfSceneToFile(&model, path.string(), /*embedImages=*/true,
-                                   /*embedBuffers=*/true, /*prettyPrint=*/!binary, binary))
-        throw InputError(name, "", "cannot write glTF file");
+    finish_and_write(model, path, binary, name);
 }
 
 } // namespace seamless

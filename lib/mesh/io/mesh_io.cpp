@@ -115,6 +115,18 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
     });
 }
 
+void write_mesh_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
+                         const Model& model) {
+    const MeshFormat format = mesh_format(path);
+    const std::string file = path.string();
+    if (!is_gltf(format))
+        throw InputError(file, "", "an assembly's tree is written as glTF (.gltf, .glb) only");
+    validate(mesh, file);
+    write_atomically(path, [&](const fs::path& tmp) {
+        write_gltf_assembly(tmp, mesh, model, format == MeshFormat::glb, file);
+    });
+}
+
 TriangleMesh parse_mesh(const std::string& bytes, const std::string& format,
                         const std::string& file, const std::filesystem::path& base_dir) {
     return parse_as(mesh_format(format, file), bytes, file, base_dir);

@@ -8,6 +8,7 @@
 
 #include <seamless/base/triangle_mesh.h>
 #include <seamless/mesh/io/mesh_formats.h>
+#include <seamless/model/model.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -20,6 +21,11 @@ inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(1) << 31;
 
 // Throws InputError (naming the file) when the extension is unknown or writing fails.
 void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh);
+
+// A CAD assembly's mesh (gltf_io.h, write_gltf_assembly) as .gltf or .glb,
+// atomically; other formats are refused (they flatten: write_mesh).
+void write_mesh_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
+                         const Model& model);
 
 // Reads positions and triangles (polygons are fanned into triangles). glTF:
 // every triangle primitive of every mesh, node transforms ignored. Vertices are

@@ -3,12 +3,14 @@
 
 #include <seamless/base/error.h>
 
+#include <IGESCAFControl_Reader.hxx>
 #include <IGESControl_Reader.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_ReportEntity.hxx>
 #include <Interface_Static.hxx>
+#include <STEPCAFControl_Reader.hxx>
 #include <STEPConstruct_UnitContext.hxx>
 #include <STEPControl_Reader.hxx>
 #include <StepData_GlobalFactors.hxx>
@@ -22,9 +24,11 @@
 #include <StepVisual_DraughtingCallout.hxx>
 #include <TCollection_HAsciiString.hxx>
 #include <TopExp.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
 #include <XSControl_WorkSession.hxx>
 
 #include <cctype>
+#include <map>
 
 namespace seamless::step_iges {
 namespace {
@@ -114,43 +118,78 @@ void keep_step_units(STEPControl_Reader& reader) {
 
 } // namespace
 
-TransferredFile transfer_file(const std::filesystem::path& path) {
-    const std::string file = path.string();
+namespace {
+
+bool is_iges_path(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    TransferredFile t;
-    t.iges = ext == ".iges" || ext == ".igs";
-    const bool iges = t.iges;
-    const std::string format = iges ? "IGES" : "STEP";
+    return ext == ".iges" || ext == ".igs";
+}
 
-    std::unique_ptr<XSControl_Reader>& reader = t.reader;
-    if (iges) {
-        reader = std::make_unique<IGESControl_Reader>();
-        // Keep B-splines as written: no knot removal or splitting to raise continuity.
+// Reads the file into `reader` with the file's length unit kept and
+// unreadable geometry refused, ready for its transfer.
+void read_checked(XSControl_Reader& reader, const std::string& file, bool iges) {
+    const std::string format = iges ? "IGES" : "STEP";
+    if (iges) // keep B-splines as written: no knot removal or splitting to raise continuity
         Interface_Static::SetIVal("read.iges.bspline.continuity", 0);
-    } else {
-        reader = std::make_unique<STEPControl_Reader>();
-    }
-    if (reader->ReadFile(file.c_str()) != IFSelect_RetDone)
+    if (reader.ReadFile(file.c_str()) != IFSelect_RetDone)
         throw InputError(file, "", "not a readable " + format + " file");
     if (iges)
-        keep_iges_units(reader->Model());
+        keep_iges_units(reader.Model());
     else
-        keep_step_units(static_cast<STEPControl_Reader&>(*reader));
-    if (reader->Model().IsNull() || reader->Model()->NbEntities() == 0)
+        keep_step_units(static_cast<STEPControl_Reader&>(reader));
+    if (reader.Model().IsNull() || reader.Model()->NbEntities() == 0)
         throw InputError(file, "", "not a readable " + format + " file (no entities)");
-    refuse_error_entities(reader->Model(), file, iges);
-    if (reader->NbRootsForTransfer() == 0)
+    refuse_error_entities(reader.Model(), file, iges);
+    if (reader.NbRootsForTransfer() == 0)
         throw InputError(file, "", "no surfaces (the " + format + " file has nothing to transfer)");
-    reader->TransferRoots();
-    const TopoDS_Shape shape = reader->OneShape();
+}
+
+// The transferred shape, its faces and the transfer's tables, into t.
+void take_result(XSControl_Reader& reader, const std::string& file, TransferredFile& t) {
+    const TopoDS_Shape shape = reader.OneShape();
     if (shape.IsNull())
         throw InputError(file, "", "no surfaces (OpenCASCADE transferred no shape from it)");
     t.shape = shape;
     TopExp::MapShapes(shape, TopAbs_FACE, t.faces);
     if (t.faces.IsEmpty()) throw InputError(file, "", "no surfaces (no faces or bare surfaces)");
-    t.transfer = reader->WS()->TransferReader();
-    t.model = reader->WS()->Model();
+    t.transfer = reader.WS()->TransferReader();
+    t.model = reader.WS()->Model();
+}
+
+} // namespace
+
+TransferredFile transfer_document(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    TransferredFile t;
+    t.iges = is_iges_path(path);
+    // No application: the document goes with its last handle.
+    t.document = new TDocStd_Document("MDTV-XCAF");
+    if (t.iges) {
+        auto reader = std::make_shared<IGESCAFControl_Reader>();
+        t.readers = reader;
+        reader->SetLayerMode(false);
+        read_checked(*reader, file, true);
+        // keep_iges_units declared the file's unit to be millimetres.
+        XCAFDoc_DocumentTool::SetLengthUnit(t.document, 1.0, UnitsMethods_LengthUnit_Millimeter);
+        reader->Transfer(t.document); // take_result says what is missing
+        take_result(*reader, file, t);
+    } else {
+        auto reader = std::make_shared<STEPCAFControl_Reader>();
+        t.readers = reader;
+        reader->SetLayerMode(false);
+        reader->SetPropsMode(false);
+        reader->SetGDTMode(false);
+        reader->SetMatMode(false);
+        reader->SetViewMode(false);
+        read_checked(reader->ChangeReader(), file, false);
+        // XCAF's transfer takes the unit from the document, overriding
+        // keep_step_units': give the document the file's.
+        XCAFDoc_DocumentTool::SetLengthUnit(t.document, reader->ChangeReader().SystemLengthUnit(),
+                                            UnitsMethods_LengthUnit_Millimeter);
+        reader->Transfer(t.document);
+        take_result(reader->ChangeReader(), file, t);
+    }
     return t;
 }
 
@@ -165,6 +204,18 @@ std::string entity_label(const Handle(XSControl_TransferReader) & tr,
     std::string s = label->ToCString();
     if (iges && !s.empty() && s[0] == 'D') s = "DE" + s.substr(1);
     return s;
+}
+
+std::vector<std::string> face_names(const TransferredFile& t) {
+    std::vector<std::string> names;
+    std::map<std::string, int> uses;
+    for (int k = 1; k <= t.faces.Extent(); ++k) {
+        std::string name = entity_label(t.transfer, t.model, t.faces(k), t.iges);
+        if (name.empty()) name = "face-" + std::to_string(k - 1);
+        if (int n = uses[name]++; n > 0) name.append(".").append(std::to_string(n + 1));
+        names.push_back(std::move(name));
+    }
+    return names;
 }
 
 } // namespace seamless::step_iges

@@ -9,7 +9,9 @@
 #include <seamless/model/step_iges.h>
 
 #include <seamless/base/error.h>
+#include <seamless/model/step_iges/assembly_reader.h>
 #include <seamless/model/step_iges/brep_reader.h>
+#include <seamless/model/step_iges/cad_structure.h>
 #include <seamless/model/step_iges/face_range.h>
 #include <seamless/model/step_iges/file_transfer.h>
 #include <seamless/model/step_iges/messages.h>
@@ -134,17 +136,12 @@ class FaceReader {
     std::vector<std::string> trimmed_, approximated_;
 };
 
-// The faces' names: the file's entities ("#55", "DE9"), made unique.
-std::vector<std::string> face_names(const TransferredFile& t) {
-    std::vector<std::string> names;
-    std::map<std::string, int> uses;
-    for (int k = 1; k <= t.faces.Extent(); ++k) {
-        std::string name = entity_label(t.transfer, t.model, t.faces(k), t.iges);
-        if (name.empty()) name = "face-" + std::to_string(k - 1);
-        if (int n = uses[name]++; n > 0) name.append(".").append(std::to_string(n + 1));
-        names.push_back(std::move(name));
-    }
-    return names;
+// The flattened model's face colours, when the file has any.
+void add_colours(Model& m, const CadStructure& s, const TopTools_IndexedMapOfShape& faces) {
+    std::vector<int> colours = flat_face_colours(s, faces);
+    if (std::all_of(colours.begin(), colours.end(), [](int c) { return c < 0; })) return;
+    m.assembly.colours = s.assembly.colours;
+    m.assembly.face_colours = std::move(colours);
 }
 
 bool has_trimmed_face(const TransferredFile& t) {
@@ -157,12 +154,19 @@ bool has_trimmed_face(const TransferredFile& t) {
 }
 
 Model read_locked(const std::filesystem::path& path, const ModelLoadOptions& options) {
-    const TransferredFile t = transfer_file(path);
+    const TransferredFile t = transfer_document(path);
     const std::string file = path.string();
     const std::vector<std::string> names = face_names(t);
     // Files without trimmed faces stay lists of whole surfaces.
-    if (options.trimmed == TrimmedFaces::brep && has_trimmed_face(t))
-        return read_brep(t, names, file, options);
+    if (options.trimmed == TrimmedFaces::brep && has_trimmed_face(t)) {
+        // An assembly: each part once, in its own coordinates (load_model
+        // places the instances). Otherwise the flattened shape, with its colours.
+        CadStructure structure = cad_structure(t);
+        if (structure.keeps_tree()) return read_assembly(t, std::move(structure), file, options);
+        Model m = read_brep(t, names, file, options);
+        add_colours(m, structure, t.faces);
+        return m;
+    }
     FaceReader faces(file, options);
     for (int k = 1; k <= t.faces.Extent(); ++k) faces.read(t, k, names[k - 1]);
     return faces.finish();

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+// An assembly written as glTF (write_mesh_assembly): the tree as nodes named
+// as the assembly's, one mesh per part shared by its instances, one
+// material per colour, read back with tinygltf.
+#include "model/brep_test_models.h"
+#include "test_util.h"
+
+#include <seamless/base/error.h>
+#include <seamless/mesh/io/mesh_io.h>
+#include <seamless/tessellate/tessellation.h>
+
+#include <catch2/catch.hpp>
+
+#include <tiny_gltf.h>
+
+#include <cmath>
+
+using namespace seamless;
+
+namespace {
+
+tinygltf::Model written(const Model& m, const std::filesystem::path& path) {
+    TessellationOptions opt;
+    opt.tolerance = 0.05;
+    write_mesh_assembly(path, tessellate(m, opt).mesh, m);
+    tinygltf::Model g;
+    std::string err, warn;
+    tinygltf::TinyGLTF io;
+    REQUIRE(io.LoadBinaryFromFile(&g, &err, &warn, path.string()));
+    return g;
+}
+
+} // namespace
+
+TEST_CASE("An assembly as glTF: nodes as the tree, one mesh per part, materials per colour",
+          "[mesh][io][assembly]") {
+    const Model m = test::small_assembly();
+    const Assembly& a = m.assembly;
+    const tinygltf::Model g = written(m, test::scratch_dir("gltf_assembly") / "a.glb");
+    REQUIRE(g.nodes.size() == a.nodes.size());
+    CHECK(g.meshes.size() == a.parts.size());
+    CHECK(g.materials.size() == a.colours.size());
+    int instances = 0;
+    for (size_t k = 0; k < a.nodes.size(); ++k) {
+        CHECK(g.nodes[k].name == a.nodes[k].name);
+        CHECK(g.nodes[k].mesh == a.nodes[k].part); // -1 for an assembly
+        instances += g.nodes[k].mesh >= 0;
+        if (a.nodes[k].parent >= 0) {
+            const std::vector<int>& children = g.nodes[a.nodes[k].parent].children;
+            CHECK(std::count(children.begin(), children.end(), int(k)) == 1);
+        }
+    }
+    CHECK(instances == instance_count(a));
+    REQUIRE(g.scenes.size() == 1);
+    CHECK(g.scenes[0].nodes == std::vector<int>{0});
+    // tube-1's translation in the matrix's last column.
+    REQUIRE(g.nodes[2].matrix.size() == 16);
+    CHECK(g.nodes[2].matrix[12] == 20);
+    CHECK(g.nodes[1].matrix.empty()); // the identity is left out
+    for (size_t p = 0; p < g.meshes.size(); ++p) CHECK(g.meshes[p].name == a.parts[p].name);
+    // The plate is red (its part's colour), the tube's face green at alpha 0.5.
+    REQUIRE(g.meshes[0].primitives.size() == 1);
+    const auto& red = g.materials[g.meshes[0].primitives[0].material];
+    CHECK(red.pbrMetallicRoughness.baseColorFactor == std::vector<double>{1, 0, 0, 1});
+    const auto& green = g.materials[g.meshes[1].primitives[0].material];
+    CHECK(green.pbrMetallicRoughness.baseColorFactor[3] == 0.5);
+    CHECK(green.alphaMode == "BLEND");
+    for (const auto& mesh : g.meshes)
+        for (const auto& prim : mesh.primitives) CHECK(prim.attributes.count("NORMAL") == 1);
+}
+
+TEST_CASE("An assembly's tree is refused for formats without one", "[mesh][io][assembly]") {
+    const Model m = test::small_assembly();
+    TessellationOptions opt;
+    opt.tolerance = 0.05;
+    const TriangleMesh mesh = tessellate(m, opt).mesh;
+    CHECK_THROWS_AS(write_mesh_assembly(test::scratch_dir("gltf_assembly_off") / "a.off", mesh, m),
+                    InputError);
+}
+
+TEST_CASE("The corpus assemblies as glTF: every instance a node sharing its part's one mesh",
+          "[mesh][io][assembly][heavy]") {
+    for (const char* file : {"occt_as1-oc-214-mat.stp", "occt_trj3_s1-ct-214.stp"}) {
+        INFO(file);
+        ModelLoadOptions keep;
+        keep.keep_assembly = true;
+        const Model m = load_model(test::shared_dir() / "models" / "cad-corpus" / file, keep);
+        const tinygltf::Model g = written(m, test::scratch_dir("gltf_corpus") / "a.glb");
+        CHECK(g.meshes.size() == m.assembly.parts.size());
+        CHECK(g.nodes.size() == m.assembly.nodes.size());
+        int instances = 0;
+        for (size_t k = 0; k < g.nodes.size(); ++k) {
+            CHECK(g.nodes[k].name == m.assembly.nodes[k].name);
+            CHECK(!g.nodes[k].name.empty());
+            instances += g.nodes[k].mesh >= 0;
+        }
+        CHECK(instances == instance_count(m.assembly));
+    }
+}
+
+TEST_CASE("A coloured model without a tree is one part placed once", "[mesh][io][assembly]") {
+    Model m = test::plate_with_hole();
+    m.assembly.colours = {{0.2, 0.2, 0.2, 1}};
+    m.assembly.face_colours = {0};
+    const tinygltf::Model g = written(m, test::scratch_dir("gltf_coloured") / "a.glb");
+    REQUIRE(g.meshes.size() == 1);
+    CHECK(g.nodes.size() == 1);
+    REQUIRE(g.materials.size() == 1);
+    CHECK(g.meshes[0].primitives[0].material == 0);
+    const double dark = g.materials[0].pbrMetallicRoughness.baseColorFactor[0];
+    CHECK(dark < 0.2); // sRGB 0.2 is linear 0.033
+    CHECK(dark > 0);
+}
