@@ -44,6 +44,15 @@ inline void write_file(const std::filesystem::path& p, const std::string& text) 
     std::ofstream(p, std::ios::binary) << text;
 }
 
+// The path in double quotes, for the shell. (Built by appending: GCC 12 warns
+// -Wrestrict, wrongly, on "\"" + s + "\"".)
+inline std::string quoted(const std::filesystem::path& p) {
+    std::string s(1, '"');
+    s += p.string();
+    s += '"';
+    return s;
+}
+
 struct RunResult {
     int status = -1;
     std::string out, err;

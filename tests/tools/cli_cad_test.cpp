@@ -15,12 +15,6 @@ using namespace seamless;
 
 namespace {
 
-std::string q(const std::filesystem::path& p) {
-    std::string s = "\"";
-    s += p.string();
-    s += '"';
-    return s;
-}
 std::filesystem::path cad(const std::string& name) {
     return test::model_path("cad/" + name);
 }
@@ -42,12 +36,12 @@ TEST_CASE("seamless convert --help, and the CAD flags on info, tessellate, conve
 
 TEST_CASE("seamless info on STEP and IGES: surfaces, exactness, nothing else on stdout",
           "[cli][cad]") {
-    auto r = test::run_cli("info " + q(cad("bug28366_fuselage.stp")));
+    auto r = test::run_cli("info " + test::quoted(cad("bug28366_fuselage.stp")));
     CHECK(r.status == 0);
     CHECK(r.err.empty());
     CHECK_THAT(r.out, Catch::Contains("8 surfaces") && Catch::Contains("#55: degree 3x3") &&
                           Catch::Contains("from B-spline (exact)"));
-    auto j = test::run_cli("info --json " + q(cad("torus.igs")));
+    auto j = test::run_cli("info --json " + test::quoted(cad("torus.igs")));
     CHECK(j.status == 0);
     CHECK_THAT(j.out, Catch::Contains("\"entity\": \"DE3\"") &&
                           Catch::Contains("\"approximation_error\": 0.0"));
@@ -58,7 +52,7 @@ TEST_CASE("seamless convert writes a JSON model equal to the reader's model", "[
     for (const char* name : {"splinecage.stp", "rounded_cube.iges"}) {
         INFO(name);
         const auto out = dir / (std::string(name) + ".json");
-        auto r = test::run_cli("convert " + q(cad(name)) + " -o " + q(out));
+        auto r = test::run_cli("convert " + test::quoted(cad(name)) + " -o " + test::quoted(out));
         CHECK(r.status == 0);
         CHECK(r.err.empty());
         CHECK_THAT(r.out, Catch::Contains("exact, 0 approximated"));
@@ -73,7 +67,8 @@ TEST_CASE("seamless convert writes a JSON model equal to the reader's model", "[
         }
     }
     // Unknown output extension: refused before reading the model.
-    auto bad = test::run_cli("convert " + q(cad("torus.igs")) + " -o " + q(dir / "out.obj"));
+    auto bad = test::run_cli("convert " + test::quoted(cad("torus.igs")) + " -o " +
+                             test::quoted(dir / "out.obj"));
     CHECK(bad.status == 2);
     CHECK(lines(bad.err) == 1);
     CHECK_FALSE(std::filesystem::exists(dir / "out.obj"));
@@ -83,32 +78,34 @@ TEST_CASE("tire.iges: read as a B-rep, --skip-trimmed and --untrimmed warn", "[c
     auto dir = test::scratch_dir("cli-trimmed");
     const auto out = dir / "tire.json";
     // By default its two trimmed faces make it a B-rep: a version-2 JSON model.
-    auto brep = test::run_cli("convert " + q(cad("tire.iges")) + " -o " + q(out));
+    auto brep =
+        test::run_cli("convert " + test::quoted(cad("tire.iges")) + " -o " + test::quoted(out));
     CHECK(brep.status == 0);
     CHECK_THAT(brep.out, Catch::Contains("47 B-rep faces"));
     const Model read_back = load_model(out);
     CHECK(read_back.brep.faces.size() == 47);
     CHECK(read_back.surfaces.size() == 47);
 
-    auto skipped = test::run_cli("convert --skip-trimmed " + q(cad("tire.iges")) + " -o " + q(out));
+    auto skipped = test::run_cli("convert --skip-trimmed " + test::quoted(cad("tire.iges")) +
+                                 " -o " + test::quoted(out));
     CHECK(skipped.status == 0);
     CHECK(lines(skipped.err) == 1);
     CHECK_THAT(skipped.err,
                Catch::StartsWith("warning: ") && Catch::Contains("skipped 2 trimmed faces"));
     CHECK(load_model(out).surfaces.size() == 45);
 
-    auto whole = test::run_cli("info --untrimmed " + q(cad("tire.iges")));
+    auto whole = test::run_cli("info --untrimmed " + test::quoted(cad("tire.iges")));
     CHECK(whole.status == 0);
     CHECK_THAT(whole.err, Catch::StartsWith("warning: ") &&
                               Catch::Contains("whole surfaces of 2 trimmed faces"));
     CHECK_THAT(whole.out, Catch::Contains("47 surfaces"));
 
-    auto both = test::run_cli("info --skip-trimmed --untrimmed " + q(cad("tire.iges")));
+    auto both = test::run_cli("info --skip-trimmed --untrimmed " + test::quoted(cad("tire.iges")));
     CHECK(both.status == 2);
 
     const auto mesh = dir / "tire.off";
-    auto tess =
-        test::run_cli("tessellate --skip-trimmed " + q(cad("tire.iges")) + " -o " + q(mesh));
+    auto tess = test::run_cli("tessellate --skip-trimmed " + test::quoted(cad("tire.iges")) +
+                              " -o " + test::quoted(mesh));
     CHECK(tess.status == 0);
     CHECK_THAT(tess.out, Catch::Contains("45 surfaces"));
     CHECK(std::filesystem::exists(mesh));
@@ -122,10 +119,11 @@ TEST_CASE("bad STEP/IGES files: one line naming the file, exit 2, no output",
     test::write_file(dir / "empty.stp", "");
     for (const char* name : {"words.step", "words.igs", "empty.stp", "missing.iges"}) {
         INFO(name);
-        const std::vector<std::string> cmds = {"info ", "convert -o " + q(dir / "out.json") + " ",
-                                               "tessellate -o " + q(dir / "out.off") + " "};
+        const std::vector<std::string> cmds = {
+            "info ", "convert -o " + test::quoted(dir / "out.json") + " ",
+            "tessellate -o " + test::quoted(dir / "out.off") + " "};
         for (const std::string& cmd : cmds) {
-            auto r = test::run_cli(cmd + q(dir / name));
+            auto r = test::run_cli(cmd + test::quoted(dir / name));
             CHECK(r.status == 2);
             CHECK(r.out.empty());
             CHECK(lines(r.err) == 1);
@@ -145,9 +143,10 @@ TEST_CASE("tire.iges: seams within 1.2e-3 reported by check, stitched by --seam-
           "[cli][cad]") {
     const auto dir = test::scratch_dir("cli_cad_tire_seams");
     const auto mesh = dir / "tire.off";
-    auto r = test::run_cli("tessellate --skip-trimmed " + q(cad("tire.iges")) + " -o " + q(mesh));
+    auto r = test::run_cli("tessellate --skip-trimmed " + test::quoted(cad("tire.iges")) + " -o " +
+                           test::quoted(mesh));
     REQUIRE(r.status == 0);
-    r = test::run_cli("check --json " + q(mesh));
+    r = test::run_cli("check --json " + test::quoted(mesh));
     CHECK(r.status == 1);
     auto j = nlohmann::json::parse(r.out);
     CHECK(j["seams"]["count"] == 4);
@@ -157,10 +156,10 @@ TEST_CASE("tire.iges: seams within 1.2e-3 reported by check, stitched by --seam-
         CHECK(seam["gap"].get<double>() < 2e-3);
     }
     // (100x finer tolerances: tests/tessellate/cad_tessellation_test.cpp.)
-    r = test::run_cli("tessellate --skip-trimmed --seam-tolerance 2e-3 " + q(cad("tire.iges")) +
-                      " -o " + q(mesh));
+    r = test::run_cli("tessellate --skip-trimmed --seam-tolerance 2e-3 " +
+                      test::quoted(cad("tire.iges")) + " -o " + test::quoted(mesh));
     REQUIRE(r.status == 0);
-    r = test::run_cli("check --json " + q(mesh));
+    r = test::run_cli("check --json " + test::quoted(mesh));
     CHECK(r.status == 0);
     j = nlohmann::json::parse(r.out);
     CHECK(j["passed"] == true);

@@ -15,13 +15,6 @@ using namespace seamless;
 
 namespace {
 
-std::string q(const std::filesystem::path& p) {
-    std::string s = "\"";
-    s += p.string();
-    s += '"';
-    return s;
-}
-
 int lines(const std::string& s) {
     return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
 }
@@ -40,12 +33,13 @@ TEST_CASE("Every reproducer: info, tessellate, convert and render end with exit 
         test::write_file(scene,
                          R"({"version": 1, "camera": {"eye": [0, -5, 1], "look_at": [0, 0, 0]},
             "objects": [{"model": )" +
-                             q(f) + "}]}");
+                             test::quoted(f) + "}]}");
         const auto out = dir / "out";
         for (const std::string& cmd :
-             {"info " + q(f), "tessellate " + q(f) + " -o " + q(out.string() + ".glb"),
-              "convert " + q(f) + " -o " + q(out.string() + ".json"),
-              "render " + q(scene) + " -o " + q(out.string() + ".png")}) {
+             {"info " + test::quoted(f),
+              "tessellate " + test::quoted(f) + " -o " + test::quoted(out.string() + ".glb"),
+              "convert " + test::quoted(f) + " -o " + test::quoted(out.string() + ".json"),
+              "render " + test::quoted(scene) + " -o " + test::quoted(out.string() + ".png")}) {
             INFO(cmd);
             const auto r = test::run_cli(cmd);
             CHECK(r.status == 2);
@@ -61,7 +55,7 @@ TEST_CASE("Every reproducer: info, tessellate, convert and render end with exit 
 
 TEST_CASE("Neither the program nor the library links OpenCASCADE", "[cli][cad][heavy]") {
     // ldd lists every library the dynamic loader maps at start-up.
-    std::FILE* p = popen(("ldd " + q(SEAMLESS_CLI)).c_str(), "r");
+    std::FILE* p = popen(("ldd " + test::quoted(SEAMLESS_CLI)).c_str(), "r");
     REQUIRE(p);
     std::string out;
     char buf[4096];

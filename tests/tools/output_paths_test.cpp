@@ -23,15 +23,6 @@ std::string content(const fs::path& p) {
     return ss.str();
 }
 
-// The path in double quotes, for the shell. (Built by appending: GCC 12 warns
-// -Wrestrict, wrongly, on "\"" + s + "\"".)
-std::string q(const fs::path& p) {
-    std::string s(1, '"');
-    s += p.string();
-    s += '"';
-    return s;
-}
-
 // Nothing but `expected` in `dir` (no staging files left behind either).
 bool only_files(const fs::path& dir, std::set<std::string> expected) {
     std::set<std::string> got;
@@ -58,15 +49,20 @@ TEST_CASE("An output that is the same file as an input is refused, by inode not 
         std::string args, file;
     };
     for (const Case& c :
-         {Case{"tessellate " + q(dir / "m.obj") + " -o " + q(dir / "m.obj"), "m.obj"},
-          Case{"tessellate " + q(dir / "m.json") + " -o " + q(dir / "." / "hard.obj"), "m.json"},
-          Case{"tessellate " + q(dir / "m.json") + " -o " + q(dir / "x.obj") + " --stats " +
-                   q(dir / "m.json"),
+         {Case{"tessellate " + test::quoted(dir / "m.obj") + " -o " + test::quoted(dir / "m.obj"),
+               "m.obj"},
+          Case{"tessellate " + test::quoted(dir / "m.json") + " -o " +
+                   test::quoted(dir / "." / "hard.obj"),
                "m.json"},
-          Case{"render " + q(dir / "s.json") + " -o " + q(dir / "s.json"), "s.json"},
-          Case{"render " + q(dir / "s.json") + " -o " + q(dir / "link.png"), "s.json"},
-          Case{"render " + q(dir / "s.json") + " -o " + q(dir / "x.png") + " --stats " +
-                   q(dir / "m.json"),
+          Case{"tessellate " + test::quoted(dir / "m.json") + " -o " + test::quoted(dir / "x.obj") +
+                   " --stats " + test::quoted(dir / "m.json"),
+               "m.json"},
+          Case{"render " + test::quoted(dir / "s.json") + " -o " + test::quoted(dir / "s.json"),
+               "s.json"},
+          Case{"render " + test::quoted(dir / "s.json") + " -o " + test::quoted(dir / "link.png"),
+               "s.json"},
+          Case{"render " + test::quoted(dir / "s.json") + " -o " + test::quoted(dir / "x.png") +
+                   " --stats " + test::quoted(dir / "m.json"),
                "m.json"}}) {
         INFO(c.args);
         const std::string before = content(dir / c.file);
@@ -83,29 +79,33 @@ TEST_CASE("A stats file in a missing folder: nothing written, checked before the
     const auto dir = test::scratch_dir("stats-missing-folder");
     test::write_file(dir / "m.json", kModel);
     test::write_file(dir / "s.json", kScene);
-    auto r = test::run_cli("tessellate " + q(dir / "m.json") + " -o " + q(dir / "m.obj") +
-                               " --stats " + q(dir / "no" / "stats.json"),
+    auto r = test::run_cli("tessellate " + test::quoted(dir / "m.json") + " -o " +
+                               test::quoted(dir / "m.obj") + " --stats " +
+                               test::quoted(dir / "no" / "stats.json"),
                            "stats-missing");
     CHECK(r.status == 2);
     CHECK_THAT(r.err, Catch::Contains("stats.json: cannot write: folder"));
-    r = test::run_cli("render " + q(dir / "s.json") + " -o " + q(dir / "s.png") + " --stats " +
-                          q(dir / "no" / "stats.json"),
+    r = test::run_cli("render " + test::quoted(dir / "s.json") + " -o " +
+                          test::quoted(dir / "s.png") + " --stats " +
+                          test::quoted(dir / "no" / "stats.json"),
                       "stats-missing");
     CHECK(r.status == 2);
     CHECK(r.out.empty()); // refused before rendering
-    r = test::run_cli("tessellate " + q(dir / "m.json") + " -o " + q(dir / "no" / "m.obj") +
-                          " --stats " + q(dir / "stats.json"),
+    r = test::run_cli("tessellate " + test::quoted(dir / "m.json") + " -o " +
+                          test::quoted(dir / "no" / "m.obj") + " --stats " +
+                          test::quoted(dir / "stats.json"),
                       "stats-missing");
     CHECK(r.status == 2);
-    r = test::run_cli("tessellate " + q(dir / "m.json") + " -o " + q(dir / "m.obj") + " --stats " +
-                          q(dir / "m.obj"),
+    r = test::run_cli("tessellate " + test::quoted(dir / "m.json") + " -o " +
+                          test::quoted(dir / "m.obj") + " --stats " + test::quoted(dir / "m.obj"),
                       "stats-missing");
     CHECK(r.status == 2);
     CHECK_THAT(r.err, Catch::Contains("given twice as an output"));
     CHECK(only_files(dir, {"m.json", "s.json"}));
     // And with every output writable, both appear.
-    r = test::run_cli("tessellate " + q(dir / "m.json") + " -o " + q(dir / "m.obj") + " --stats " +
-                          q(dir / "stats.json"),
+    r = test::run_cli("tessellate " + test::quoted(dir / "m.json") + " -o " +
+                          test::quoted(dir / "m.obj") + " --stats " +
+                          test::quoted(dir / "stats.json"),
                       "stats-missing");
     INFO(r.err);
     CHECK(r.status == 0);
