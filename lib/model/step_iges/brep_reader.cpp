@@ -13,6 +13,7 @@
 #include <seamless/model/step_iges/brep_faces.h>
 #include <seamless/model/step_iges/brep_gaps.h>
 #include <seamless/model/step_iges/messages.h>
+#include <seamless/model/step_iges/pcurve_repair.h>
 #include <seamless/model/step_iges/sewing.h>
 
 #include <BRepClass3d.hxx>
@@ -101,6 +102,7 @@ Model read_brep(const TransferredFile& t, const std::vector<std::string>& names,
     // reparametrised (OpenCASCADE's own fix; flagged edges are left alone).
     BRepLib::SameParameter(t.shape, 1e-7);
     const SewnShape s = sew_free_faces(t, names, file);
+    const std::string repaired = repair_pcurves(s.faces, s.names, file);
     FaceContext ctx{s.faces, s.names, file, options, {}, {}};
     // Edges and vertices of the faces only: a file's wireframe (AP242
     // annotations, construction curves) would be edges no face uses.
@@ -115,6 +117,7 @@ Model read_brep(const TransferredFile& t, const std::vector<std::string>& names,
     Model m;
     m.source = file;
     if (!s.warning.empty()) m.warnings.push_back(s.warning);
+    if (!repaired.empty()) m.warnings.push_back(repaired);
     read_faces(ctx, m);
     ShellReader(t, s, m.brep).read();
     check_gaps(m, file);

@@ -109,6 +109,41 @@ struct Splitter {
     }
 };
 
+// Rounding, relative to a point's coordinates: closer points are one.
+constexpr double kSamePoint = 1e-12;
+
+bool same_point(Vec3 a, Vec3 b) {
+    return distance(a, b) <= kSamePoint * (1 + std::max(norm(a), norm(b)));
+}
+
+// Points where the curve stands still between two breaks (a composite
+// curve's zero-length piece: its kinks at both ends are breaks), when every
+// pcurve stands still there too: left in, they would be a zero-length
+// segment of every face's loop. The edge's ends stay.
+void drop_stationary_points(EdgePolyline& line, const std::vector<EdgeOnFace>& uses) {
+    const auto stationary = [&](size_t i, size_t j) {
+        if (!same_point(line.points[i], line.points[j])) return false;
+        for (const EdgeOnFace& use : uses)
+            if (!same_point(evaluate(*use.pcurve, line.t[i]).point,
+                            evaluate(*use.pcurve, line.t[j]).point))
+                return false;
+        return true;
+    };
+    size_t n = 1;
+    for (size_t k = 1; k < line.t.size(); ++k) {
+        const bool last = k + 1 == line.t.size();
+        if (stationary(n - 1, k)) {
+            if (!last) continue;
+            if (n > 1) --n; // the end vertex replaces the interior point
+        }
+        line.t[n] = line.t[k];
+        line.points[n] = line.points[k];
+        ++n;
+    }
+    line.t.resize(n);
+    line.points.resize(n);
+}
+
 } // namespace
 
 EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeOnFace>& uses,
@@ -142,6 +177,7 @@ EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeO
         if (b > a) s.split(a, b, 0);
         a = std::max(a, b);
     }
+    drop_stationary_points(line, uses);
     return line;
 }
 
@@ -158,9 +194,13 @@ void halve_segments(const BRep& brep, int edge, EdgePolyline& line,
         const bool listed = next != segments.end() && *next == static_cast<int>(k - 1);
         if (listed) ++next;
         const double m = 0.5 * (line.t[k - 1] + line.t[k]);
-        if ((segments.empty() || listed) && m > line.t[k - 1] && m < line.t[k]) {
+        const Vec3 pm = s.point(m);
+        // A midpoint on a piece where the curve stands still would make a
+        // zero-length segment.
+        if ((segments.empty() || listed) && m > line.t[k - 1] && m < line.t[k] &&
+            !same_point(pm, line.points[k - 1]) && !same_point(pm, line.points[k])) {
             t.push_back(m);
-            points.push_back(s.point(m));
+            points.push_back(pm);
         }
         t.push_back(line.t[k]);
         points.push_back(line.points[k]);

@@ -3,6 +3,7 @@
 #include <seamless/tessellate/trimmed/face_domain.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace seamless {
 
@@ -48,9 +49,19 @@ void metric_scale(const FaceSurface& s, const Box3& box, double& su, double& sv)
 // the loops meet at a small angle. Images of one vertex closer than its
 // tolerance (on the scaled domain, whose unit is about one model unit) or
 // than rounding are made one; a seam's or a pole's images are far apart.
+// Not where they are farther apart than a fraction of a boundary segment
+// leaving either: on a face smaller than its tolerance a closed edge's two
+// ends would fold the loop back on itself.
 void merge_vertex_images(const BRep& brep, const Box3& box, FaceDomain& d) {
+    constexpr double kSegmentFraction = 0.25;
     const double rounding =
         1e-12 * norm(Vec3{(box.hi.x - box.lo.x) * d.su, (box.hi.y - box.lo.y) * d.sv, 0});
+    std::vector<double> shortest(d.size(), std::numeric_limits<double>::infinity());
+    for (const auto& [a, b] : d.segments) {
+        const double l = distance(d.scaled[a], d.scaled[b]);
+        shortest[a] = std::min(shortest[a], l);
+        shortest[b] = std::min(shortest[b], l);
+    }
     std::vector<std::pair<std::int64_t, int>> first; // key, first image
     for (int i = 0; i < d.size(); ++i) {
         if (!is_vertex_key(d.keys[i])) continue;
@@ -58,7 +69,10 @@ void merge_vertex_images(const BRep& brep, const Box3& box, FaceDomain& d) {
             std::max(rounding, brep.vertices[static_cast<size_t>(d.keys[i])].tolerance);
         bool merged = false;
         for (const auto& [key, j] : first)
-            if (key == d.keys[i] && distance(d.scaled[i], d.scaled[j]) <= near) {
+            if (key == d.keys[i] &&
+                distance(d.scaled[i], d.scaled[j]) <=
+                    std::max(rounding, std::min(near, kSegmentFraction *
+                                                          std::min(shortest[i], shortest[j])))) {
                 d.uv[i] = d.uv[j];
                 d.scaled[i] = d.scaled[j];
                 merged = true;

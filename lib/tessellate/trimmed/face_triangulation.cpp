@@ -261,13 +261,23 @@ std::vector<int> segments_of(const FaceDomain& d, std::vector<std::array<int, 2>
     return out;
 }
 
+// A face whose every edge is degenerate is a point in space: nothing to
+// mesh, and no neighbour shares a mesh edge with it.
+bool collapsed(const BRep& brep, const BRepFace& f) {
+    for (const BRepLoop& loop : f.loops)
+        for (const BRepCoedge& c : loop.coedges)
+            if (!brep.edges[c.edge].degenerate()) return false;
+    return true;
+}
+
 } // namespace
 
 FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& lines, int face,
                           const FaceCriteria& criteria) {
     const BRepFace& f = model.brep.faces[face];
-    const FaceSurface s(model.surfaces[f.surface]);
     FaceMesh out;
+    if (collapsed(model.brep, f)) return out;
+    const FaceSurface s(model.surfaces[f.surface]);
     out.domain = face_domain(model, lines, face);
     FaceDomain& d = out.domain;
     ConstrainedTriangulation cdt;

@@ -162,6 +162,36 @@ TEST_CASE("trimmed faces: the solids at 1e-4 of the diagonal", "[brep][heavy]") 
     }
 }
 
+TEST_CASE("trimmed faces: a face whose only edge is degenerate is a point, meshed as nothing",
+          "[brep][heavy]") {
+    // A collapsed face (as real files have): the cone's apex bounded by the
+    // degenerate tip edge alone.
+    BRepCase c = cone_solid();
+    BRep& b = c.model.brep;
+    int tip = -1;
+    for (size_t e = 0; e < b.edges.size(); ++e)
+        if (b.edges[e].degenerate()) tip = static_cast<int>(e);
+    REQUIRE(tip >= 0);
+    BSplineCurve along_apex;
+    along_apex.degree = 1;
+    along_apex.knots = {0, 0, 4, 4};
+    along_apex.points = {{0, 1, 0}, {4, 1, 0}};
+    b.pcurves.push_back(along_apex);
+    BRepFace apex;
+    apex.surface = b.faces[0].surface;
+    apex.name = "#apex";
+    apex.loops.push_back({{{tip, false, static_cast<int>(b.pcurves.size()) - 1}}});
+    b.faces.push_back(apex);
+    b.shells[0].faces.push_back(static_cast<int>(b.faces.size()) - 1);
+    const Tessellation with = tessellate(c.model, {});
+    const Tessellation without = tessellate(cone_solid().model, {});
+    CHECK(with.mesh.triangle_count() == without.mesh.triangle_count());
+    CHECK(with.stats.brep.faces_left_out == 0);
+    const MeshReport r = analyse_mesh(with.mesh, 1);
+    CHECK(r.border_edges == 0);
+    CHECK(r.euler() == 2);
+}
+
 TEST_CASE("trimmed faces: adjacent faces share their boundary vertices", "[brep]") {
     const BRepCase c = cylinder_solid();
     const Tessellation t = tessellate(c.model, {});

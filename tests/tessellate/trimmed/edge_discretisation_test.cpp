@@ -44,3 +44,32 @@ TEST_CASE("edge discretisation: a circle's chords within D, its turning within t
         for (size_t k = 0; k < line.t.size(); ++k) CHECK(halved.t[2 * k] == line.t[k]);
     }
 }
+
+TEST_CASE("edge discretisation: a curve standing still between two kinks leaves no zero-length "
+          "segment",
+          "[brep]") {
+    // A composite curve's zero-length piece (IGES 102 after sewing): the
+    // degree-1 curve stands still over [1, 2], whose ends are both kinks.
+    BRepBuilder b;
+    const int v0 = b.vertex({0, 0, 0}), v1 = b.vertex({2, 0, 0});
+    BSplineCurve c;
+    c.degree = 1;
+    c.knots = {0, 0, 1, 2, 3, 3};
+    c.points = {{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+    const int e = b.edge(c, v0, v1);
+    const BRep& brep = b.m.brep;
+    const auto no_zero_length = [](const EdgePolyline& line) {
+        for (size_t k = 1; k < line.points.size(); ++k)
+            if (!(distance(line.points[k - 1], line.points[k]) > 0)) return false;
+        return true;
+    };
+    EdgePolyline line = discretise_edge(brep, e, {}, {1e-3, 0.5});
+    CHECK(line.points.front() == brep.vertices[v0].point);
+    CHECK(line.points.back() == brep.vertices[v1].point);
+    CHECK(no_zero_length(line));
+    // Halving does not put a point on the still piece either.
+    for (int round = 0; round < 3; ++round) {
+        halve_segments(brep, e, line);
+        CHECK(no_zero_length(line));
+    }
+}
