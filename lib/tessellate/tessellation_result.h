@@ -34,6 +34,9 @@ struct BRepStats {
     int interior_points = 0;  // mesh vertices inside faces
     int resplit_rounds = 0;   // rounds that re-split the edges of faces whose CDT failed
     int resplit_edges = 0;    // edges re-split in them
+    // Work counters: faces triangulated (a face redone after a re-split
+    // counts again) and triangles judged against D and the angle.
+    long long face_runs = 0, judged_triangles = 0;
     int faces_left_out = 0;   // by TessellationOptions::allow_holes
     int above_tolerance = 0;  // triangles the refinement limits stopped above D or the angle
     double angle = 0;         // radians, used (0.5 by default)

@@ -50,6 +50,8 @@ std::string tessellation_stats_json(const TessellationStats& s, const StatsSourc
                       {"interior_points", b.interior_points},
                       {"resplit_rounds", b.resplit_rounds},
                       {"resplit_edges", b.resplit_edges},
+                      {"face_runs", b.face_runs},
+                      {"judged_triangles", b.judged_triangles},
                       {"faces_left_out", b.faces_left_out},
                       {"above_tolerance", b.above_tolerance},
                       {"angle", b.angle},

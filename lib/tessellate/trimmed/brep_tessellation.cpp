@@ -86,6 +86,7 @@ struct Faces {
     std::vector<FaceMesh> meshes;
     std::vector<int> failed;
     int rounds = 0, resplit_edges = 0;
+    long long face_runs = 0, judged = 0;
 };
 
 // What a re-split round halves: per edge in `edges`, the listed segments
@@ -177,6 +178,8 @@ Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
         for_each_item(static_cast<int>(pending.size()), threads, [&](int i) {
             r.meshes[pending[i]] = triangulate_face(model, lines, pending[i], criteria);
         });
+        r.face_runs += static_cast<long long>(pending.size());
+        for (int f : pending) r.judged += r.meshes[f].judged;
         std::vector<int> redo;
         for (int f : pending)
             if (r.meshes[f].failed || !r.meshes[f].encroached.empty()) redo.push_back(f);
@@ -257,6 +260,8 @@ Tessellation tessellate_at_scale(const Model& model, const TessellationOptions& 
     st.edges = static_cast<int>(brep.edges.size());
     st.resplit_rounds = faces.rounds;
     st.resplit_edges = faces.resplit_edges;
+    st.face_runs = faces.face_runs;
+    st.judged_triangles = faces.judged;
     for (size_t e = 0; e < lines.size(); ++e) {
         if (!brep.edges[e].degenerate())
             st.edge_points += std::max(0, static_cast<int>(lines[e].t.size()) - 2);

@@ -301,6 +301,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         for (size_t i = 0; i < tris.size(); ++i) {
             const TriangleKey key = key_of(tris[i].corners);
             const auto hit = known.find(key);
+            if (hit == known.end()) ++out.judged;
             verdicts[i] = hit != known.end() ? hit->second : known[key] = r.judge(tris[i]);
             if (verdicts[i].split) failing.push_back(static_cast<int>(i));
         }

@@ -29,6 +29,7 @@ struct FaceMesh {
     std::vector<std::array<Vec3, 3>> normals;  // unit surface normals at the corners, outward
     double deviation = 0;                      // largest sampled deviation of the triangles
     int above_tolerance = 0;                   // triangles the limits left above D or the angle
+    long long judged = 0;                      // triangles judged (a work counter)
     bool failed = false; // the loops did not triangulate (crossing or overlapping segments)
     // When triangles stay above the limits: boundary segments (indices into
     // domain.segments) whose triangles' circumcentres fell outside the face
