@@ -175,8 +175,10 @@ Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
     std::vector<int> pending(brep.faces.size());
     for (size_t f = 0; f < pending.size(); ++f) pending[f] = static_cast<int>(f);
     for (;; ++r.rounds) {
+        FaceCriteria c = criteria;
+        c.stop_when_encroached = r.rounds < kResplitRounds;
         for_each_item(static_cast<int>(pending.size()), threads, [&](int i) {
-            r.meshes[pending[i]] = triangulate_face(model, lines, pending[i], criteria);
+            r.meshes[pending[i]] = triangulate_face(model, lines, pending[i], c);
         });
         r.face_runs += static_cast<long long>(pending.size());
         for (int f : pending) r.judged += r.meshes[f].judged;

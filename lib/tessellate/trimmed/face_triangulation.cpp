@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 namespace seamless {
@@ -19,6 +20,12 @@ constexpr int kRounds = 64;
 // carried pcurves stray from it) stops at this many triangles, the rest
 // counted above the tolerance, instead of filling the model's budget.
 constexpr size_t kMaxFaceTriangles = 100'000;
+// Rounds a boundary side must be found encroached in before it counts as
+// one refinement does not mend (FaceCriteria::stop_when_encroached).
+constexpr int kPersistent = 8;
+// Only faces grown past this many triangles stop so: a small face's
+// refinement costs little, and left alone it mends most encroachments.
+constexpr size_t kStopSize = 4096;
 
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
 // k), three points between the centroid and the corners, and three between
@@ -103,6 +110,17 @@ struct Refiner {
     Vec3 inward;
     std::vector<Vec3> normal;                   // per point, computed once
     std::vector<std::array<int, 2>> encroached; // boundary sides, point indices
+    int round = 0;                              // of refinement, for persistence
+    // Per side found encroached: the last round it was, and in how many.
+    std::map<std::array<int, 2>, std::array<int, 2>> rounds_encroached;
+
+    // Sides found encroached in kPersistent rounds or more.
+    std::vector<std::array<int, 2>> persistent() const {
+        std::vector<std::array<int, 2>> out;
+        for (const auto& [side, seen] : rounds_encroached)
+            if (seen[1] >= kPersistent) out.push_back(side);
+        return out;
+    }
 
     Vec3 point_normal(int i) {
         while (static_cast<int>(normal.size()) <= i)
@@ -211,6 +229,8 @@ struct Refiner {
             const int a = t.corners[(k + 1) % 3], b = t.corners[(k + 2) % 3];
             if (!t.boundary[k] || (d.pole[a] != Vec3{} && d.pole[b] != Vec3{})) continue;
             encroached.push_back({a, b});
+            auto& seen = rounds_encroached[{std::min(a, b), std::max(a, b)}];
+            if (seen[1] == 0 || seen[0] != round) seen = {round, seen[1] + 1};
             any = true;
         }
         return any;
@@ -285,12 +305,13 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         out.failed = true;
         return out;
     }
-    Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}, {}};
+    Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}, {}, 0, {}};
     std::vector<DomainTriangle> tris;
     std::vector<Verdict> verdicts;
     // A triangle the insertions left alone keeps its verdict.
     std::unordered_map<TriangleKey, Verdict, TriangleKeyHash> known;
     std::vector<int> failing;
+    bool stopped = false; // by FaceCriteria::stop_when_encroached
     for (int round = 0;; ++round) {
         cdt.triangles(tris);
         if (static_cast<std::int64_t>(tris.size()) > criteria.max_triangles)
@@ -306,6 +327,11 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (verdicts[i].split) failing.push_back(static_cast<int>(i));
         }
         if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
+        if (criteria.stop_when_encroached && tris.size() > kStopSize && !r.persistent().empty()) {
+            stopped = true;
+            break;
+        }
+        r.round = round;
         // The worst first: their points make room that their neighbours' need not.
         std::stable_sort(failing.begin(), failing.end(),
                          [&](int a, int b) { return verdicts[a].badness > verdicts[b].badness; });
@@ -314,7 +340,10 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (r.insert_for(cdt, tris[i])) inserted = true;
         if (!inserted) break;
     }
-    if (std::any_of(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return v.split; }))
+    if (stopped)
+        out.encroached = segments_of(d, r.persistent());
+    else if (std::any_of(verdicts.begin(), verdicts.end(),
+                         [](const Verdict& v) { return v.split; }))
         out.encroached = segments_of(d, r.encroached);
     for (size_t i = 0; i < tris.size(); ++i) {
         const Verdict& v = verdicts[i];

@@ -21,6 +21,11 @@ struct FaceCriteria {
     double deviation = 0; // D, model units
     double angle = 0.5;   // radians
     std::int64_t max_triangles = 10'000'000;
+    // Stop refining once a boundary segment has been found encroached in
+    // several rounds (refinement does not mend it): the face is redone after
+    // such segments are halved, so refining it further is wasted. All but
+    // the last re-split round.
+    bool stop_when_encroached = false;
 };
 
 struct FaceMesh {
