@@ -183,7 +183,9 @@ class ObjectReader {
         if (ec) key = path;
         auto cached = models_.find(key);
         if (cached == models_.end()) {
-            cached = models_.emplace(key, SceneModel{load_model(path), {}}).first;
+            ModelLoadOptions placed = lim_.models;
+            placed.keep_assembly = false;
+            cached = models_.emplace(key, SceneModel{load_model(path, placed), {}}).first;
             sc.model_files.push_back(path);
             const Model& loaded = cached->second.model;
             sc.model.warnings.insert(sc.model.warnings.end(), loaded.warnings.begin(),

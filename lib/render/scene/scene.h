@@ -85,6 +85,10 @@ struct SceneLimits {
     // Models alone allow 2^510 (kMaxCoordinate): tessellation works at unit scale.
     double max_coordinate = 0x1p200;
     double min_extent = 0x1p-200;
+    // How the objects' model files are read (the STEP/IGES reader's limits:
+    // render --reader-time-limit, --reader-memory-limit); an assembly is
+    // always placed, whatever keep_assembly says.
+    ModelLoadOptions models;
 };
 
 // Reads a scene file and the models it names (paths relative to the scene's
