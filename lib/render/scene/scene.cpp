@@ -117,11 +117,12 @@ Material colour_material(const Rgba& c, const std::string& name) {
     return m;
 }
 
-// A model file a scene names, read once, with the scene materials of its
-// colours (one per Model::assembly colour, -1 until an object shows it).
+// A model file a scene names, read once, and the scene material of each of
+// its surfaces in the file's colours (-1: a face without a colour; empty
+// until an object shows them).
 struct SceneModel {
     Model model;
-    std::vector<int> colour_material;
+    std::vector<int> surface_material;
 };
 
 // The objects of a scene: each names a model file, read once however many
@@ -231,27 +232,34 @@ class ObjectReader {
 
     // An object that names no material shows its file's colours (face over
     // solid over part, assembly.h): each colour a face has becomes a scene
-    // material when an object first shows it, shared by every object of the
-    // file, and the surfaces of the coloured faces take it. Files without
-    // colours cost nothing here.
+    // material when an object of the file first shows it, and the surfaces
+    // of the coloured faces take it, in every object of the file. Files
+    // without colours cost nothing here.
     static void show_file_colours(SceneModel& sm, SceneObject& so, Scene& sc) {
         const Model& m = sm.model;
         if (m.assembly.colours.empty()) return;
-        sm.colour_material.resize(m.assembly.colours.size(), -1);
-        const std::vector<int> colours = face_colours(m);
-        for (size_t f = 0; f < colours.size(); ++f) {
-            const int c = colours[f];
-            if (c < 0) continue;
-            if (sm.colour_material[c] < 0) {
-                sm.colour_material[c] = static_cast<int>(sc.materials.size());
-                sc.materials.push_back(
-                    colour_material(m.assembly.colours[c],
-                                    std::filesystem::path(so.model_path).filename().string() +
-                                        " colour " + std::to_string(c)));
+        if (sm.surface_material.empty()) {
+            sm.surface_material.assign(m.surfaces.size(), -1);
+            std::vector<int> material(m.assembly.colours.size(), -1);
+            const std::vector<int> colours = face_colours(m);
+            for (size_t f = 0; f < colours.size(); ++f) {
+                const int c = colours[f];
+                if (c < 0) continue;
+                if (material[c] < 0) {
+                    material[c] = static_cast<int>(sc.materials.size());
+                    sc.materials.push_back(
+                        colour_material(m.assembly.colours[c],
+                                        std::filesystem::path(so.model_path).filename().string() +
+                                            " colour " + std::to_string(c)));
+                }
+                sm.surface_material[m.brep.faces[f].surface] = material[c];
             }
-            sc.surface_material[so.first_surface + m.brep.faces[f].surface] = sm.colour_material[c];
-            so.file_colours = true;
         }
+        for (size_t s = 0; s < sm.surface_material.size(); ++s)
+            if (sm.surface_material[s] >= 0) {
+                sc.surface_material[so.first_surface + s] = sm.surface_material[s];
+                so.file_colours = true;
+            }
     }
 
     const SceneFields& r_;
