@@ -25,6 +25,7 @@ void add_render(CLI::App& app, Action& action) {
         bool no_dither = false;
     };
     auto a = std::make_shared<Args>();
+    auto limits = std::make_shared<SceneLimits>();
     auto* cmd = app.add_subcommand("render", "Ray trace a scene to PNG with INTRACY (interval "
                                              "screen subdivision), TRAY (one ray per pixel) or "
                                              "the per-pixel exact reference");
@@ -43,8 +44,9 @@ void add_render(CLI::App& app, Action& action) {
                   "INTRACY paints without dither noise: one level per cluster, or the bilinear "
                   "form within one level of the truth (TRAY: no effect)");
     cmd->add_option("--stats", a->stats, "write run statistics as JSON to this file");
-    cmd->callback([&action, a] {
-        action = [a] {
+    add_reader_limits(cmd, limits->models);
+    cmd->callback([&action, a, limits] {
+        action = [a, limits] {
             RenderOptions opt;
             opt.method = a->method == "tray"        ? RenderMethod::tray
                          : a->method == "reference" ? RenderMethod::reference
@@ -70,7 +72,7 @@ void add_render(CLI::App& app, Action& action) {
             keep_freed_memory(); // the steps reuse each other's pages (huge_pages.h)
             const Scene scene = [&] {
                 const WorkersWarmUp warm_up(a->threads); // while the scene is read
-                return load_scene(a->scene);
+                return load_scene(a->scene, *limits);
             }();
             print_warnings(scene.model); // e.g. approximated STEP/IGES surfaces
             std::vector<std::filesystem::path> models;

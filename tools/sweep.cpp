@@ -7,6 +7,7 @@
 // of docs/results/tessellation.md is written by bench/tessellation.
 // Exit status 1 when a measured deviation exceeds its bound.
 #include "commands.h"
+#include "model_options.h"
 #include "number_options.h"
 
 #include <seamless/base/files/atomic_file.h>
@@ -34,6 +35,7 @@ void add_sweep(CLI::App& app, Action& action) {
         std::string json;
     };
     auto args = std::make_shared<Args>();
+    auto load = std::make_shared<ModelLoadOptions>();
     cmd->add_option("MODEL", args->models,
                     "model files (.json, Newell .bpt, STEP, IGES; B-rep models sweep the deviation "
                     "D = f * 0.001 of their diagonal)")
@@ -53,8 +55,9 @@ void add_sweep(CLI::App& app, Action& action) {
                   "request the deviation D = f * 0.001 d_max instead of scaling the planarity "
                   "tolerances");
     cmd->add_option("--json", args->json, "write the rows as JSON to this file ('-': stdout)");
-    cmd->callback([&action, args] {
-        action = [args] {
+    add_reader_limits(cmd, *load);
+    cmd->callback([&action, args, load] {
+        action = [args, load] {
             SweepOptions opt;
             opt.tolerance = args->tolerance;
             opt.first_decade = args->first;
@@ -68,7 +71,7 @@ void add_sweep(CLI::App& app, Action& action) {
             nlohmann::json all = nlohmann::json::array();
             bool ok = true;
             for (const std::string& path : args->models) {
-                const Model m = load_model(path);
+                const Model m = load_model(path, *load);
                 text << std::filesystem::path(path).stem().string() << ":\n";
                 // Each row printed as soon as it is measured.
                 opt.on_row = [&](const SweepRow& r) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer harness: the scene reader. Scenes name model files; a scratch
-// folder holds two small ones (m.json, m.bpt) that the corpus refers to.
+// folder holds three small ones that the corpus refers to: m.json, m.bpt and
+// c.json, an assembly in colour (the objects naming it show its colours).
+#include "../model/brep_test_models.h"
 #include "fuzz_common.h"
 
 #include <seamless/render/scene/scene.h>
@@ -21,6 +23,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
                "knots_u": [0, 0, 1, 1], "knots_v": [0, 0, 1, 1],
                "control_points": [[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 1]]}]})";
     std::ofstream(folder / "m.bpt") << "1\n1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n";
+    std::ofstream(folder / "c.json") << seamless::to_json(seamless::test::small_assembly());
     return 0;
 }
 

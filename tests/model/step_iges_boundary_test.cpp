@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // STEP/IGES behind the process boundary (step_iges.h): OpenCASCADE's crashes
-// on the reproducers of ../shared/reproducers, a time-out and a memory
+// on the reproducers (../shared/reproducers and the fuzzer's since), a time-out and a memory
 // blow-up end as one InputError naming the file; the calling process never
 // maps OpenCASCADE; reads from several threads at once give the same models.
+#include "step_iges_reproducers.h"
 #include "test_util.h"
 
 #include <seamless/base/error.h>
@@ -17,14 +18,6 @@
 using namespace seamless;
 
 namespace {
-
-std::vector<std::filesystem::path> reproducers() {
-    std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(test::shared_dir() / "reproducers"))
-        if (is_step_iges_extension(e.path().extension().string())) files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
 
 std::string error_of(const std::filesystem::path& file, const ModelLoadOptions& options = {}) {
     try {
@@ -51,8 +44,8 @@ std::filesystem::path corpus(const std::string& name) {
 
 TEST_CASE("OpenCASCADE's crashes on the reproducers are one InputError naming the file",
           "[model][step_iges][heavy]") {
-    const auto files = reproducers();
-    REQUIRE(files.size() >= 6);
+    const auto files = test::step_iges_reproducers();
+    REQUIRE(files.size() >= 7);
     for (const auto& f : files) {
         INFO(f);
         const std::string e = error_of(f);
@@ -67,7 +60,7 @@ TEST_CASE("A good file read after a crash, and from four threads at once, gives 
           "[model][step_iges][heavy]") {
     const auto torus = test::model_path("cad/torus.igs");
     const std::string expected = write_model_exchange(load_model(torus));
-    const auto crasher = reproducers().front();
+    const auto crasher = test::step_iges_reproducers().front();
     std::vector<std::string> got(8);
     std::vector<std::thread> threads;
     for (size_t k = 0; k < got.size(); ++k)

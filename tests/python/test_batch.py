@@ -146,3 +146,20 @@ def test_interrupted_batch_loses_only_the_files_in_flight(tmp_path):
     assert len(manifest_lines(out)) == 4  # hang.json, in flight, is not recorded
     again = run_batch([models], out, workers=2, time_limit=1, cli=double)
     assert again["skipped_as_done"] == 3 and again["outcomes"]["timed out"] == 1
+
+
+def test_the_step_iges_reader_gets_the_files_limits(tmp_path):
+    # A test double that records its arguments, then runs the real program.
+    log = tmp_path / "calls.txt"
+    script = tmp_path / "recording_seamless"
+    script.write_text(f'#!/bin/sh\necho "$@" >>"{log}"\nexec "{cli_path()}" "$@"\n')
+    script.chmod(0o755)
+    models = tmp_path / "models"
+    models.mkdir()
+    shutil.copy(DATA / "models" / "cad" / "torus.igs", models / "torus.igs")
+    summary = run_batch([models], tmp_path / "out", workers=1, time_limit=42, memory_limit_mb=3000,
+                        cli=str(script))
+    assert summary["outcomes"]["ok"] == 1  # the real program took the reader's limits
+    (call,) = [line.split() for line in log.read_text().splitlines() if "tessellate" in line]
+    assert call[call.index("--reader-time-limit") + 1] == "42.0"
+    assert call[call.index("--reader-memory-limit") + 1] == "3000M"

@@ -10,11 +10,15 @@ import pytest
 import seamless
 from helpers import DATA, ROOT, cli_error_line
 
-REPRODUCERS = sorted(
-    p
-    for p in (ROOT.parent / "shared" / "reproducers").iterdir()
+# ../shared/reproducers, and the crashers the fuzzer has found since, kept as
+# fuzz_step_iges's seeds (tests/model/step_iges_reproducers.h): each name once.
+_SEEDS = ROOT / "tests" / "fuzz" / "corpus" / "step_iges"
+_BY_NAME = {
+    p.name: p
+    for p in list(_SEEDS.glob("occ-*-segv.*")) + list((ROOT.parent / "shared" / "reproducers").iterdir())
     if p.suffix in (".step", ".stp", ".igs", ".iges")
-)
+}
+REPRODUCERS = [_BY_NAME[name] for name in sorted(_BY_NAME)]
 
 
 def maps_opencascade():
@@ -22,7 +26,7 @@ def maps_opencascade():
 
 
 def test_there_are_reproducers():
-    assert len(REPRODUCERS) >= 6
+    assert len(REPRODUCERS) >= 7
 
 
 @pytest.mark.parametrize("path", REPRODUCERS, ids=lambda p: p.name)

@@ -105,6 +105,26 @@ std::map<std::string, int> read_materials(const SceneFields& r, const Json& root
     return index;
 }
 
+// A file colour as a scene material: the default finish in that colour;
+// its transparency (1 - alpha) lets light through unbent, as CAD viewers
+// show it (no lens: index of refraction 1).
+Material colour_material(const Rgba& c, const std::string& name) {
+    Material m;
+    m.name = name;
+    m.color = {c.r, c.g, c.b};
+    m.transmit = 1 - c.a;
+    m.ior = 1;
+    return m;
+}
+
+// A model file a scene names, read once, and the scene material of each of
+// its surfaces in the file's colours (-1: a face without a colour; empty
+// until an object shows them).
+struct SceneModel {
+    Model model;
+    std::vector<int> surface_material;
+};
+
 // The objects of a scene: each names a model file, read once however many
 // objects name it (by its canonical path, so "a.json" and "./a.json" are one
 // file), and its copy transformed into the scene.
@@ -120,7 +140,8 @@ class ObjectReader {
         so.model_path =
             (folder_ / r_.string(r_.member(o, "model", f + ".model"), f + ".model", "a file name"))
                 .string();
-        if (const Json* mat = JsonFields::find(o, "material")) {
+        const Json* mat = JsonFields::find(o, "material");
+        if (mat) {
             const std::string name = r_.string(*mat, f + ".material", "a material name");
             auto mi = materials_.find(name);
             if (mi == materials_.end())
@@ -130,7 +151,8 @@ class ObjectReader {
         double T[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
         const Json* t = JsonFields::find(o, "transform");
         if (t) read_transform(*t, f + ".transform", T);
-        const Model& m = model(so.model_path, sc);
+        SceneModel& sm = model(so.model_path, sc);
+        const Model& m = sm.model;
         // The limits hold for the whole scene, every object's copy counted.
         if (sc.model.surfaces.size() + m.surfaces.size() > lim_.max_surfaces)
             r_.fail(f, "the scene's objects hold more than " + std::to_string(lim_.max_surfaces) +
@@ -143,6 +165,7 @@ class ObjectReader {
         so.first_surface = static_cast<int>(sc.model.surfaces.size());
         so.surface_count = static_cast<int>(m.surfaces.size());
         place(m, T, t ? f + ".transform" : f, so, sc);
+        if (!mat) show_file_colours(sm, so, sc); // a scene's material wins over the file's
         sc.objects.push_back(so);
     }
 
@@ -155,15 +178,17 @@ class ObjectReader {
     }
 
     // The model at path, read on its first use (its errors name the model file).
-    const Model& model(const std::string& path, Scene& sc) {
+    SceneModel& model(const std::string& path, Scene& sc) {
         std::error_code ec;
         std::filesystem::path key = std::filesystem::weakly_canonical(path, ec);
         if (ec) key = path;
         auto cached = models_.find(key);
         if (cached == models_.end()) {
-            cached = models_.emplace(key, load_model(path)).first;
+            ModelLoadOptions placed = lim_.models;
+            placed.keep_assembly = false;
+            cached = models_.emplace(key, SceneModel{load_model(path, placed), {}}).first;
             sc.model_files.push_back(path);
-            const Model& loaded = cached->second;
+            const Model& loaded = cached->second.model;
             sc.model.warnings.insert(sc.model.warnings.end(), loaded.warnings.begin(),
                                      loaded.warnings.end());
         }
@@ -205,11 +230,43 @@ class ObjectReader {
                            " to one point (zero extent): nothing to render");
     }
 
+    // An object that names no material shows its file's colours (face over
+    // solid over part, assembly.h): each colour a face has becomes a scene
+    // material when an object of the file first shows it, and the surfaces
+    // of the coloured faces take it, in every object of the file. Files
+    // without colours cost nothing here.
+    static void show_file_colours(SceneModel& sm, SceneObject& so, Scene& sc) {
+        const Model& m = sm.model;
+        if (m.assembly.colours.empty()) return;
+        if (sm.surface_material.empty()) {
+            sm.surface_material.assign(m.surfaces.size(), -1);
+            std::vector<int> material(m.assembly.colours.size(), -1);
+            const std::vector<int> colours = face_colours(m);
+            for (size_t f = 0; f < colours.size(); ++f) {
+                const int c = colours[f];
+                if (c < 0) continue;
+                if (material[c] < 0) {
+                    material[c] = static_cast<int>(sc.materials.size());
+                    sc.materials.push_back(
+                        colour_material(m.assembly.colours[c],
+                                        std::filesystem::path(so.model_path).filename().string() +
+                                            " colour " + std::to_string(c)));
+                }
+                sm.surface_material[m.brep.faces[f].surface] = material[c];
+            }
+        }
+        for (size_t s = 0; s < sm.surface_material.size(); ++s)
+            if (sm.surface_material[s] >= 0) {
+                sc.surface_material[so.first_surface + s] = sm.surface_material[s];
+                so.file_colours = true;
+            }
+    }
+
     const SceneFields& r_;
     const SceneLimits& lim_;
     const std::filesystem::path& folder_;
     const std::map<std::string, int>& materials_;
-    std::map<std::filesystem::path, Model> models_;
+    std::map<std::filesystem::path, SceneModel> models_;
     long long total_points_ = 0;
 };
 

@@ -36,7 +36,11 @@ struct Material {
 
 struct SceneObject {
     std::string model_path;
-    int material = 0;  // index into Scene::materials
+    int material = 0; // index into Scene::materials
+    // The scene names no material for it and its file has colours (a STEP or
+    // IGES file's styles, Model::assembly): its coloured faces are in the
+    // file's colours (scene.cpp), the others in `material`.
+    bool file_colours = false;
     int first_surface; // this object's surfaces in Scene::model.surfaces
     int surface_count;
 };
@@ -53,7 +57,8 @@ struct Scene {
     int max_depth = 2;
     // All objects' surfaces, transformed to world space, in object order.
     Model model;
-    // material index of each surface of `model`
+    // material index of each surface of `model` (a B-rep face's is its
+    // surface's: the readers give each face a surface of its own)
     std::vector<int> surface_material;
     // The model files read, each once however many objects name it.
     std::vector<std::string> model_files;
@@ -80,6 +85,10 @@ struct SceneLimits {
     // Models alone allow 2^510 (kMaxCoordinate): tessellation works at unit scale.
     double max_coordinate = 0x1p200;
     double min_extent = 0x1p-200;
+    // How the objects' model files are read (the STEP/IGES reader's limits:
+    // render --reader-time-limit, --reader-memory-limit); an assembly is
+    // always placed, whatever keep_assembly says.
+    ModelLoadOptions models;
 };
 
 // Reads a scene file and the models it names (paths relative to the scene's

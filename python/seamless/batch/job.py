@@ -167,6 +167,10 @@ def _tessellate_and_check(input_path, outputs, options):
     os.makedirs(os.path.dirname(outputs["mesh"]), exist_ok=True)
     command = [cli, "tessellate", input_path, "-o", outputs["mesh"], "--stats", outputs["stats"]]
     command += ["--threads", str(options["threads"])]
+    # The STEP/IGES reader's own limits (600 s, 4 GiB by default) follow the file's, so a
+    # longer --time-limit or a larger --memory-limit reaches OpenCASCADE's read too.
+    command += ["--reader-time-limit", repr(float(limit)),
+                "--reader-memory-limit", f"{int(options['memory_limit_mb'])}M"]
     if options.get("tolerance"):
         command += ["--tolerance", repr(options["tolerance"])]
     cpu = [0.0]  # the file's processes' CPU seconds; None when one of them was not measured
