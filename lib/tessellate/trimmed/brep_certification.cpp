@@ -2,6 +2,7 @@
 #include <seamless/base/parallel/parallel.h>
 #include <seamless/tessellate/trimmed/brep_certification.h>
 #include <seamless/tessellate/trimmed/chord_bound.h>
+#include <seamless/tessellate/trimmed/face_surface.h>
 #include <seamless/tessellate/trimmed/triangle_bound.h>
 
 #include <algorithm>
@@ -33,7 +34,8 @@ BRepBound certify_brep(const Model& model, const std::vector<EdgePolyline>& line
         for (int i = begin; i < end; ++i) {
             if (i < runs) {
                 if (first[i] == first[i + 1]) continue;
-                const TriangleBound bound(model.surfaces[mesh.triangle_surface[first[i]]]);
+                const FaceSurface face(model.surfaces[mesh.triangle_surface[first[i]]]);
+                const TriangleBound bound(face.surface(), face.closed_u(), face.closed_v());
                 double b = 0;
                 for (int t = first[i]; t < first[i + 1]; ++t) {
                     const auto& tri = mesh.triangles[t];
