@@ -11,23 +11,49 @@ namespace {
 
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2; // unit roundoff
 
-double binomial(int n, int k) {
-    double r = 1;
-    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i; // exact: each partial product is
-    return r;                                             // a binomial below 2^53
-}
+// Binomial coefficients up to the largest total degree (exact doubles).
+struct Binomials {
+    static constexpr int N = 2 * kMaxDegree + 1;
+    std::array<std::array<double, N + 1>, N + 1> c{};
+    Binomials() {
+        for (int n = 0; n <= N; ++n) {
+            c[n][0] = 1;
+            for (int k = 1; k <= n; ++k) c[n][k] = c[n - 1][k - 1] + (k < n ? c[n - 1][k] : 0);
+        }
+    }
+};
+const Binomials kBinomials;
 
-// De Casteljau's algorithm on pts[0..m] with the steps `args` (the blossom
-// of the curve at those arguments, into pts[0]).
-void blossom(HPoint* pts, int m, const double* args) {
-    for (int l = 0; l < m; ++l)
-        for (int i = 0; i < m - l; ++i) pts[i] = lerp(pts[i], pts[i + 1], args[l]);
-}
+double binomial(int n, int k) { return kBinomials.c[n][k]; }
 
-// The multiset of `count` arguments: a times x[0], b times x[1], the rest x[2].
-int arguments(const double* x, int a, int b, int count, double* args) {
-    for (int l = 0; l < count; ++l) args[l] = l < a ? x[0] : l < a + b ? x[1] : x[2];
-    return count;
+// Every blossom f(x_0^a x_1^b x_2^c), a + b + c = m, of the curve with
+// control points pts[0], pts[stride], ..., pts[m * stride], into
+// out[TriangularNet::index(m, a, b)]: de Casteljau's steps shared as a tree
+// (the multiset (a, b, c) of level k + 1 from (a - 1, b, c) by a step with
+// x_0, else from (a, b - 1, c) with x_1, else from (a, b, c - 1) with x_2).
+// Each value still comes from m steps with arguments among x_0, x_1, x_2.
+void all_blossoms(const HPoint* pts, int stride, int m, const double* x, HPoint* out) {
+    constexpr int K = BezierPatch::kMaxOrder;
+    static thread_local std::array<HPoint, K*(K + 1) / 2 * K> level[2];
+    for (int i = 0; i <= m; ++i) level[0][i] = pts[i * stride];
+    for (int k = 0; k < m; ++k) {
+        const auto& from = level[k % 2];
+        auto& to = level[(k + 1) % 2];
+        const int size = m - k; // points per multiset at level k + 1, plus one
+        for (int a = 0; a <= k + 1; ++a)
+            for (int b = 0; a + b <= k + 1; ++b) {
+                const int parent = a > 0   ? TriangularNet::index(k, a - 1, b)
+                                   : b > 0 ? TriangularNet::index(k, a, b - 1)
+                                           : TriangularNet::index(k, a, b);
+                const double t = a > 0 ? x[0] : b > 0 ? x[1] : x[2];
+                const HPoint* src = &from[parent * (size + 1)];
+                HPoint* dst = &to[TriangularNet::index(k + 1, a, b) * size];
+                for (int i = 0; i < size; ++i) dst[i] = lerp(src[i], src[i + 1], t);
+            }
+    }
+    for (int a = 0; a <= m; ++a)
+        for (int b = 0; a + b <= m; ++b)
+            out[TriangularNet::index(m, a, b)] = level[m % 2][TriangularNet::index(m, a, b)];
 }
 
 } // namespace
@@ -45,41 +71,33 @@ void restrict_to_triangle(const BezierPatch& patch, const std::array<std::array<
     constexpr int K = BezierPatch::kMaxOrder;
     const double s[3] = {st[0][0], st[1][0], st[2][0]}, t[3] = {st[0][1], st[1][1], st[2][1]};
     // U[(a, b)][j]: the u-blossom of column j at s_0^a s_1^b s_2^(p-a-b).
-    std::array<HPoint, K*(K + 1) / 2 * K> U;
-    auto u_index = [&](int a, int b) { return TriangularNet::index(p, a, b) * (q + 1); };
-    HPoint pts[K];
-    double args[K];
-    for (int a = 0; a <= p; ++a)
-        for (int b = 0; a + b <= p; ++b) {
-            arguments(s, a, b, p, args);
-            for (int j = 0; j <= q; ++j) {
-                for (int i = 0; i <= p; ++i) pts[i] = patch.at(i, j);
-                blossom(pts, p, args);
-                U[u_index(a, b) + j] = pts[0];
-            }
-        }
+    static thread_local std::array<HPoint, K*(K + 1) / 2 * K> U;
+    HPoint column[K * (K + 1) / 2], v_blossoms[K * (K + 1) / 2], row[K];
+    for (int j = 0; j <= q; ++j) {
+        all_blossoms(&patch.at(0, j), K, p, s, column);
+        for (int a = 0; a <= p; ++a)
+            for (int b = 0; a + b <= p; ++b)
+                U[TriangularNet::index(p, a, b) * (q + 1) + j] =
+                    column[TriangularNet::index(p, a, b)];
+    }
     out.n = n;
     std::fill(out.b.begin(), out.b.begin() + TriangularNet::index(n, n, 0) + 1, HPoint{0, 0, 0, 0});
+    // b_ijk gathers the v-blossoms of every u-blossom (a, b, c) at
+    // t_0^(i-a) t_1^(j-b) t_2^(k-c) with its weight (header).
     const double cnp = binomial(n, p);
     int terms = 0;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j) {
-            const int k = n - i - j;
-            HPoint sum{0, 0, 0, 0};
-            int here = 0;
-            for (int a = std::max(0, p - j - k); a <= std::min(i, p); ++a)
-                for (int b = std::max(0, p - a - k); b <= std::min(j, p - a); ++b) {
-                    const int c = p - a - b;
-                    // The v-blossom of the u-blossoms at t_0^(i-a) t_1^(j-b) t_2^(k-c).
-                    for (int l = 0; l <= q; ++l) pts[l] = U[u_index(a, b) + l];
-                    arguments(t, i - a, j - b, q, args);
-                    blossom(pts, q, args);
+    for (int a = 0; a <= p; ++a)
+        for (int b = 0; a + b <= p; ++b) {
+            const int c = p - a - b;
+            for (int l = 0; l <= q; ++l) row[l] = U[TriangularNet::index(p, a, b) * (q + 1) + l];
+            all_blossoms(row, 1, q, t, v_blossoms);
+            for (int d = 0; d <= q; ++d)
+                for (int e = 0; d + e <= q; ++e) {
+                    const int f = q - d - e, i = a + d, j = b + e, k = c + f;
                     const double w = binomial(i, a) * binomial(j, b) * binomial(k, c) / cnp;
-                    sum = sum + w * pts[0];
-                    ++here;
+                    out.at(i, j) = out.at(i, j) + w * v_blossoms[TriangularNet::index(q, d, e)];
                 }
-            out.at(i, j) = sum;
-            terms = std::max(terms, here);
+            ++terms;
         }
     double M = 0;
     for (int i = 0; i <= p; ++i)
