@@ -175,6 +175,10 @@ TriangleBound::TriangleBound(const BSplineSurface& s, bool closed_u, bool closed
     }
 }
 
+double TriangleBound::max_gradient() const {
+    return gradient_.empty() ? 0 : *std::max_element(gradient_.begin(), gradient_.end());
+}
+
 int TriangleBound::span_of(const Axis& a, double x, double& shift) const {
     shift = 0;
     if (a.closed) {

@@ -53,6 +53,16 @@ class TriangleBound {
     // continuation beyond an open side).
     double operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q) const;
 
+    // The bound over the (u,v) rectangle box = {u0, u1, v0, v1} inside the
+    // domain, for the map onto the mesh bilinear over it with the values M
+    // at (u0, v0), (u1, v0), (u1, v1), (u0, v1): the same hull, of the
+    // tensor-product coefficients of E = X - W M (bilinear_box.cpp; a pole
+    // fan's pairing, pole_fan.h). +infinity where it cannot be certified.
+    double bilinear_box(const std::array<double, 4>& box, const std::array<Vec3, 4>& M) const;
+
+    // A bound of |S_u| and |S_v| over the domain (model units per (u,v) unit).
+    double max_gradient() const;
+
   private:
     struct Axis {
         std::vector<double> at; // distinct knots of the domain, increasing

@@ -42,34 +42,49 @@ TEST_CASE("trimmed faces: the largest certified triangle bounds of a model", "[.
         std::array<UV, 3> uv;
         std::array<Vec3, 3> Q;
         for (int k = 0; k < 3; ++k)
-            uv[k] = {m.corner_uvs[f][k][0], m.corner_uvs[f][k][1]}, Q[k] = m.positions[m.triangles[f][k]];
+            uv[k] = {m.corner_uvs[f][k][0], m.corner_uvs[f][k][1]},
+            Q[k] = m.positions[m.triangles[f][k]];
         double sampled = 0;
         for (int a = 0; a <= 8; ++a)
             for (int b = 0; a + b <= 8; ++b) {
                 const double l1 = a / 8.0, l2 = b / 8.0, l0 = 1 - l1 - l2;
                 const Vec3 x{l0 * uv[0][0] + l1 * uv[1][0] + l2 * uv[2][0],
                              l0 * uv[0][1] + l1 * uv[1][1] + l2 * uv[2][1], 0};
-                sampled = std::max(sampled, distance(face.at(x).point, l0 * Q[0] + l1 * Q[1] + l2 * Q[2]));
+                sampled = std::max(sampled,
+                                   distance(face.at(x).point, l0 * Q[0] + l1 * Q[1] + l2 * Q[2]));
             }
         rows.push_back({bound(uv, Q), sampled, f});
     }
-    std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.bound > b.bound; });
+    std::sort(rows.begin(), rows.end(),
+              [](const Row& a, const Row& b) { return a.bound > b.bound; });
     if (std::getenv("SEAMLESS_DIAGNOSE_SURFACES"))
         for (const BSplineSurface& s : model.surfaces) {
             int tris = 0;
-            for (int f = 0; f < m.triangle_count(); ++f) tris += &model.surfaces[m.triangle_surface[f]] == &s;
+            for (int f = 0; f < m.triangle_count(); ++f)
+                tris += &model.surfaces[m.triangle_surface[f]] == &s;
             std::printf("surface deg %d,%d knots %zu,%zu %s triangles %d\n", s.degree_u, s.degree_v,
-                        s.knots_u.size(), s.knots_v.size(), s.rational() ? "rational" : "polynomial", tris);
+                        s.knots_u.size(), s.knots_v.size(),
+                        s.rational() ? "rational" : "polynomial", tris);
         }
-    std::printf("D %g, bound %g, sampled deviation %g\n", t.stats.tolerance, t.stats.max_error_bound,
-                t.stats.brep.max_deviation);
+    if (const char* sv = std::getenv("SEAMLESS_DIAGNOSE_SURFACE"))
+        for (int f = 0; f < m.triangle_count(); ++f)
+            if (m.triangle_surface[f] == std::atoi(sv)) {
+                std::printf("tri");
+                for (int k = 0; k < 3; ++k)
+                    std::printf(" %d (%.17g, %.17g)", m.triangles[f][k], m.corner_uvs[f][k][0],
+                                m.corner_uvs[f][k][1]);
+                std::printf("\n");
+            }
+    std::printf("D %g, bound %g, sampled deviation %g\n", t.stats.tolerance,
+                t.stats.max_error_bound, t.stats.brep.max_deviation);
     for (size_t r = 0; r < std::min<size_t>(rows.size(), 12); ++r) {
         const int f = rows[r].tri;
         const BSplineSurface& s = model.surfaces[m.triangle_surface[f]];
         std::printf("bound %.4g parametric %.4g surface %d deg %d,%d %s uv", rows[r].bound,
                     rows[r].sampled, m.triangle_surface[f], s.degree_u, s.degree_v,
                     s.rational() ? "rational" : "polynomial");
-        for (int k = 0; k < 3; ++k) std::printf(" (%.6g, %.6g)", m.corner_uvs[f][k][0], m.corner_uvs[f][k][1]);
+        for (int k = 0; k < 3; ++k)
+            std::printf(" (%.6g, %.6g)", m.corner_uvs[f][k][0], m.corner_uvs[f][k][1]);
         std::printf(" domain [%g,%g]x[%g,%g]\n", s.u_min(), s.u_max(), s.v_min(), s.v_max());
     }
 }
