@@ -3,7 +3,7 @@
 // (u,v) domain collapses to one point (a degenerate edge: all of it is one
 // mesh vertex P), the triangles with a corner x_a on that side are wide in
 // u and S(x) drifts along the ring away from L(x): the parametric bound of
-// triangle_bound.h counts that drift (a cone's apex fan: 8 D). Such a
+// triangle_bound.h counts that drift. Such a
 // triangle (x_a, y_l, y_r), y_l before y_r along the side, is paired
 // instead with the trapezoid Z between the side and its far edge y_l y_r
 // with vertical ends: the rectangle [y_l, y_r] x [side, nearer y] by the map
