@@ -54,12 +54,12 @@ TEST_CASE("trimmed faces: the certified bound holds on the hard cases", "[brep][
         CHECK(measured <= bound);
         CHECK(t.stats.brep.max_deviation <= bound);
         // Tight on the triangles of rational surfaces (measured: cylinder
-        // 1.33, cone 1.6 with its apex fan, sphere 5.2, torus 1.3, freeform
-        // 1.3 times the sampled distance; the sphere's triangles next to its
-        // poles but not at them keep the parametric drift).
+        // 1.14, cone 1.6 with its apex fan, sphere 4.8, torus 1.16, freeform
+        // 1.21 times the sampled distance; the sphere's triangles next to
+        // its poles but not at them keep the parametric drift).
         const double ratio = t.stats.brep.bound_triangles / measured;
-        if (c.name.rfind("cylinder", 0) == 0 || c.name == "torus" || c.name == "freeform face" ||
-            c.name == "cone")
+        if (c.name.rfind("cylinder", 0) == 0 || c.name == "torus" ||
+            c.name == "freeform face" || c.name == "cone")
             CHECK(ratio < 2.5);
         if (c.name == "sphere") CHECK(ratio < 10);
     }
