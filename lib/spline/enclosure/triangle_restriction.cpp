@@ -24,7 +24,9 @@ struct Binomials {
 };
 const Binomials kBinomials;
 
-double binomial(int n, int k) { return kBinomials.c[n][k]; }
+double binomial(int n, int k) {
+    return kBinomials.c[n][k];
+}
 
 // Every blossom f(x_0^a x_1^b x_2^c), a + b + c = m, of the curve with
 // control points pts[0], pts[stride], ..., pts[m * stride], into
