@@ -17,6 +17,7 @@
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/tessellation_stats_json.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -116,8 +117,12 @@ void print_tessellation_summary(const TessellationStats& s) {
         const BRepStats& b = s.brep;
         std::cout << b.faces << " B-rep faces, " << b.edges << " edges, " << s.triangles
                   << " triangles, " << s.vertices << " vertices, sampled deviation "
-                  << b.max_deviation << ", certified bound " << s.max_error_bound << " (tolerance "
-                  << s.tolerance << ")";
+                  << b.max_deviation << ", certified bound ";
+        if (std::isnan(s.max_error_bound))
+            std::cout << "with --stats";
+        else
+            std::cout << s.max_error_bound;
+        std::cout << " (tolerance " << s.tolerance << ")";
         if (s.surfaces > b.faces) std::cout << ", " << s.subpatches << " free-surface subpatches";
         std::cout << ", " << s.seconds << " s\n";
         return;
@@ -154,6 +159,9 @@ int run_tessellate(const TessellateArgs& args) {
     // The parts lie in their own coordinates: the default deviation is that
     // of the model as placed.
     if (tree && opt.tolerance == 0) opt.tolerance = placed_default_tolerance(m);
+    // The B-rep's certified bound (brep_certification.h) costs up to about
+    // the tessellation's own time: only --stats reports it.
+    if (!m.brep.empty() && args.stats.empty()) opt.certify = false;
     ProgressBar bar("tessellate");
     opt.progress = [&bar](double f) { bar.update(f); };
     const Tessellation t = [&] {

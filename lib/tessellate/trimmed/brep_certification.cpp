@@ -2,6 +2,8 @@
 #include <seamless/base/parallel/parallel.h>
 #include <seamless/tessellate/trimmed/brep_certification.h>
 #include <seamless/tessellate/trimmed/chord_bound.h>
+#include <seamless/tessellate/trimmed/face_surface.h>
+#include <seamless/tessellate/trimmed/pole_fan.h>
 #include <seamless/tessellate/trimmed/triangle_bound.h>
 
 #include <algorithm>
@@ -13,6 +15,48 @@ namespace {
 // A bound that is not a number is no bound: it counts as infinite.
 double worst(double a, double b) {
     return std::max(a, b >= 0 ? b : std::numeric_limits<double>::infinity());
+}
+
+// The (u,v) points of the degenerate edges of the faces on `surface`.
+std::vector<UV> side_points(const Model& model, const std::vector<EdgePolyline>& lines,
+                            int surface) {
+    std::vector<UV> out;
+    for (const BRepFace& f : model.brep.faces) {
+        if (f.surface != surface) continue;
+        for (const BRepLoop& loop : f.loops)
+            for (const BRepCoedge& c : loop.coedges) {
+                if (!model.brep.edges[c.edge].degenerate() || c.pcurve < 0) continue;
+                for (double t : lines[c.edge].t) {
+                    const Vec3 p = evaluate(model.brep.pcurves[c.pcurve], t).point;
+                    out.push_back({p.x, p.y});
+                }
+            }
+    }
+    return out;
+}
+
+// The largest bound over the triangles [begin, end) of one surface: pole
+// fans geometrically (pole_fan.h), the others by TriangleBound.
+double run_of_surface(const Model& model, const std::vector<EdgePolyline>& lines,
+                      const TriangleMesh& mesh, int begin, int end) {
+    const int surface = mesh.triangle_surface[begin];
+    const FaceSurface face(model.surfaces[surface]);
+    const TriangleBound bound(face.surface(), face.closed_u(), face.closed_v());
+    std::vector<RunTriangle> run(end - begin);
+    for (int t = begin; t < end; ++t) {
+        RunTriangle& r = run[t - begin];
+        for (int k = 0; k < 3; ++k) {
+            r.uv[k] = {mesh.corner_uvs[t][k][0], mesh.corner_uvs[t][k][1]};
+            r.id[k] = mesh.triangles[t][k];
+            r.Q[k] = mesh.positions[r.id[k]];
+        }
+    }
+    std::vector<char> handled;
+    double b =
+        pole_fan_bounds(bound, face.surface(), run, side_points(model, lines, surface), handled);
+    for (size_t k = 0; k < run.size(); ++k)
+        if (!handled[k]) b = worst(b, bound(run[k].uv, run[k].Q));
+    return b;
 }
 
 } // namespace
@@ -33,17 +77,7 @@ BRepBound certify_brep(const Model& model, const std::vector<EdgePolyline>& line
         for (int i = begin; i < end; ++i) {
             if (i < runs) {
                 if (first[i] == first[i + 1]) continue;
-                const TriangleBound bound(model.surfaces[mesh.triangle_surface[first[i]]]);
-                double b = 0;
-                for (int t = first[i]; t < first[i + 1]; ++t) {
-                    const auto& tri = mesh.triangles[t];
-                    const auto& uv = mesh.corner_uvs[t];
-                    b = worst(b, bound({UV{uv[0][0], uv[0][1]}, UV{uv[1][0], uv[1][1]},
-                                        UV{uv[2][0], uv[2][1]}},
-                                       {mesh.positions[tri[0]], mesh.positions[tri[1]],
-                                        mesh.positions[tri[2]]}));
-                }
-                run_bound[i] = b;
+                run_bound[i] = run_of_surface(model, lines, mesh, first[i], first[i + 1]);
             } else {
                 const int e = i - runs;
                 const BRepEdge& edge = model.brep.edges[e];

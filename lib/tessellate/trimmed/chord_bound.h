@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // A certified bound on how far an edge's polyline lies from its 3D curve:
 // over [ta, tb] the chord from Pa to Pb (linear in t) and the curve C are
-// within M h^2 / 8 + J h / 2 + max(|C(ta) - Pa|, |C(tb) - Pb|) of each other,
-// h = tb - ta, M a bound of |C''| and J of the jumps of C' at C0 knots (the
-// one-dimensional case of triangle_bound.h). The curve is bounded as the
-// surface S(t, s) = C(t), linear in s, by TriangleBound on a triangle of
-// negligible height over [ta, tb].
+// within it of each other, both ways. The curve is bounded as the surface
+// S(t, s) = C(t), linear in s, by TriangleBound on a triangle of negligible
+// height over [ta, tb]: the hull of the curve's Bernstein coefficients over
+// each knot span of [ta, tb] against the chord (the one-dimensional case of
+// triangle_bound.h).
 #pragma once
 
 #include <seamless/spline/bspline_curve.h>

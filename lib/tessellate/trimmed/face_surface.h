@@ -23,6 +23,8 @@ class FaceSurface {
     explicit FaceSurface(const BSplineSurface& s);
     SurfacePoint at(Vec3 uv) const;
     const BSplineSurface& surface() const { return *s_; }
+    bool closed_u() const { return closed_u_; } // periodic in u: wrapped
+    bool closed_v() const { return closed_v_; }
     // True when a crease passes through the box of the (u,v) points (a
     // closed direction's creases repeat by its period).
     bool crosses_crease(const std::array<Vec3, 3>& uv) const;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/check.h>
 #include <seamless/interval/interval.h>
+#include <seamless/spline/enclosure/triangle_restriction.h>
 #include <seamless/spline/knot_insertion.h>
-#include <seamless/tessellate/bounds/error_bound.h>
 #include <seamless/tessellate/trimmed/triangle_bound.h>
 
 #include <algorithm>
@@ -12,7 +12,7 @@
 namespace seamless {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kU = std::numeric_limits<double>::epsilon() / 2; // unit roundoff
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::vector<double> distinct_knots(const std::vector<double>& U, double lo, double hi) {
@@ -22,48 +22,83 @@ std::vector<double> distinct_knots(const std::vector<double>& U, double lo, doub
     return out;
 }
 
-int multiplicity(const std::vector<double>& U, double t) {
-    return static_cast<int>(std::count(U.begin(), U.end(), t));
-}
-
-// Bound of the jump of S's first derivative across the line where patch L
-// ends and patch R begins (direction u: L's row p is R's row 0; v: columns),
-// from the Bernstein coefficients of the jump of the homogeneous derivative:
-// dS = (dX - S dW) / W, the jump of X and W zero (the row is shared).
-double derivative_jump(const BezierPatch& L, const BezierPatch& R, Direction d) {
-    const bool u = d == Direction::u;
-    const int n = u ? L.p : L.q, m = u ? L.q : L.p;
-    const double hl = u ? L.u1 - L.u0 : L.v1 - L.v0, hr = u ? R.u1 - R.u0 : R.v1 - R.v0;
-    auto at = [u](const BezierPatch& b, int i, int j) { return u ? b.at(i, j) : b.at(j, i); };
-    const Vec3 c = at(L, n, 0).point();
-    double jump = 0, spread = 0, dw = 0, wmin = kInf, size = 0;
-    for (int j = 0; j <= m; ++j) {
-        const HPoint x = at(L, n, j);
-        if (!(x.xyz() == at(R, 0, j).xyz() && x.w == at(R, 0, j).w)) return kInf; // not C0
-        const HPoint left = (n / hl) * (x - at(L, n - 1, j));
-        const HPoint right = (n / hr) * (at(R, 1, j) - x);
-        const HPoint delta = right - left;
-        jump = std::max(jump, norm(delta.xyz() - delta.w * c));
-        spread = std::max(spread, norm(x.point() - c));
-        dw = std::max(dw, std::abs(delta.w));
-        wmin = std::min(wmin, x.w);
-        size = std::max(size, norm(left.xyz()) + norm(right.xyz()) +
-                                  (std::abs(left.w) + std::abs(right.w)) * norm(c));
+// max_a |e_a| / w_a over the coefficients of E = X - W L and W (header), L
+// the affine map with the values Lj at the piece's corners: at degree
+// n + 1, e_a = sum_k (a_k / m) (x_{a-k} - w_{a-k} L_k) and w_a =
+// sum_k (a_k / m) w_{a-k} (degree elevation and the product with a degree-1
+// polynomial, m = n + 1); then raised to degree 2 (n + 1) (at most
+// TriangularNet's), where the hull overestimates the largest |E / W| by a
+// factor near m / (m - 1) instead of (n + 1) / n (the cylinder: 1.33 to
+// 1.14). Rounding: every step is a mean with positive weights of sum 1, so
+// e_a and w_a err by at most the net's error and 8u of their terms'
+// magnitudes at the product, and 4u of them per elevation.
+double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj) {
+    const int n = net.n;
+    const int top = std::min(2 * (n + 1), TriangularNet::kMaxOrder - 1);
+    double Mx = 0, Mw = 0, ML = 0;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) {
+            const HPoint& b = net.at(i, j);
+            Mx = std::max({Mx, std::abs(b.x), std::abs(b.y), std::abs(b.z)});
+            Mw = std::max(Mw, std::abs(b.w));
+        }
+    for (const Vec3& L : Lj) ML = std::max({ML, std::abs(L.x), std::abs(L.y), std::abs(L.z)});
+    const int steps = top - n;
+    const double err = net.error * (1 + ML) + (8 + 4 * steps) * kU * (Mx + Mw * ML);
+    const double werr = net.error + (4 + 4 * steps) * kU * Mw;
+    // (e, w) as HPoints, raised from degree d in `from` to d + 1 in `to`.
+    static thread_local std::array<HPoint,
+                                   TriangularNet::kMaxOrder*(TriangularNet::kMaxOrder + 1) / 2>
+        buf[2];
+    auto raise = [](int d, const HPoint* from, HPoint* to) {
+        const int m = d + 1;
+        for (int i = 0; i <= m; ++i)
+            for (int j = 0; i + j <= m; ++j) {
+                const int k = m - i - j;
+                HPoint sum{0, 0, 0, 0};
+                if (i > 0) sum = sum + (double(i) / m) * from[TriangularNet::index(d, i - 1, j)];
+                if (j > 0) sum = sum + (double(j) / m) * from[TriangularNet::index(d, i, j - 1)];
+                if (k > 0) sum = sum + (double(k) / m) * from[TriangularNet::index(d, i, j)];
+                to[TriangularNet::index(m, i, j)] = sum;
+            }
+    };
+    // The product: from the net's X and W to (e, w) at degree n + 1, the
+    // mesh value of each term by the corner its index grew at.
+    {
+        const int m = n + 1;
+        for (int i = 0; i <= m; ++i)
+            for (int j = 0; i + j <= m; ++j) {
+                const int k = m - i - j;
+                HPoint sum{0, 0, 0, 0};
+                auto term = [&](int count, int bi, int bj, Vec3 L) {
+                    if (count == 0) return;
+                    const HPoint& b = net.at(bi, bj);
+                    const Vec3 e = b.xyz() - b.w * L;
+                    sum = sum + (double(count) / m) * HPoint{e.x, e.y, e.z, b.w};
+                };
+                term(i, i - 1, j, Lj[0]);
+                term(j, i, j - 1, Lj[1]);
+                term(k, i, j, Lj[2]);
+                buf[0][TriangularNet::index(m, i, j)] = sum;
+            }
     }
-    // A few roundings per difference, each within eps of the terms' size.
-    return (jump + spread * dw + 16 * kEps * size) / wmin * (1 + 1e-12);
+    int cur = 0;
+    for (int d = n + 1; d < top; ++d, cur ^= 1) raise(d, buf[cur].data(), buf[cur ^ 1].data());
+    double worst = 0;
+    for (int i = 0; i <= top; ++i)
+        for (int j = 0; i + j <= top; ++j) {
+            const HPoint& c = buf[cur][TriangularNet::index(top, i, j)];
+            const double low = c.w - werr;
+            if (!(low > 0)) return kInf;
+            worst = std::max(worst, (norm(c.xyz()) + 1.8 * err) / low);
+        }
+    return worst * (1 + 1e-12);
 }
 
 // Bounds of |S_ss|, |S_st|, |S_tt| over b's local [0,1]^2: the Bernstein
 // coefficients of X and W and of their partial derivatives (differences of
 // the net, in interval arithmetic) enclose them over the square, and the
-// quotient rule runs on those enclosures
-//   S = X / W, S_s = (X_s - S W_s) / W, S_t alike,
-//   S_ss = (X_ss - 2 S_s W_s - S W_ss) / W,
-//   S_st = (X_st - S_s W_t - S_t W_s - S W_st) / W, S_tt alike.
-// Over a small box the enclosures are narrow, so X_st and S_t W_s, which
-// cancel where only the weights vary (a cylinder's rulings), nearly cancel
-// here too; a bound from the coefficients' magnitudes alone would not.
+// quotient rule runs on those enclosures.
 std::array<double, 3> second_derivative_ranges(const BezierPatch& b) {
     const int p = b.p, q = b.q;
     enum { kX, kXs, kXt, kXss, kXst, kXtt, kTerms };
@@ -122,148 +157,168 @@ std::array<double, 3> second_derivative_ranges(const BezierPatch& b) {
         ss += sqr(Sss).hi(), st += sqr(Sst).hi(), tt += sqr(Stt).hi();
     }
     // The sums of three squares rounded up by a few ulps, then their roots.
-    const double up = 1 + 8 * kEps;
+    const double up = 1 + 8 * kU;
     return {std::sqrt(ss * up) * up, std::sqrt(st * up) * up, std::sqrt(tt * up) * up};
 }
 
-// The largest of sum lambda_k |x_k - x|^2 over the triangle (header).
-double rho_squared(const std::array<UV, 3>& x) {
-    double l2[3];
-    for (int k = 0; k < 3; ++k) {
-        const double du = x[(k + 1) % 3][0] - x[(k + 2) % 3][0];
-        const double dv = x[(k + 1) % 3][1] - x[(k + 2) % 3][1];
-        l2[k] = du * du + dv * dv; // the side opposite corner k
-    }
-    const double longest = std::max({l2[0], l2[1], l2[2]});
-    const double others = l2[0] + l2[1] + l2[2] - longest;
-    if (longest >= others) return longest / 4 * (1 + 1e-12); // right or obtuse
-    // R^2 = a^2 b^2 c^2 / (16 area^2), 16 area^2 = 2 sum a^2 b^2 - sum a^4.
-    const double a2 = l2[0], b2 = l2[1], c2 = l2[2];
-    const double area16 = 2 * (a2 * b2 + b2 * c2 + c2 * a2) - (a2 * a2 + b2 * b2 + c2 * c2);
-    const double r2 = area16 > 0 ? a2 * b2 * c2 / area16 : kInf;
-    // Acute: R^2 <= l^2 / 3, which also covers a rounded area.
-    return std::min(r2 * (1 + 1e-9), longest / 3 * (1 + 1e-12));
+// `b` continued over local s in [s0, s1] (s0 <= 0, s1 >= 1), t alike, by de
+// Casteljau's algorithm with steps outside [0,1]; `error` bounds the
+// rounding of its homogeneous coordinates (as triangle_restriction.cpp).
+BezierPatch continued(const BezierPatch& b, double s0, double s1, double t0, double t1,
+                      double& error) {
+    BezierPatch cur = b, lo, hi;
+    if (s1 > 1) split_u(cur, s1, lo, hi), cur = lo;
+    if (s0 < 0) split_u(cur, s0 / std::max(s1, 1.0), lo, hi), cur = hi;
+    if (t1 > 1) split_v(cur, t1, lo, hi), cur = lo;
+    if (t0 < 0) split_v(cur, t0 / std::max(t1, 1.0), lo, hi), cur = hi;
+    double M = 0;
+    for (int i = 0; i <= b.p; ++i)
+        for (int j = 0; j <= b.q; ++j)
+            for (int c = 0; c < 4; ++c) M = std::max(M, std::abs(b.at(i, j)[c]));
+    const double g = std::max(1.0, s1 - s0) * std::max(1.0, t1 - t0) * 3;
+    error = 6.0 * (b.p + b.q + 2) * kU * M * std::pow(g, b.p + b.q) +
+            underflow_allowance(64 * (b.p + b.q));
+    return cur;
 }
 
 } // namespace
 
-TriangleBound::TriangleBound(const BSplineSurface& s)
-    : patches_(bezier_patches(s, -1)), surface_(s) {
+TriangleBound::TriangleBound(const BSplineSurface& s, bool closed_u, bool closed_v)
+    : patches_(bezier_patches(s, -1)) {
     u_.at = distinct_knots(s.knots_u, s.u_min(), s.u_max());
     v_.at = distinct_knots(s.knots_v, s.v_min(), s.v_max());
-    for (Vec3 p : s.points)
-        magnitude_ = std::max({magnitude_, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    find_jumps(s);
-}
-
-void TriangleBound::find_jumps(const BSplineSurface& s) {
-    const int nu = static_cast<int>(u_.at.size()) - 1, nv = static_cast<int>(v_.at.size()) - 1;
-    SEAMLESS_CHECK(static_cast<int>(patches_.size()) == nu * nv,
+    u_.closed = closed_u, v_.closed = closed_v;
+    SEAMLESS_CHECK(patches_.size() == (u_.at.size() - 1) * (v_.at.size() - 1),
                    "one Bezier patch per pair of knot spans");
-    auto patch = [&](int iu, int iv) -> const BezierPatch& { return patches_[iu * nv + iv]; };
-    u_.jump.assign(std::max(nu - 1, 0), 0.0);
-    for (int i = 1; i < nu; ++i) {
-        // Multiplicity below the degree: the basis is C1 there, no jump.
-        if (multiplicity(s.knots_u, u_.at[i]) < s.degree_u) continue;
-        for (int iv = 0; iv < nv; ++iv)
-            u_.jump[i - 1] = std::max(
-                u_.jump[i - 1], derivative_jump(patch(i - 1, iv), patch(i, iv), Direction::u));
-    }
-    v_.jump.assign(std::max(nv - 1, 0), 0.0);
-    for (int j = 1; j < nv; ++j) {
-        if (multiplicity(s.knots_v, v_.at[j]) < s.degree_v) continue;
-        for (int iu = 0; iu < nu; ++iu)
-            v_.jump[j - 1] = std::max(
-                v_.jump[j - 1], derivative_jump(patch(iu, j - 1), patch(iu, j), Direction::v));
+    // |S_s| <= 2 p^2 (w_max / w_min) max |P_i+1 - P_i| (S_s = (X_s - S W_s) / W
+    // with X_s - S W_s = p sum B_i (w_i+1 (P_i+1 - S) - w_i (P_i - S)), and
+    // |P_i - S| below the net's extent): only the rounding terms use it.
+    for (const BezierPatch& b : patches_) {
+        double wmin = kInf, wmax = 0, du = 0, dv = 0;
+        for (int i = 0; i <= b.p; ++i)
+            for (int j = 0; j <= b.q; ++j) {
+                wmin = std::min(wmin, b.at(i, j).w), wmax = std::max(wmax, b.at(i, j).w);
+                if (i < b.p) du = std::max(du, distance(b.point(i + 1, j), b.point(i, j)));
+                if (j < b.q) dv = std::max(dv, distance(b.point(i, j + 1), b.point(i, j)));
+            }
+        const double ratio = wmin > 0 ? wmax / wmin : kInf;
+        gradient_.push_back(
+            2 * ratio * std::max(b.p * b.p * du / (b.u1 - b.u0), b.q * b.q * dv / (b.v1 - b.v0)));
     }
 }
 
-double TriangleBound::jumps_inside(const Breaks& b, double lo, double hi) const {
-    double sum = 0;
-    for (size_t i = 1; i + 1 < b.at.size(); ++i)
-        if (b.at[i] > lo && b.at[i] < hi) sum += b.jump[i - 1];
-    return sum;
+double TriangleBound::max_gradient() const {
+    return gradient_.empty() ? 0 : *std::max_element(gradient_.begin(), gradient_.end());
 }
 
-std::array<double, 3> TriangleBound::second_derivatives(double u0, double u1, double v0,
-                                                        double v1) const {
-    std::array<double, 3> d{0, 0, 0};
-    for (const BezierPatch& p : patches_) {
-        const double a = std::max(u0, p.u0), b = std::min(u1, p.u1);
-        const double c = std::max(v0, p.v0), e = std::min(v1, p.v1);
-        if (!(a < b && c < e)) continue; // no area in common: the neighbours bound it
-        double s0 = (a - p.u0) / (p.u1 - p.u0), s1 = (b - p.u0) / (p.u1 - p.u0);
-        double t0 = (c - p.v0) / (p.v1 - p.v0), t1 = (e - p.v0) / (p.v1 - p.v0);
-        // A sliver of a patch would divide the rounding of its differences by
-        // its squared width: take at least an eighth of the patch (a superset
-        // of the box, so still a bound).
-        auto widen = [](double& lo, double& hi) {
-            if (hi - lo >= 0.125) return;
-            const double mid = (lo + hi) / 2;
-            lo = std::clamp(mid - 0.0625, 0.0, 0.875);
-            hi = lo + 0.125;
-        };
-        widen(s0, s1);
-        widen(t0, t1);
-        const auto [A, B, C] = second_derivative_ranges(extract_box(p, s0, s1, t0, t1));
-        const double wu = (s1 - s0) * (p.u1 - p.u0), wv = (t1 - t0) * (p.v1 - p.v0);
-        d[0] = std::max(d[0], A / (wu * wu));
-        d[1] = std::max(d[1], B / (wu * wv));
-        d[2] = std::max(d[2], C / (wv * wv));
+int TriangleBound::span_of(const Axis& a, double x, double& shift) const {
+    shift = 0;
+    if (a.closed) {
+        const double period = a.hi() - a.lo();
+        shift = std::floor((x - a.lo()) / period) * period;
+        x -= shift;
     }
-    for (double& x : d) x *= 1 + 1e-12;
-    return d;
+    const int spans = static_cast<int>(a.at.size()) - 1;
+    const int i =
+        static_cast<int>(std::upper_bound(a.at.begin(), a.at.end(), x) - a.at.begin()) - 1;
+    return std::clamp(i, 0, spans - 1);
+}
+
+void TriangleBound::cuts(const Axis& a, double lo, double hi, std::vector<double>& out) const {
+    out.clear();
+    if (!a.closed) {
+        for (double k : a.at)
+            if (k > lo && k < hi) out.push_back(k);
+        return;
+    }
+    const double period = a.hi() - a.lo();
+    for (double shift = std::floor((lo - a.lo()) / period) * period; a.lo() + shift < hi;
+         shift += period)
+        for (size_t i = 0; i + 1 < a.at.size(); ++i)
+            if (a.at[i] + shift > lo && a.at[i] + shift < hi) out.push_back(a.at[i] + shift);
+}
+
+double TriangleBound::piece_bound(const TrianglePiece& piece, const BezierPatch& patch,
+                                  double shift_u, double shift_v,
+                                  const std::array<Vec3, 3>& Q) const {
+    std::array<std::array<double, 2>, 3> st;
+    std::array<Vec3, 3> L;
+    double hu = 0, hv = 0; // overhang beyond an open side
+    for (int j = 0; j < 3; ++j) {
+        const PieceCorner& c = piece.corner[j];
+        st[j] = {(c.uv[0] - shift_u - patch.u0) / (patch.u1 - patch.u0),
+                 (c.uv[1] - shift_v - patch.v0) / (patch.v1 - patch.v0)};
+        L[j] = c.lambda[0] * Q[0] + c.lambda[1] * Q[1] + c.lambda[2] * Q[2];
+        if (!u_.closed) hu = std::max({hu, u_.lo() - c.uv[0], c.uv[0] - u_.hi()});
+        if (!v_.closed) hv = std::max({hv, v_.lo() - c.uv[1], c.uv[1] - v_.hi()});
+    }
+    TriangularNet net;
+    restrict_to_triangle(patch, st, net);
+    const double hull = hull_bound(net, L);
+    if (hu == 0 && hv == 0) return hull;
+    // Beyond an open side: P against the tangent plane (header), the second
+    // derivatives over the patch continued to the piece.
+    double s0 = 0, s1 = 1, t0 = 0, t1 = 1;
+    for (const auto& x : st)
+        s0 = std::min(s0, x[0]), s1 = std::max(s1, x[0]), t0 = std::min(t0, x[1]),
+        t1 = std::max(t1, x[1]);
+    double error = 0;
+    const BezierPatch c = continued(patch, s0, s1, t0, t1, error);
+    double wmin = kInf, M = 0;
+    for (int i = 0; i <= c.p; ++i)
+        for (int j = 0; j <= c.q; ++j) {
+            wmin = std::min(wmin, c.at(i, j).w);
+            for (int k = 0; k < 3; ++k) M = std::max(M, std::abs(c.at(i, j)[k]));
+        }
+    if (!(wmin > 2 * error)) return kInf;
+    // The rounding of c's net, through second differences and the quotient.
+    const double slack =
+        16.0 * (c.p + c.q) * (c.p + c.q) * error * (1 + M / (wmin - error)) / (wmin - error);
+    const auto d = second_derivative_ranges(c);
+    const double wu = (s1 - s0) * (patch.u1 - patch.u0), wv = (t1 - t0) * (patch.v1 - patch.v0);
+    const double A = (d[0] + slack) / (wu * wu), B = (d[1] + slack) / (wu * wv),
+                 C = (d[2] + slack) / (wv * wv);
+    return hull + (A * hu * hu + 2 * B * hu * hv + C * hv * hv) / 2 * (1 + 1e-12);
 }
 
 double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q) const {
-    double u0 = kInf, u1 = -kInf, v0 = kInf, v1 = -kInf;
-    for (const UV& x : uv) {
-        u0 = std::min(u0, x[0]), u1 = std::max(u1, x[0]);
-        v0 = std::min(v0, x[1]), v1 = std::max(v1, x[1]);
-    }
-    // A corner outside the surface's domain (a pcurve past the surface's
-    // edge, which the tessellator extends) has no surface point to bound
-    // against: not certified.
-    if (u0 < surface_.u_min() || u1 > surface_.u_max() || v0 < surface_.v_min() ||
-        v1 > surface_.v_max())
-        return kInf;
-    double corner = 0, wmax = 0, wmin = kInf;
-    for (double w : surface_.weights) wmax = std::max(wmax, w), wmin = std::min(wmin, w);
-    const double wratio = surface_.weights.empty() ? 1 : wmax / wmin;
-    for (int k = 0; k < 3; ++k)
-        corner = std::max(corner, distance(evaluate(surface_, uv[k][0], uv[k][1]).point, Q[k]));
-    // de Boor's evaluation: a few roundings per level, each within eps of
-    // the control points' magnitude (times the weights' spread).
-    corner += 16.0 * (surface_.degree_u + surface_.degree_v + 2) * kEps * magnitude_ * wratio;
-    // The extracted subpatches (de Casteljau in doubles) are polynomials
-    // within a few ulps of the surface: their interpolation error differs
-    // from the surface's by at most twice that.
-    corner += 2 * rounding_allowance(16, magnitude_) * wratio;
-    // Plain names, not a structured binding: the lambda below captures them.
-    const std::array<double, 3> d2 = second_derivatives(u0, u1, v0, v1);
-    const double A = d2[0], B = d2[1], C = d2[2];
-    const double Ju = jumps_inside(u_, u0, u1), Jv = jumps_inside(v_, v0, v1);
-    if (!std::isfinite(A + B + C + Ju + Jv)) return kInf;
-    // In the scaling u' = u alpha, v' = v beta: S_u'u' = S_uu / alpha^2, ...
-    auto bound_in = [&](double alpha, double beta) {
-        const double a = A / (alpha * alpha), b = B / (alpha * beta), c = C / (beta * beta);
-        const double M = (a + c) / 2 + std::sqrt((a - c) * (a - c) / 4 + b * b);
-        std::array<UV, 3> x;
-        // Differences from one corner: far from the origin the coordinates'
-        // own magnitude would round them away.
-        for (int k = 0; k < 3; ++k)
-            x[k] = {(uv[k][0] - uv[0][0]) * alpha, (uv[k][1] - uv[0][1]) * beta};
-        const double r2 = rho_squared(x);
-        return M * r2 / 2 + (Ju / alpha + Jv / beta) * std::sqrt(r2);
+    double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf}, far = 0, qmax = 0;
+    for (const UV& x : uv)
+        for (int a = 0; a < 2; ++a)
+            lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]),
+            far = std::max(far, std::abs(x[a]));
+    for (const Vec3& q : Q) qmax = std::max({qmax, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+    thread_local std::vector<double> cu, cv;
+    thread_local std::vector<TrianglePiece> pieces;
+    cuts(u_, lo[0], hi[0], cu);
+    cuts(v_, lo[1], hi[1], cv);
+    pieces.clear();
+    cut_triangle(uv, cu, cv, pieces);
+    // The cell's middle names its patch and period.
+    auto middle = [&](int axis, int cell, const std::vector<double>& c) {
+        const double a = cell > 0 ? c[cell - 1] : lo[axis];
+        const double b = cell < static_cast<int>(c.size()) ? c[cell] : hi[axis];
+        return (a + b) / 2;
     };
-    double best = bound_in(1, 1);
-    const double top = std::max(A, C);
-    if (top > 0) {
-        const double alpha = std::sqrt(std::max(A, 1e-6 * top)),
-                     beta = std::sqrt(std::max(C, 1e-6 * top));
-        best = std::min(best, bound_in(alpha, beta));
+    const int nv = static_cast<int>(v_.at.size()) - 1;
+    double worst = 0, gradient = 0;
+    for (const TrianglePiece& piece : pieces) {
+        double su = 0, sv = 0;
+        const int iu = span_of(u_, middle(0, piece.cell_u, cu), su);
+        const int iv = span_of(v_, middle(1, piece.cell_v, cv), sv);
+        const int i = iu * nv + iv;
+        gradient = std::max(gradient, gradient_[i]);
+        worst = std::max(worst, piece_bound(piece, patches_[i], su, sv, Q));
+        if (!(worst < kInf)) return kInf;
     }
-    return (best + corner) * (1 + 1e-12);
+    // The pieces cover T's simplex up to a few ulps of lambda, and their
+    // (u,v) corners and local parameters are rounded within a few ulps of
+    // the parameters' magnitude, where a patch's continuation and its
+    // neighbour differ by less than twice the gradient times the distance;
+    // the mesh values at the pieces' corners are rounded sums of Q.
+    const double r_uv = 64 * kU * (far + (hi[0] - lo[0]) + (hi[1] - lo[1]));
+    const double slack = 4 * gradient * r_uv + 64 * kU * qmax;
+    return (worst + slack) * (1 + 1e-12);
 }
 
 } // namespace seamless

@@ -2,59 +2,84 @@
 // A certified bound on how far a triangle of a trimmed face lies from its
 // surface: the two-way counterpart, for triangles in parameter space, of the
 // subpatch bound of the Bezier pipeline (bounds/error_bound.h; paper section 6
-// on the accuracy of triangles).
+// on the accuracy of triangles), from the control points of the surface
+// restricted to the triangle (paper section 4: the convex hull property on
+// recomputed control points).
 //
 // For a (u,v) triangle T with corners x_k and mesh corners Q_k, the mesh is
-// L(x) = sum lambda_k(x) Q_k. Taylor's theorem along x -> x_k gives
-//   S(x) - L(x) = -sum lambda_k R_k + sum lambda_k (S(x_k) - Q_k),
-//   |R_k| <= M |x_k - x|^2 / 2 + J |x_k - x|,
-// with M a bound of |D^2 S[d, d]| over T (unit d; from the differenced
-// control nets of the Bezier patches T's box meets, net_bounds.h) and J the
-// sum of the jumps of the first derivative across the knot lines inside T's
-// box where the basis is only C0 (a rational circle's double knots: the
-// jump is zero up to rounding, but it is bounded, not assumed). Since
-// sum lambda_k |x_k - x|^2 = R^2 - |x - c|^2 (c, R the circumcircle), its
-// largest value over T is R^2 for an acute triangle and at most l^2 / 4 (l
-// the longest side) otherwise. So over T
-//   |S(x) - L(x)| <= M rho^2 / 2 + J rho + max_k |S(x_k) - Q_k|,
-// in any affine scaling of (u,v), of which the tightest of a few is taken.
-// Every point of the face covered by T is within this of its mesh point and
-// back: a bound both ways for the part of the face the triangles cover.
+// L(lambda) = sum lambda_k Q_k over T's barycentric coordinates lambda.
+// T is cut along the knot lines into pieces on each of which the surface is
+// one rational polynomial X / W (triangle_pieces.h); on a piece with
+// corners y_j, where L takes the values L_j, the surface is a triangular
+// Bezier patch of degree n = p + q (triangle_restriction.h), and
+//   E = X - W L = sum_a e_a B_a,  W = sum_a w_a B_a
+// in the Bernstein basis of degree n + 1 (W L has that degree). With every
+// w_a > 0, S - L = E / W is a convex combination of the e_a / w_a, so
+//   |S(y) - L(y)| <= max_a |e_a| / w_a
+// at every point of the piece: every point of the face covered by T is
+// within this of its mesh point and back (two ways), with no quotient rule
+// and no separate term for the corners or for C0 knot lines, which the cut
+// follows. e_a / w_a is a weighted mean of the control points' distances to
+// points of the flat triangle; as T shrinks it tends to the parametric
+// interpolation error, to within a factor (n + 1) / n.
+//
+// The face's surface is FaceSurface's: a closed direction is periodic (a
+// piece beyond the domain is its copy shifted by whole periods), and beyond
+// an open side the surface is its tangent plane there. There the pieces are
+// bounded against the end patch's polynomial continuation P, plus the
+// distance from P to the tangent plane, (A h_u^2 + 2 B h_u h_v + C h_v^2) / 2
+// (Taylor at the side; h the overhang, A, B, C bounds of P's second
+// derivatives over it): a pcurve a tolerance past the domain adds a term of
+// the order of that tolerance squared.
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/spline/bspline_surface.h>
+#include <seamless/tessellate/trimmed/triangle_pieces.h>
 
 #include <array>
 #include <vector>
 
 namespace seamless {
 
-using UV = std::array<double, 2>;
-
 class TriangleBound {
   public:
-    explicit TriangleBound(const BSplineSurface& s);
+    // closed_u, closed_v: the surface is periodic in that direction
+    // (FaceSurface::closed_u).
+    explicit TriangleBound(const BSplineSurface& s, bool closed_u = false, bool closed_v = false);
 
     // The bound for the triangle with (u,v) corners uv and mesh corners Q;
-    // +infinity where it cannot be certified (a discontinuous surface, a
-    // corner outside the surface's domain).
+    // +infinity where it cannot be certified (a weight not positive on the
+    // continuation beyond an open side).
     double operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q) const;
 
+    // The bound over the (u,v) rectangle box = {u0, u1, v0, v1} inside the
+    // domain, for the map onto the mesh bilinear over it with the values M
+    // at (u0, v0), (u1, v0), (u1, v1), (u0, v1): the same hull, of the
+    // tensor-product coefficients of E = X - W M (bilinear_box.cpp; a pole
+    // fan's pairing, pole_fan.h). +infinity where it cannot be certified.
+    double bilinear_box(const std::array<double, 4>& box, const std::array<Vec3, 4>& M) const;
+
+    // A bound of |S_u| and |S_v| over the domain (model units per (u,v) unit).
+    double max_gradient() const;
+
   private:
-    struct Breaks {
-        std::vector<double> at;   // distinct knots of the domain, increasing
-        std::vector<double> jump; // per interior break: bound of the derivative's jump
+    struct Axis {
+        std::vector<double> at; // distinct knots of the domain, increasing
+        bool closed = false;
+        double lo() const { return at.front(); }
+        double hi() const { return at.back(); }
     };
-    // Bounds of |S_uu|, |S_uv|, |S_vv| over the box, in (u,v) units.
-    std::array<double, 3> second_derivatives(double u0, double u1, double v0, double v1) const;
-    double jumps_inside(const Breaks& b, double lo, double hi) const;
-    void find_jumps(const BSplineSurface& s);
+    // The span of x (after whole periods `shift` are taken off, closed axes).
+    int span_of(const Axis& a, double x, double& shift) const;
+    void cuts(const Axis& a, double lo, double hi, std::vector<double>& out) const;
+    // The bound over one piece, on `patch` shifted by whole periods.
+    double piece_bound(const TrianglePiece& piece, const BezierPatch& patch, double shift_u,
+                       double shift_v, const std::array<Vec3, 3>& Q) const;
 
     std::vector<BezierPatch> patches_; // bezier_patches order: u spans outer, v spans inner
-    Breaks u_, v_;
-    double magnitude_ = 0; // largest control point coordinate, for rounding allowances
-    const BSplineSurface& surface_;
+    std::vector<double> gradient_;     // per patch: a bound of |S_u|, |S_v| (rounding terms)
+    Axis u_, v_;
 };
 
 } // namespace seamless

@@ -1,57 +1,132 @@
 // SPDX-License-Identifier: MIT
 // The certified bound of trimmed faces (brep_certification.h) on the hard
 // cases: it holds (every sampled distance between a triangle and its exact
-// analytic surface is below it) everywhere, and is tight (within 6 D of
-// the requested deviation D the sampled refinement reaches; 4.7 D on the
-// freeform face, 1.3 D on the plates) where the surfaces are polynomial. On rational surfaces it is
-// loose where the Delaunay triangles run long along a ruling (the quotient rule's mixed derivative
-// is enclosed with its dependency) and at poles (a parametric bound, where the geometric distance
-// is small): docs/results/cad.md.
+// analytic surface is below it) everywhere, and is tight.
 #include <tessellate/trimmed/brep_cases.h>
 
 #include <seamless/tessellate/tessellation.h>
+#include <seamless/tessellate/trimmed/face_surface.h>
+#include <seamless/tessellate/trimmed/triangle_distance.h>
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 using namespace seamless;
 using namespace seamless::test;
 
-TEST_CASE(
-    "trimmed faces: the certified bound holds on the hard cases, within 6 D on polynomial surfaces",
-    "[brep][heavy]") {
+namespace {
+
+// The largest distance from the mesh to the case's exact surfaces, over a
+// grid of 28 points per triangle.
+double sampled_deviation(const BRepCase& c, const TriangleMesh& m) {
+    double measured = 0;
+    for (int f = 0; f < m.triangle_count(); ++f)
+        for (int k = 0; k <= 6; ++k)
+            for (int l = 0; k + l <= 6; ++l) {
+                const double a = k / 6.0, b = l / 6.0;
+                const auto& tri = m.triangles[f];
+                const Vec3 p = (1 - a - b) * m.positions[tri[0]] + a * m.positions[tri[1]] +
+                               b * m.positions[tri[2]];
+                measured = std::max(measured, c.distance(m.triangle_surface[f], p));
+            }
+    return measured;
+}
+
+} // namespace
+
+TEST_CASE("trimmed faces: the certified bound holds on the hard cases", "[brep][heavy]") {
     for (const BRepCase& c : all_brep_cases()) {
         if (c.name == crossing_loops().name) continue; // fails by design
         INFO(c.name);
         TessellationOptions o;
         o.threads = 1;
         const Tessellation t = tessellate(c.model, o);
-        const TriangleMesh& m = t.mesh;
         const double bound = t.stats.max_error_bound;
-        // A face whose loops pass its surface's domain (beyond its edge, or
-        // across a periodic seam) is not certified.
-        const bool beyond = c.name.find("beyond") != std::string::npos ||
-                            c.name.find("across the seam") != std::string::npos;
-        CHECK(std::isfinite(bound) == !beyond);
-        double measured = 0;
-        for (int f = 0; f < m.triangle_count(); ++f)
-            for (int k = 0; k <= 6; ++k)
-                for (int l = 0; k + l <= 6; ++l) {
-                    const double a = k / 6.0, b = l / 6.0;
-                    const auto& tri = m.triangles[f];
-                    const Vec3 p = (1 - a - b) * m.positions[tri[0]] + a * m.positions[tri[1]] +
-                                   b * m.positions[tri[2]];
-                    measured = std::max(measured, c.distance(m.triangle_surface[f], p));
-                }
+        const double measured = sampled_deviation(c, t.mesh);
         const double D = t.stats.tolerance;
         INFO("D " << D << ", bound " << bound << " (triangles " << t.stats.brep.bound_triangles
                   << ", chords " << t.stats.brep.bound_chords << "), measured " << measured);
+        CHECK(std::isfinite(bound));
         CHECK(measured <= bound);
         CHECK(t.stats.brep.max_deviation <= bound);
-        bool rational = false;
-        for (const BSplineSurface& s : c.model.surfaces) rational |= s.rational();
-        if (!rational && !beyond) CHECK(bound <= 6 * D);
+        // Tight on the triangles of rational surfaces (measured: cylinder
+        // 1.14, cone 1.6 with its apex fan, sphere 4.8, torus 1.16, freeform
+        // 1.21 times the sampled distance; the sphere's triangles next to
+        // its poles but not at them keep the parametric drift).
+        const double ratio = t.stats.brep.bound_triangles / measured;
+        if (c.name.rfind("cylinder", 0) == 0 || c.name == "torus" || c.name == "freeform face" ||
+            c.name == "cone")
+            CHECK(ratio < 2.5);
+        if (c.name == "sphere") CHECK(ratio < 10);
+    }
+}
+
+TEST_CASE("trimmed faces: the certified bound holds from the faces to the mesh at an apex and "
+          "poles",
+          "[brep][heavy]") {
+    // The cone's and the sphere's lateral faces cover their whole (u,v)
+    // domain, so every surface point is a face point: a grid of them, dense
+    // next to the apex and the poles, is within the bound of the mesh (the
+    // direction the pole fans' pairing must cover, pole_fan.h).
+    for (const BRepCase& c : {cone_solid(), sphere_solid()}) {
+        INFO(c.name);
+        TessellationOptions o;
+        o.threads = 1;
+        const Tessellation t = tessellate(c.model, o);
+        const TriangleMesh& m = t.mesh;
+        const BSplineSurface& s = c.model.surfaces[0];
+        const FaceSurface face(s);
+        double farthest = 0;
+        for (int i = 0; i <= 60; ++i)
+            for (int j = 0; j <= 60; ++j) {
+                // Quadratically denser towards both ends in v.
+                const double a = i / 60.0, b = j / 60.0;
+                const double w = b < 0.5 ? 2 * b * b : 1 - 2 * (1 - b) * (1 - b);
+                const Vec3 p = face.at({s.u_min() + a * (s.u_max() - s.u_min()),
+                                        s.v_min() + w * (s.v_max() - s.v_min()), 0})
+                                   .point;
+                double nearest = 1e300;
+                for (int f = 0; f < m.triangle_count(); ++f)
+                    if (m.triangle_surface[f] == 0) {
+                        const auto& tri = m.triangles[f];
+                        nearest = std::min(nearest, point_triangle_distance(p, m.positions[tri[0]],
+                                                                            m.positions[tri[1]],
+                                                                            m.positions[tri[2]]));
+                    }
+                farthest = std::max(farthest, nearest);
+            }
+        INFO("bound " << t.stats.brep.bound_triangles << ", farthest face point " << farthest);
+        CHECK(farthest <= t.stats.brep.bound_triangles);
+    }
+}
+
+// The figures of docs/results/certified_bound.md.
+TEST_CASE("trimmed faces: figures of the certified bound", "[.figures]") {
+    std::printf("| case | D | bound | triangles | chords | sampled | bound / sampled | bound / D | "
+                "tessellation ms | certification ms |\n");
+    for (const BRepCase& c : all_brep_cases()) {
+        if (c.name == crossing_loops().name) continue;
+        TessellationOptions o;
+        o.threads = 1;
+        using clock = std::chrono::steady_clock;
+        o.certify = false;
+        auto t0 = clock::now();
+        for (int r = 0; r < 3; ++r) tessellate(c.model, o);
+        const double plain = std::chrono::duration<double>(clock::now() - t0).count() / 3;
+        o.certify = true;
+        t0 = clock::now();
+        Tessellation t;
+        for (int r = 0; r < 3; ++r) t = tessellate(c.model, o);
+        const double with = std::chrono::duration<double>(clock::now() - t0).count() / 3;
+        const double bound = t.stats.max_error_bound, D = t.stats.tolerance;
+        const double measured = sampled_deviation(c, t.mesh);
+        std::printf("| %s | %.3g | %.3g | %.3g | %.3g | %.3g | %.2f | %.2f | %.2f | %.2f |\n",
+                    c.name.c_str(), D, bound, t.stats.brep.bound_triangles,
+                    t.stats.brep.bound_chords, measured, bound / measured, bound / D, plain * 1e3,
+                    (with - plain) * 1e3);
     }
 }
