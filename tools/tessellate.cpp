@@ -13,6 +13,7 @@
 #include <seamless/base/parallel/workers_warm_up.h>
 #include <seamless/mesh/io/mesh_formats.h>
 #include <seamless/mesh/io/mesh_io.h>
+#include <seamless/mesh/io/placed_mesh.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/tessellation_stats_json.h>
@@ -32,7 +33,7 @@ struct TessellateArgs {
     long long max_triangles = TessellationOptions{}.max_triangles;
     int threads = TessellationOptions{}.threads;
     bool allow_holes = TessellationOptions{}.allow_holes;
-    bool flatten = false;
+    bool flatten = false, merge = false;
     ModelLoadOptions load;
 };
 
@@ -77,10 +78,15 @@ void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
     cmd->add_flag("--allow-holes", args.allow_holes,
                   "B-rep models: write the mesh without a face that cannot be triangulated, "
                   "with a warning naming it (default: refuse the model, naming the face)");
-    cmd->add_flag("--flatten", args.flatten,
-                  "glTF of a STEP/IGES assembly: one node per surface with every instance placed, "
-                  "as the other formats (default: the assembly's tree, each part meshed once and "
-                  "shared by its instances, with the file's names and colours)");
+    auto* flatten =
+        cmd->add_flag("--flatten", args.flatten,
+                      "glTF of a STEP/IGES assembly: one node per face with every instance placed, "
+                      "as the other formats (default: the assembly's tree, each part meshed once "
+                      "and shared by its instances, with the file's names and colours)");
+    cmd->add_flag("--merge", args.merge,
+                  "glTF of a STEP/IGES model: one mesh and node for every instance placed, one "
+                  "primitive per colour")
+        ->excludes(flatten);
     add_model_options(cmd, args.load);
 }
 
@@ -141,9 +147,8 @@ int run_tessellate(const TessellateArgs& args) {
     keep_freed_memory(); // the passes reuse each other's pages (huge_pages.h)
     const MeshFormat format = mesh_format(std::filesystem::path(args.out));
     ModelLoadOptions load = args.load;
-    const bool structured =
-        (format == MeshFormat::gltf || format == MeshFormat::glb) && !args.flatten;
-    load.keep_assembly = structured;
+    // Each part is meshed once; placed_mesh places its instances.
+    load.keep_assembly = true;
     const Model m = [&] {
         const WorkersWarmUp warm_up(args.threads); // while the model is read
         return load_model(args.model, load);
@@ -166,11 +171,22 @@ int run_tessellate(const TessellateArgs& args) {
     }();
     bar.finish();
     for (const std::string& w : t.stats.brep.warnings) std::cerr << "warning: " << w << "\n";
-    if (structured && !m.assembly.empty() && !m.brep.empty())
-        write_mesh_assembly(files.staging(0), t.mesh, m);
-    else
-        write_mesh(files.staging(0), t.mesh);
+    GltfWriteOptions gltf;
+    gltf.merge = args.merge;
+    const bool is_gltf = format == MeshFormat::gltf || format == MeshFormat::glb;
+    int placed_triangles = t.mesh.triangle_count(), placed_vertices = t.mesh.vertex_count();
+    if (is_gltf && !args.flatten && !m.brep.empty() && (args.merge || !m.assembly.empty())) {
+        write_mesh_assembly(files.staging(0), t.mesh, m, gltf);
+    } else {
+        const TriangleMesh placed = placed_mesh(t.mesh, m);
+        write_mesh(files.staging(0), placed, gltf);
+        placed_triangles = placed.triangle_count();
+        placed_vertices = placed.vertex_count();
+    }
     print_tessellation_summary(t.stats);
+    if (placed_triangles != t.mesh.triangle_count())
+        std::cout << "written with every instance placed: " << placed_triangles << " triangles, "
+                  << placed_vertices << " vertices\n";
     if (!args.stats.empty())
         write_text_atomically(files.staging(1),
                               tessellation_stats_json(t.stats, {args.model, args.out, args.angle}) +
