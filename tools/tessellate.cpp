@@ -14,6 +14,7 @@
 #include <seamless/mesh/io/mesh_formats.h>
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/mesh/io/placed_mesh.h>
+#include <seamless/model/length_unit.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/tessellation_stats_json.h>
@@ -34,6 +35,7 @@ struct TessellateArgs {
     int threads = TessellationOptions{}.threads;
     bool allow_holes = TessellationOptions{}.allow_holes;
     bool flatten = false, merge = false;
+    std::string units = "metres";
     ModelLoadOptions load;
 };
 
@@ -87,6 +89,12 @@ void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
                   "glTF of a STEP/IGES model: one mesh and node for every instance placed, one "
                   "primitive per colour")
         ->excludes(flatten);
+    cmd->add_option("--units", args.units,
+                    "glTF: 'metres' scales a STEP/IGES file's coordinates from its length unit "
+                    "(millimetres, inches, ...) to glTF's metres; 'keep' leaves them in the "
+                    "file's unit (other models and formats are never scaled)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"metres", "keep"}));
     add_model_options(cmd, args.load);
 }
 
@@ -174,6 +182,8 @@ int run_tessellate(const TessellateArgs& args) {
     GltfWriteOptions gltf;
     gltf.merge = args.merge;
     const bool is_gltf = format == MeshFormat::gltf || format == MeshFormat::glb;
+    if (is_gltf && args.units == "metres")
+        if (const double unit = file_length_unit(args.model); unit > 0) gltf.scale = unit;
     int placed_triangles = t.mesh.triangle_count(), placed_vertices = t.mesh.vertex_count();
     if (is_gltf && !args.flatten && !m.brep.empty() && (args.merge || !m.assembly.empty())) {
         write_mesh_assembly(files.staging(0), t.mesh, m, gltf);
@@ -184,6 +194,8 @@ int run_tessellate(const TessellateArgs& args) {
         placed_vertices = placed.vertex_count();
     }
     print_tessellation_summary(t.stats);
+    if (gltf.scale != 1)
+        std::cout << "coordinates scaled to metres: 1 file unit = " << gltf.scale << " m\n";
     if (placed_triangles != t.mesh.triangle_count())
         std::cout << "written with every instance placed: " << placed_triangles << " triangles, "
                   << placed_vertices << " vertices\n";
