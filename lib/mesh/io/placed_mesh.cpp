@@ -9,18 +9,6 @@
 namespace seamless {
 namespace {
 
-// "nut", then "nut.2", "nut.3" ...: flatten_assembly's names for copies.
-class CopyNames {
-  public:
-    std::string operator()(const std::string& name) {
-        const int n = uses_[name]++;
-        return n == 0 ? name : name + "." + std::to_string(n + 1);
-    }
-
-  private:
-    std::map<std::string, int> uses_;
-};
-
 // The linear part of a placement acting on normals: its cofactor matrix
 // (the inverse transpose times the determinant), row-major 3x3.
 struct NormalMap {

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 // A check of a mesh with face ids names the faces its defects lie on.
-#include "model/brep_test_models.h"
+#include "mesh/io/tessellated.h"
 
 #include <seamless/mesh/check/defect_faces.h>
 #include <seamless/mesh/io/placed_mesh.h>
-#include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>
 
@@ -16,9 +15,7 @@ namespace {
 
 TriangleMesh placed_assembly() {
     const Model m = test::small_assembly();
-    TessellationOptions opt;
-    opt.tolerance = 0.05;
-    return placed_mesh(tessellate(m, opt).mesh, m);
+    return placed_mesh(test::tessellated(m), m);
 }
 
 bool names_face_of(const std::vector<DefectFace>& faces, const TriangleMesh& m, int t) {

@@ -2,12 +2,11 @@
 // Face ids (docs/formats.md, "Face ids"): placed_mesh gives every triangle
 // its part and B-rep face, PLY and OBJ write them and read them back equal,
 // and the placed copies are the part's mesh placed (mirrors turned).
-#include "model/brep_test_models.h"
+#include "mesh/io/tessellated.h"
 #include "test_util.h"
 
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/mesh/io/placed_mesh.h>
-#include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>
 
@@ -15,11 +14,7 @@ using namespace seamless;
 
 namespace {
 
-TriangleMesh tessellated(const Model& m) {
-    TessellationOptions opt;
-    opt.tolerance = 0.05;
-    return tessellate(m, opt).mesh;
-}
+using test::tessellated;
 
 // Writes `mesh` as `name` and reads it back.
 TriangleMesh round_trip(const TriangleMesh& mesh, const std::string& name) {

@@ -2,13 +2,12 @@
 // An assembly written as glTF (write_mesh_assembly): the tree as nodes named
 // as the assembly's, one mesh per part shared by its instances, one
 // material per colour, read back with tinygltf.
-#include "model/brep_test_models.h"
+#include "mesh/io/tessellated.h"
 #include "test_util.h"
 
 #include <seamless/base/error.h>
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/mesh/io/placed_mesh.h>
-#include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>
 
@@ -21,11 +20,7 @@ using namespace seamless;
 
 namespace {
 
-TriangleMesh tessellated(const Model& m) {
-    TessellationOptions opt;
-    opt.tolerance = 0.05;
-    return tessellate(m, opt).mesh;
-}
+using test::tessellated;
 
 tinygltf::Model written(const Model& m, const std::filesystem::path& path,
                         const GltfWriteOptions& options = {}) {

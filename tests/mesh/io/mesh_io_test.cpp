@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "model/brep_test_models.h"
+#include "mesh/io/tessellated.h"
 #include "test_util.h"
 
 #include <seamless/base/error.h>
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/mesh/io/placed_mesh.h>
-#include <seamless/tessellate/tessellation.h>
 
 #include <catch2/catch.hpp>
 #include <tiny_gltf.h>
@@ -242,9 +241,7 @@ TEST_CASE("glb passes the Khronos glTF validator") {
     // An assembly: its tree, merged, and placed one node per face, with face
     // extras, in metres.
     const Model a = test::small_assembly();
-    TessellationOptions opt;
-    opt.tolerance = 0.05;
-    const TriangleMesh parts = tessellate(a, opt).mesh;
+    const TriangleMesh parts = test::tessellated(a);
     GltfWriteOptions gltf;
     gltf.scale = 0.001;
     write_mesh_assembly(dir / "tree.glb", parts, a, gltf);
