@@ -7,6 +7,8 @@
 #include <seamless/mesh/io/gltf_primitives.h>
 #include <seamless/mesh/io/placed_mesh.h>
 
+#include <tiny_gltf.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>

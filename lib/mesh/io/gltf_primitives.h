@@ -7,11 +7,14 @@
 
 #include <seamless/base/triangle_mesh.h>
 
-#include <tiny_gltf.h>
-
 #include <filesystem>
 #include <string>
 #include <vector>
+
+namespace tinygltf { // tiny_gltf.h stays in the .cpp files
+class Model;
+struct Primitive;
+} // namespace tinygltf
 
 namespace seamless {
 

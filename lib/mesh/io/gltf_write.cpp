@@ -6,6 +6,8 @@
 #include <seamless/mesh/io/gltf_io.h>
 #include <seamless/mesh/io/gltf_primitives.h>
 
+#include <tiny_gltf.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
