@@ -48,7 +48,8 @@ void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& 
 
 // Every triangle primitive (modes 4, 5, 6) of every mesh, as indexed, no welding;
 // triangle_surface is the glTF mesh index, surface_names the mesh names; corner
-// normals and uvs are read when every primitive has them.
+// normals and uvs are read when every primitive has them, face ids
+// (triangle_face; triangle_part -1) when every primitive's extras give them.
 // Images are not decoded; external buffers are read as input files are
 // (regular files within the mesh size limit). Limits: JSON nesting depth 64,
 // at most one triangle per byte of the file and its buffers (docs/formats.md).

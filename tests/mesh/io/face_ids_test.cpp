@@ -10,6 +10,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+
 using namespace seamless;
 
 namespace {
@@ -99,6 +103,33 @@ TEST_CASE("Face ids round-trip through PLY and OBJ", "[mesh][io][face_ids]") {
         INFO(name);
         check_same_ids(one, round_trip(one, name));
     }
+}
+
+TEST_CASE("glTF face extras read back as face ids", "[mesh][io][face_ids]") {
+    const Model m = test::small_assembly();
+    const TriangleMesh placed = placed_mesh(tessellated(m), m);
+    const TriangleMesh g = round_trip(placed, "a.glb");
+    REQUIRE(g.triangle_face.size() == g.triangles.size());
+    CHECK(g.triangle_part == std::vector<int>(g.triangles.size(), -1));
+    // One glTF mesh per face here: its triangles' ids are the face's.
+    for (size_t t = 0; t < g.triangles.size(); ++t)
+        CHECK(g.surface_names[g.triangle_surface[t]] == placed.surface_names[g.triangle_face[t]]);
+    std::vector<int> a = g.triangle_face, b = placed.triangle_face;
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    CHECK(a == b);
+    // Without face ids none are read, nor when one primitive lacks them.
+    TriangleMesh bare = placed;
+    bare.triangle_face.clear();
+    CHECK(round_trip(bare, "bare.glb").triangle_face.empty());
+    const auto path = test::scratch_dir("face_ids_gltf") / "a.gltf";
+    write_mesh(path, placed);
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    REQUIRE(read_mesh(path).triangle_face.size() == placed.triangles.size());
+    text.replace(text.find("\"faces\""), 7, "\"fakes\"");
+    test::write_file(path, text);
+    CHECK(read_mesh(path).triangle_face.empty());
 }
 
 TEST_CASE("OBJ and PLY face ids: names, parts out of order, parts and faces of none",
