@@ -45,8 +45,8 @@ void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
         ->required();
     cmd->add_option("-o,--output", args.out,
                     "mesh file; format by extension (" + mesh_extensions() +
-                        "); OBJ, PLY and glTF of a STEP/IGES model carry each triangle's B-rep "
-                        "face and part (face ids)")
+                        "); OBJ and PLY of a STEP/IGES model carry each triangle's B-rep face "
+                        "and part, glTF its face (face ids)")
         ->required();
     cmd->add_option("--eps1", args.eps1,
                     "planarity tolerance in model units (default 0.001 * d_max)")
