@@ -6,6 +6,7 @@
 
 #include <seamless/mesh/check/check.h>
 #include <seamless/mesh/check/check_json.h>
+#include <seamless/mesh/check/defect_faces.h>
 #include <seamless/mesh/io/mesh_formats.h>
 #include <seamless/mesh/io/mesh_io.h>
 
@@ -45,10 +46,16 @@ void add_check(CLI::App& app, Action& action) {
                 auto j = nlohmann::json::parse(check_report_json(report));
                 j["file"] = *mesh_path;
                 j["passed"] = passed;
+                if (const auto faces = defect_faces(mesh, report); !faces.empty()) {
+                    auto& list = j["defect_faces"] = nlohmann::json::array();
+                    for (const DefectFace& f : faces)
+                        list.push_back(
+                            {{"part", f.part}, {"face", f.face}, {"defects", f.defects}});
+                }
                 std::cout << j.dump(2) << "\n";
             } else {
                 std::cout << *mesh_path << "\n";
-                print_check_report(std::cout, report);
+                print_check_report(std::cout, report, 10, &mesh);
                 std::cout << (passed ? "PASS" : "FAIL");
                 if (!passed && defect_count(report) == 0)
                     std::cout << " (--closed: some component is open)";

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "check_report.h"
 
+#include <seamless/mesh/check/defect_faces.h>
+
 #include <sstream>
 
 namespace seamless::cli {
@@ -22,6 +24,12 @@ void print_list(std::ostream& os, const char* heading, const std::vector<T>& v, 
     if (v.size() > max) os << "  ... " << (v.size() - max) << " more (--json lists them)\n";
 }
 
+// " on face 12 of part 0 (nut), ..." for a defect on `triangles`; "" without face ids.
+std::string on(const TriangleMesh* mesh, const std::vector<int>& triangles) {
+    const std::string p = mesh ? places(*mesh, triangles) : "";
+    return p.empty() ? "" : " on " + p;
+}
+
 std::string tolerance(const GapTolerance& g) {
     std::ostringstream s;
     s.precision(6);
@@ -33,7 +41,7 @@ std::string tolerance(const GapTolerance& g) {
 }
 
 // Welding, counts, the gap tolerance and the border loops.
-void print_counts(std::ostream& os, const CheckReport& r, size_t max) {
+void print_counts(std::ostream& os, const CheckReport& r, size_t max, const TriangleMesh* mesh) {
     if (r.welded)
         os << "welded " << r.welded_vertices << " of " << r.input_vertices
            << " vertices with bit-identical positions\n";
@@ -49,13 +57,14 @@ void print_counts(std::ostream& os, const CheckReport& r, size_t max) {
     for (size_t i = 0; i < r.border_loops.size() && i < max; ++i) {
         const auto& l = r.border_loops[i];
         os << "  loop of " << l.edges << " edges, length " << l.length << ", at " << point(l.start)
-           << (l.closed ? "" : " (not closed)") << "\n";
+           << (l.closed ? "" : " (not closed)") << on(mesh, l.triangles) << "\n";
     }
     if (r.border_loops.size() > max) os << "  ... " << r.border_loops.size() - max << " more\n";
 }
 
 // Non-manifold elements, shell contacts, seams, cracks and T-junctions.
-void print_edge_defects(std::ostream& os, const CheckReport& r, size_t max) {
+void print_edge_defects(std::ostream& os, const CheckReport& r, size_t max,
+                        const TriangleMesh* mesh) {
     print_list(
         os, "non-manifold edges", r.non_manifold_edges,
         [](const EdgeDefect& e) {
@@ -82,36 +91,38 @@ void print_edge_defects(std::ostream& os, const CheckReport& r, size_t max) {
         max);
     print_list(
         os, "cracks (border edges)", r.cracks,
-        [](const Crack& c) {
+        [mesh](const Crack& c) {
             std::ostringstream s;
             s.precision(10);
             s << "triangle " << c.triangle << " edge at " << point(c.location)
               << " runs along triangle " << c.other_triangle << ", gap " << c.gap << " (seam "
-              << c.seam << ")";
+              << c.seam << ")" << on(mesh, {c.triangle, c.other_triangle});
             return s.str();
         },
         max);
     if (!r.cracks.empty()) os << "widest crack gap: " << r.widest_crack << "\n";
     print_list(
         os, "T-junctions", r.t_junctions,
-        [](const TJunction& t) {
+        [mesh](const TJunction& t) {
             std::ostringstream s;
             s.precision(10);
             s << "vertex " << t.vertex << " at " << point(t.position) << " on an edge of triangle "
-              << t.triangle << ", distance " << t.distance;
+              << t.triangle << ", distance " << t.distance << on(mesh, {t.triangle});
             return s.str();
         },
         max);
 }
 
 // Triangle defects and overlaps, then the shells with their measures.
-void print_triangles_and_shells(std::ostream& os, const CheckReport& r, size_t max) {
-    auto tri = [](const TriangleDefect& d) {
-        return "triangle " + std::to_string(d.triangle) + " at " + point(d.location);
+void print_triangles_and_shells(std::ostream& os, const CheckReport& r, size_t max,
+                                const TriangleMesh* mesh) {
+    auto tri = [mesh](const TriangleDefect& d) {
+        return "triangle " + std::to_string(d.triangle) + " at " + point(d.location) +
+               on(mesh, {d.triangle});
     };
-    auto pair = [](const TrianglePair& p) {
+    auto pair = [mesh](const TrianglePair& p) {
         return "triangles " + std::to_string(p.t0) + " and " + std::to_string(p.t1) + " at " +
-               point(p.location);
+               point(p.location) + on(mesh, {p.t0, p.t1});
     };
     print_list(os, "degenerate triangles", r.degenerate_triangles, tri, max);
     print_list(os, "duplicated triangles", r.duplicated_triangles, pair, max);
@@ -135,13 +146,29 @@ void print_triangles_and_shells(std::ostream& os, const CheckReport& r, size_t m
     }
 }
 
+// The faces with defects on them (a mesh with face ids).
+void print_defect_faces(std::ostream& os, const CheckReport& r, size_t max,
+                        const TriangleMesh& mesh) {
+    const std::vector<DefectFace> faces = defect_faces(mesh, r);
+    if (faces.empty()) return;
+    std::vector<std::string> lines;
+    for (const DefectFace& f : faces) {
+        lines.push_back(triangle_place(mesh, f.triangle) + ": " + std::to_string(f.defects) +
+                        (f.defects == 1 ? " defect or border loop" : " defects or border loops"));
+    }
+    print_list(
+        os, "faces with defects or border loops", lines, [](const std::string& s) { return s; }, max);
+}
+
 } // namespace
 
-void print_check_report(std::ostream& os, const CheckReport& r, size_t max) {
+void print_check_report(std::ostream& os, const CheckReport& r, size_t max,
+                        const TriangleMesh* mesh) {
     os.precision(10);
-    print_counts(os, r, max);
-    print_edge_defects(os, r, max);
-    print_triangles_and_shells(os, r, max);
+    print_counts(os, r, max, mesh);
+    print_edge_defects(os, r, max, mesh);
+    print_triangles_and_shells(os, r, max, mesh);
+    if (mesh) print_defect_faces(os, r, max, *mesh);
     os << "defects: " << defect_count(r) << "\n";
 }
 

@@ -13,6 +13,8 @@
 #include <seamless/base/parallel/workers_warm_up.h>
 #include <seamless/mesh/io/mesh_formats.h>
 #include <seamless/mesh/io/mesh_io.h>
+#include <seamless/mesh/io/placed_mesh.h>
+#include <seamless/model/length_unit.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/tessellation_stats_json.h>
@@ -33,7 +35,8 @@ struct TessellateArgs {
     long long max_triangles = TessellationOptions{}.max_triangles;
     int threads = TessellationOptions{}.threads;
     bool allow_holes = TessellationOptions{}.allow_holes;
-    bool flatten = false;
+    bool flatten = false, merge = false;
+    std::string units = "metres";
     ModelLoadOptions load;
 };
 
@@ -42,7 +45,9 @@ void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
                     "model file (.json, Newell .bpt, STEP .step/.stp, IGES .iges/.igs)")
         ->required();
     cmd->add_option("-o,--output", args.out,
-                    "mesh file; format by extension (" + mesh_extensions() + ")")
+                    "mesh file; format by extension (" + mesh_extensions() +
+                        "); OBJ and PLY of a STEP/IGES model carry each triangle's B-rep face "
+                        "and part, glTF its face (face ids)")
         ->required();
     cmd->add_option("--eps1", args.eps1,
                     "planarity tolerance in model units (default 0.001 * d_max)")
@@ -78,10 +83,21 @@ void add_tessellate_options(CLI::App* cmd, TessellateArgs& args) {
     cmd->add_flag("--allow-holes", args.allow_holes,
                   "B-rep models: write the mesh without a face that cannot be triangulated, "
                   "with a warning naming it (default: refuse the model, naming the face)");
-    cmd->add_flag("--flatten", args.flatten,
-                  "glTF of a STEP/IGES assembly: one node per surface with every instance placed, "
-                  "as the other formats (default: the assembly's tree, each part meshed once and "
-                  "shared by its instances, with the file's names and colours)");
+    auto* flatten =
+        cmd->add_flag("--flatten", args.flatten,
+                      "glTF of a STEP/IGES assembly: one node per face with every instance placed, "
+                      "as the other formats (default: the assembly's tree, each part meshed once "
+                      "and shared by its instances, with the file's names and colours)");
+    cmd->add_flag("--merge", args.merge,
+                  "glTF of a STEP/IGES model: one mesh and node for every instance placed, one "
+                  "primitive per colour")
+        ->excludes(flatten);
+    cmd->add_option("--units", args.units,
+                    "glTF: 'metres' scales a STEP/IGES file's coordinates from its length unit "
+                    "(millimetres, inches, ...) to glTF's metres; 'keep' leaves them in the "
+                    "file's unit (other models and formats are never scaled)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"metres", "keep"}));
     add_model_options(cmd, args.load);
 }
 
@@ -146,9 +162,8 @@ int run_tessellate(const TessellateArgs& args) {
     keep_freed_memory(); // the passes reuse each other's pages (huge_pages.h)
     const MeshFormat format = mesh_format(std::filesystem::path(args.out));
     ModelLoadOptions load = args.load;
-    const bool structured =
-        (format == MeshFormat::gltf || format == MeshFormat::glb) && !args.flatten;
-    load.keep_assembly = structured;
+    // Each part is meshed once; placed_mesh places its instances.
+    load.keep_assembly = true;
     const Model m = [&] {
         const WorkersWarmUp warm_up(args.threads); // while the model is read
         return load_model(args.model, load);
@@ -174,11 +189,26 @@ int run_tessellate(const TessellateArgs& args) {
     }();
     bar.finish();
     for (const std::string& w : t.stats.brep.warnings) std::cerr << "warning: " << w << "\n";
-    if (structured && !m.assembly.empty() && !m.brep.empty())
-        write_mesh_assembly(files.staging(0), t.mesh, m);
-    else
-        write_mesh(files.staging(0), t.mesh);
+    GltfWriteOptions gltf;
+    gltf.merge = args.merge;
+    const bool is_gltf = format == MeshFormat::gltf || format == MeshFormat::glb;
+    if (is_gltf && args.units == "metres")
+        if (const double unit = file_length_unit(args.model); unit > 0) gltf.scale = unit;
+    int placed_triangles = t.mesh.triangle_count(), placed_vertices = t.mesh.vertex_count();
+    if (is_gltf && !args.flatten && !m.brep.empty() && (args.merge || !m.assembly.empty())) {
+        write_mesh_assembly(files.staging(0), t.mesh, m, gltf);
+    } else {
+        const TriangleMesh placed = placed_mesh(t.mesh, m);
+        write_mesh(files.staging(0), placed, gltf);
+        placed_triangles = placed.triangle_count();
+        placed_vertices = placed.vertex_count();
+    }
     print_tessellation_summary(t.stats);
+    if (gltf.scale != 1)
+        std::cout << "coordinates scaled to metres: 1 file unit = " << gltf.scale << " m\n";
+    if (placed_triangles != t.mesh.triangle_count())
+        std::cout << "written with every instance placed: " << placed_triangles << " triangles, "
+                  << placed_vertices << " vertices\n";
     if (!args.stats.empty())
         write_text_atomically(files.staging(1),
                               tessellation_stats_json(t.stats, {args.model, args.out, args.angle}) +

@@ -28,6 +28,12 @@ struct TriangleMesh {
     std::vector<std::array<std::array<double, 2>, 3>> corner_uvs;
     // surface_names: one per source surface.
     std::vector<std::string> surface_names;
+    // Face ids (docs/formats.md, "Face ids"): triangle_face: #F index of the
+    // B-rep face each triangle lies on (-1: none); triangle_part: #F index of
+    // its part (into part_names; -1: none). Set by placed_mesh
+    // (mesh/io/placed_mesh.h) and by the readers of files that carry them.
+    std::vector<int> triangle_face, triangle_part;
+    std::vector<std::string> part_names;
 
     int vertex_count() const { return static_cast<int>(positions.size()); }
     int triangle_count() const { return static_cast<int>(triangles.size()); }

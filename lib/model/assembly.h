@@ -12,6 +12,7 @@
 
 #include <seamless/model/brep_placement.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,20 @@ std::vector<int> face_colours(const Model& m);
 // kMaxCoordinate and invertible, colours in [0, 1]. Messages name the
 // field: "assembly.nodes[3].placement[5]".
 void validate_assembly(const Model& m, const std::string& file);
+
+// "#55", then "#55.2", "#55.3" ...: the names the file reader gives the
+// copies of an instanced face (read_step_iges.cpp, face_names), and
+// flatten_assembly the copies of faces and solids, in order of use.
+class CopyNames {
+  public:
+    std::string operator()(const std::string& name) {
+        const int n = uses_[name]++;
+        return n == 0 ? name : name + "." + std::to_string(n + 1);
+    }
+
+  private:
+    std::map<std::string, int> uses_;
+};
 
 // The model with every instance placed: each part's faces (and their
 // surfaces, edges, curves, vertices) copied once per instance, mapped to

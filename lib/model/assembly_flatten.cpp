@@ -7,23 +7,8 @@
 #include <seamless/base/error.h>
 #include <seamless/model/model.h>
 
-#include <map>
-
 namespace seamless {
 namespace {
-
-// "#55", then "#55.2", "#55.3" ...: the names the file reader gives the
-// copies of an instanced face (read_step_iges.cpp, face_names).
-class UniqueNames {
-  public:
-    std::string operator()(const std::string& name) {
-        const int n = uses_[name]++;
-        return n == 0 ? name : name + "." + std::to_string(n + 1);
-    }
-
-  private:
-    std::map<std::string, int> uses_;
-};
 
 double determinant(const AffineMap& map) {
     const double* a = map.m;
@@ -35,7 +20,7 @@ double determinant(const AffineMap& map) {
 // are fresh for every instance.
 class InstanceCopier {
   public:
-    InstanceCopier(const Model& from, Model& to, const AffineMap& map, UniqueNames& face_names)
+    InstanceCopier(const Model& from, Model& to, const AffineMap& map, CopyNames& face_names)
         : from_(from), to_(to), map_(map), stretch_(map.stretch()), mirror_(determinant(map) < 0),
           face_names_(face_names), surface_(from.surfaces.size(), -1),
           edge_(from.brep.edges.size(), -1), vertex_(from.brep.vertices.size(), -1),
@@ -109,7 +94,7 @@ class InstanceCopier {
     const AffineMap& map_;
     double stretch_;
     bool mirror_;
-    UniqueNames& face_names_;
+    CopyNames& face_names_;
     std::vector<int> surface_, edge_, vertex_, curve_, pcurve_;
 };
 
@@ -136,7 +121,7 @@ Model flatten_assembly(const Model& m) {
     const std::vector<int> colours = face_colours(m);
     bool coloured = false;
     for (int c : colours) coloured = coloured || c >= 0;
-    UniqueNames face_names, solid_names;
+    CopyNames face_names, solid_names;
     for (size_t n = 0; n < m.assembly.nodes.size(); ++n) {
         const int p = m.assembly.nodes[n].part;
         if (p < 0) continue;

@@ -244,6 +244,7 @@ class BorderDefectFinder {
             for (;;) {
                 done[e] = 1;
                 ++loop.edges;
+                loop.triangles.push_back(border_[e].triangle);
                 loop.length += len_[e];
                 v = border_[e].lo == v ? border_[e].hi : border_[e].lo;
                 if (v == start) break;

@@ -33,6 +33,7 @@ struct BorderLoop {
     double length = 0;
     Vec3 start;
     bool closed = true;
+    std::vector<int> triangles; // the triangle of each of its edges, in order
 };
 
 // A border vertex within the tolerance of the interior of a border edge (farther

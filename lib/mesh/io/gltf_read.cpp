@@ -11,6 +11,8 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -150,6 +152,10 @@ class PrimitiveReader {
     TriangleMesh finish() && {
         if (all_normals_ && !mesh_.triangles.empty()) mesh_.corner_normals = std::move(normals_);
         if (all_uvs_ && !mesh_.triangles.empty()) mesh_.corner_uvs = std::move(uvs_);
+        if (all_faces_ && !mesh_.triangles.empty()) { // face ids; the parts are not written
+            mesh_.triangle_face = std::move(faces_);
+            mesh_.triangle_part.assign(mesh_.triangles.size(), -1);
+        }
         return std::move(mesh_);
     }
 
@@ -192,6 +198,37 @@ class PrimitiveReader {
             normals_.push_back(cn);
             uvs_.push_back(cu);
         }
+        read_faces(prim, tris.size());
+    }
+
+    // The face ids of a primitive's n triangles from its extras (docs/formats.md,
+    // "Face ids": {"faces": [[face, first, count], ...]}); a primitive
+    // without them, or whose runs do not cover its triangles in order, leaves
+    // the mesh without face ids (extras are any application's).
+    void read_faces(const tinygltf::Primitive& prim, size_t n) {
+        const size_t before = faces_.size();
+        faces_.resize(before + n, -1);
+        const tinygltf::Value& runs = prim.extras.Has("faces") ? prim.extras.Get("faces") : none_;
+        size_t next = 0;
+        for (size_t k = 0; all_faces_ && k < runs.ArrayLen(); ++k) {
+            const tinygltf::Value& run = runs.Get(static_cast<int>(k));
+            double v[3];
+            for (int i = 0; i < 3; ++i) {
+                const tinygltf::Value& x = run.ArrayLen() == 3 ? run.Get(i) : none_;
+                v[i] = x.IsNumber() ? x.GetNumberAsDouble() : -2;
+                // Checked on the double, before any conversion.
+                if (!(v[i] >= (i == 0 ? -1 : 0) && v[i] <= 2147483647.0) ||
+                    v[i] != std::floor(v[i]))
+                    all_faces_ = false;
+            }
+            if (!all_faces_ || v[1] != double(next) || v[2] < 1 || v[1] + v[2] > double(n)) {
+                all_faces_ = false;
+                break;
+            }
+            std::fill_n(faces_.begin() + before + next, size_t(v[2]), static_cast<int>(v[0]));
+            next += size_t(v[2]);
+        }
+        if (next != n) all_faces_ = false;
     }
 
     // The primitive's POSITION accessor in `pv`, its vertices appended to the
@@ -297,7 +334,9 @@ class PrimitiveReader {
     size_t max_triangles_;
     std::map<int, int> first_vertex_; // POSITION accessor -> index of its first vertex
     TriangleMesh mesh_;
-    bool all_normals_ = true, all_uvs_ = true;
+    bool all_normals_ = true, all_uvs_ = true, all_faces_ = true;
+    std::vector<int> faces_;
+    const tinygltf::Value none_;
     std::vector<std::array<Vec3, 3>> normals_;
     std::vector<std::array<std::array<double, 2>, 3>> uvs_;
 };

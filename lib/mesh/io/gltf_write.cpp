@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // glTF 2.0 writer on tinygltf (the Debian package ships it compiled, so no
-// TINYGLTF_IMPLEMENTATION here): one mesh and node per source surface.
+// TINYGLTF_IMPLEMENTATION here): one mesh and node per source surface, and
+// the primitives every glTF writer builds (gltf_primitives.h).
 #include <seamless/base/error.h>
 #include <seamless/mesh/io/gltf_io.h>
+#include <seamless/mesh/io/gltf_primitives.h>
 
 #include <tiny_gltf.h>
 
@@ -50,11 +52,6 @@ int add_float_attribute(tinygltf::Model& model, const std::vector<float>& values
                         TINYGLTF_COMPONENT_TYPE_FLOAT, count, type);
 }
 
-// What a mesh holds per triangle corner, written when it holds it for every triangle.
-struct CornerData {
-    bool normals = false, uvs = false;
-};
-
 // The unit normal of corner c of triangle t, renormalised in float so the
 // validator's unit-length test holds.
 std::array<float, 3> corner_normal(const TriangleMesh& mesh, int t, int c) {
@@ -82,7 +79,7 @@ struct PrimitiveArrays {
 };
 
 PrimitiveArrays primitive_arrays(const TriangleMesh& mesh, const std::vector<int>& tris,
-                                 CornerData has) {
+                                 CornerData has, double scale) {
     PrimitiveArrays a;
     std::map<VertexKey, uint32_t> index_of;
     a.indices.reserve(3 * tris.size());
@@ -99,7 +96,7 @@ PrimitiveArrays primitive_arrays(const TriangleMesh& mesh, const std::vector<int
             const VertexKey key{v, n[0], n[1], n[2], w[0], w[1]};
             auto [it, inserted] = index_of.try_emplace(key, static_cast<uint32_t>(a.vertices()));
             if (inserted) {
-                const Vec3 p = mesh.positions[v];
+                const Vec3 p = scale * mesh.positions[v];
                 a.pos.insert(a.pos.end(), {static_cast<float>(p.x), static_cast<float>(p.y),
                                            static_cast<float>(p.z)});
                 if (has.normals) a.nrm.insert(a.nrm.end(), n.begin(), n.end());
@@ -155,55 +152,36 @@ void add_surface_node(tinygltf::Model& model, tinygltf::Scene& scene, const Tria
     scene.nodes.push_back(static_cast<int>(model.nodes.size()) - 1);
 }
 
-// sRGB (how CAD files write colours) to glTF's linear baseColorFactor.
-double linear(double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+} // namespace
+
+tinygltf::Model new_gltf_model() {
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "seamless";
+    model.buffers.resize(1);
+    return model;
 }
 
-void add_material(tinygltf::Model& model, const Rgba& c, int k) {
-    tinygltf::Material m;
-    m.name = "colour-" + std::to_string(k);
-    m.pbrMetallicRoughness.baseColorFactor = {linear(c.r), linear(c.g), linear(c.b), c.a};
-    m.pbrMetallicRoughness.metallicFactor = 0; // glTF's default, 1, would be metal
-    m.pbrMetallicRoughness.roughnessFactor = 0.5;
-    if (c.a < 1) m.alphaMode = "BLEND";
-    model.materials.push_back(std::move(m));
+tinygltf::Primitive add_triangles(tinygltf::Model& model, const TriangleMesh& mesh,
+                                  const std::vector<int>& tris, CornerData has, double scale) {
+    return add_primitive(model, primitive_arrays(mesh, tris, has, scale), has);
 }
 
-// The node's placement as glTF's column-major 4x4 matrix; none for the identity.
-std::vector<double> node_matrix(const AffineMap& p) {
-    const AffineMap id;
-    if (std::equal(p.m, p.m + 12, id.m)) return {};
-    std::vector<double> m(16, 0.0);
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c) m[4 * c + r] = p.m[4 * r + c];
-    m[15] = 1;
-    return m;
-}
-
-// Per part, its triangles grouped by their face's colour (-1: none).
-std::vector<std::map<int, std::vector<int>>>
-part_triangles(const TriangleMesh& mesh, const Model& model, const std::string& name) {
-    const size_t nf = mesh.triangles.size();
-    if (mesh.triangle_surface.size() != nf)
-        throw InputError(name, "", "the mesh does not say which face each triangle is on");
-    std::vector<int> face_of(model.surfaces.size(), -1), part_of(model.brep.faces.size(), -1);
-    for (size_t f = 0; f < model.brep.faces.size(); ++f)
-        face_of[model.brep.faces[f].surface] = static_cast<int>(f);
-    const std::vector<PartRange> ranges = part_ranges(model.assembly);
-    for (size_t p = 0; p < ranges.size(); ++p)
-        for (int f = 0; f < ranges[p].face_count; ++f)
-            part_of[ranges[p].first_face + f] = static_cast<int>(p);
-    const std::vector<int> colours = face_colours(model);
-    std::vector<std::map<int, std::vector<int>>> out(ranges.size());
-    for (size_t t = 0; t < nf; ++t) {
-        const int s = mesh.triangle_surface[t];
-        const int f = s >= 0 && s < static_cast<int>(face_of.size()) ? face_of[s] : -1;
-        if (f < 0 || part_of[f] < 0)
-            throw InputError(name, "", "triangle " + std::to_string(t) + " is on no part's face");
-        out[part_of[f]][colours[f]].push_back(static_cast<int>(t));
+void add_face_extras(tinygltf::Primitive& prim, const std::vector<int>& tris,
+                     const std::vector<int>& face_of) {
+    if (face_of.empty()) return;
+    tinygltf::Value::Array runs;
+    for (size_t k = 0; k < tris.size();) {
+        size_t end = k + 1;
+        while (end < tris.size() && face_of[tris[end]] == face_of[tris[k]]) ++end;
+        runs.emplace_back(tinygltf::Value::Array{tinygltf::Value(face_of[tris[k]]),
+                                                 tinygltf::Value(static_cast<int>(k)),
+                                                 tinygltf::Value(static_cast<int>(end - k))});
+        k = end;
     }
-    return out;
+    tinygltf::Value::Object extras;
+    extras["faces"] = tinygltf::Value(std::move(runs));
+    prim.extras = tinygltf::Value(std::move(extras));
 }
 
 void finish_and_write(tinygltf::Model& model, const std::filesystem::path& path, bool binary,
@@ -218,89 +196,27 @@ void finish_and_write(tinygltf::Model& model, const std::filesystem::path& path,
         throw InputError(name, "", "cannot write glTF file");
 }
 
-// A model with colours but no tree as one part placed once.
-Model one_part(const Model& m, const std::string& name) {
-    Model one = m;
-    AssemblyPart part;
-    part.name = std::filesystem::path(m.source.empty() ? name : m.source).stem().string();
-    part.face_count = static_cast<int>(m.brep.faces.size());
-    part.shell_count = static_cast<int>(m.brep.shells.size());
-    part.solid_count = static_cast<int>(m.brep.solids.size());
-    one.assembly.parts = {part};
-    one.assembly.nodes = {{part.name, -1, AffineMap{}, 0}};
-    return one;
-}
-
-void write_tree(const std::filesystem::path& path, const TriangleMesh& mesh, const Model& m,
-                bool binary, const std::string& name) {
-    const Assembly& a = m.assembly;
-    const size_t nf = mesh.triangles.size();
-    const CornerData has{mesh.corner_normals.size() == nf && nf > 0,
-                         mesh.corner_uvs.size() == nf && nf > 0};
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "seamless";
-    model.buffers.resize(1);
-    for (size_t k = 0; k < a.colours.size(); ++k) add_material(model, a.colours[k], int(k));
-    const auto parts = part_triangles(mesh, m, name);
-    for (size_t p = 0; p < parts.size(); ++p) {
-        tinygltf::Mesh gmesh;
-        gmesh.name = a.parts[p].name;
-        for (const auto& [colour, tris] : parts[p]) {
-            tinygltf::Primitive prim = add_primitive(model, primitive_arrays(mesh, tris, has), has);
-            prim.material = colour;
-            gmesh.primitives.push_back(std::move(prim));
-        }
-        model.meshes.push_back(std::move(gmesh));
-    }
-    tinygltf::Scene scene;
-    for (size_t k = 0; k < a.nodes.size(); ++k) {
-        const AssemblyNode& n = a.nodes[k];
-        tinygltf::Node node;
-        node.name = n.name;
-        node.matrix = node_matrix(n.placement);
-        // A part without triangles (no faces) has an empty mesh, which glTF forbids.
-        if (n.part >= 0 && !model.meshes[n.part].primitives.empty()) node.mesh = n.part;
-        model.nodes.push_back(std::move(node));
-        if (n.parent < 0)
-            scene.nodes.push_back(static_cast<int>(k));
-        else
-            model.nodes[n.parent].children.push_back(static_cast<int>(k));
-    }
-    model.scenes.push_back(scene);
-    finish_and_write(model, path, binary, name);
-}
-
-} // namespace
-
-void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
-                         const Model& m, bool binary, const std::string& name) {
-    if (m.assembly.has_tree())
-        write_tree(path, mesh, m, binary, name);
-    else
-        write_tree(path, mesh, one_part(m, name), binary, name);
-}
-
 void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, bool binary,
-                const std::string& name) {
+                const std::string& name, const GltfWriteOptions& options) {
     const size_t nf = mesh.triangles.size();
     const bool has_surface = mesh.triangle_surface.size() == nf && nf > 0;
-    const CornerData has{mesh.corner_normals.size() == nf && nf > 0,
-                         mesh.corner_uvs.size() == nf && nf > 0};
+    const CornerData has = CornerData::of(mesh);
+    const std::vector<int> no_faces;
+    const std::vector<int>& face_of =
+        mesh.triangle_face.size() == nf ? mesh.triangle_face : no_faces;
 
     // Group triangles by source surface, in surface order.
     std::map<int, std::vector<int>> groups;
     for (size_t t = 0; t < nf; ++t)
         groups[has_surface ? mesh.triangle_surface[t] : 0].push_back(static_cast<int>(t));
 
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "seamless";
-    model.buffers.resize(1);
+    tinygltf::Model model = new_gltf_model();
     tinygltf::Scene scene;
-    for (const auto& [surface, tris] : groups)
-        add_surface_node(model, scene, mesh, surface,
-                         add_primitive(model, primitive_arrays(mesh, tris, has), has));
+    for (const auto& [surface, tris] : groups) {
+        tinygltf::Primitive prim = add_triangles(model, mesh, tris, has, options.scale);
+        add_face_extras(prim, tris, face_of);
+        add_surface_node(model, scene, mesh, surface, std::move(prim));
+    }
     model.scenes.push_back(scene);
     finish_and_write(model, path, binary, name);
 }

@@ -95,13 +95,14 @@ TriangleMesh parse_as(MeshFormat format, const std::string& bytes, const std::st
 
 } // namespace
 
-void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
+void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh,
+                const GltfWriteOptions& gltf) {
     const MeshFormat format = mesh_format(path);
     const std::string file = path.string();
     validate(mesh, file);
     if (is_gltf(format)) {
         write_atomically(path, [&](const fs::path& tmp) {
-            write_gltf(tmp, mesh, format == MeshFormat::glb, file);
+            write_gltf(tmp, mesh, format == MeshFormat::glb, file, gltf);
         });
         return;
     }
@@ -116,14 +117,14 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
 }
 
 void write_mesh_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
-                         const Model& model) {
+                         const Model& model, const GltfWriteOptions& gltf) {
     const MeshFormat format = mesh_format(path);
     const std::string file = path.string();
     if (!is_gltf(format))
         throw InputError(file, "", "an assembly's tree is written as glTF (.gltf, .glb) only");
     validate(mesh, file);
     write_atomically(path, [&](const fs::path& tmp) {
-        write_gltf_assembly(tmp, mesh, model, format == MeshFormat::glb, file);
+        write_gltf_assembly(tmp, mesh, model, format == MeshFormat::glb, file, gltf);
     });
 }
 

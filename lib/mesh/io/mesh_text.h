@@ -60,6 +60,15 @@ class Tokens {
         ++line_;
         return true;
     }
+    // The rest of the line's tokens, one space apart (a name).
+    std::string rest_of_line() {
+        std::string s;
+        for (auto t = next_in_line(); !t.empty(); t = next_in_line()) {
+            if (!s.empty()) s += ' ';
+            s += t;
+        }
+        return s;
+    }
     // Next token, crossing lines; empty at the end of the text.
     std::string_view next() {
         for (;;) {
@@ -116,8 +125,39 @@ inline void add_polygon(TriangleMesh& mesh, const std::vector<long long>& face) 
 }
 
 // The body that OFF and ASCII PLY share: one "x y z" line per vertex, then
-// one "3 a b c" line per triangle (0-based indices).
-void append_points_and_triangles(std::string& out, const TriangleMesh& mesh);
+// one "3 a b c" line per triangle (0-based indices), with `face_ids` its
+// part and face id after it ("3 a b c part face").
+void append_points_and_triangles(std::string& out, const TriangleMesh& mesh, bool face_ids);
+
+// Whether `mesh` holds face ids to write: triangle_face and triangle_part
+// for every triangle.
+inline bool has_face_ids(const TriangleMesh& mesh) {
+    return !mesh.triangles.empty() && mesh.triangle_face.size() == mesh.triangles.size() &&
+           mesh.triangle_part.size() == mesh.triangles.size();
+}
+
+// A name on one line of a text format: control characters become spaces,
+// an empty name "unnamed".
+inline std::string one_line(const std::string& name) {
+    std::string s = name;
+    for (char& c : s)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+    return s.find_first_not_of(' ') == std::string::npos ? "unnamed" : s;
+}
+
+// The name of part p of a mesh with face ids: part_names[p], else "part_<p>".
+inline std::string part_name(const TriangleMesh& mesh, int p) {
+    return p >= 0 && p < static_cast<int>(mesh.part_names.size()) ? one_line(mesh.part_names[p])
+                                                                  : "part_" + std::to_string(p);
+}
+
+// Adds per-triangle ids for the triangles add_polygon added since `before`.
+inline void add_polygon_ids(TriangleMesh& mesh, size_t before, int part, int face) {
+    for (size_t t = before; t < mesh.triangles.size(); ++t) {
+        mesh.triangle_part.push_back(part);
+        mesh.triangle_face.push_back(face);
+    }
+}
 
 // The formats: `text` the file's bytes, `file` its name in messages. The
 // readers throw InputError naming the file and the line or element.

@@ -1,16 +1,50 @@
 // SPDX-License-Identifier: MIT
 // OBJ: "v x y z", "f a b c ..." with 1-based or negative indices, "a/t/n" forms;
-// "g name" groups map to triangle_surface when written by us.
+// face ids as "o part" objects and "g face_N" groups over one vertex list.
 #include <seamless/mesh/io/mesh_text.h>
 
 #include <algorithm>
+#include <charconv>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace seamless::mesh_text {
 
 namespace {
+
+// The object of triangles on no part ("o -"); a part of that name is written "part_<k>".
+constexpr std::string_view kNoPart = "-";
+
+// Face ids as the reader meets them: the current "o" (parts numbered in the
+// order their names first appear) and "g face_N".
+struct ObjIds {
+    std::map<std::string, int> part_of;
+    std::vector<std::string> names;
+    int part = -1, face = -1;
+    bool seen = false;
+
+    void object(const std::string& name) {
+        seen = true;
+        if (name == kNoPart) {
+            part = -1;
+            return;
+        }
+        auto [it, added] = part_of.try_emplace(name, static_cast<int>(names.size()));
+        if (added) names.push_back(name);
+        part = it->second;
+    }
+    void group(std::string_view first) {
+        face = -1;
+        if (first.substr(0, 5) != "face_") return;
+        seen = true;
+        const std::string_view n = first.substr(5);
+        int v = -1;
+        auto r = std::from_chars(n.data(), n.data() + n.size(), v);
+        if (r.ec == std::errc() && r.ptr == n.data() + n.size() && v >= 0) face = v;
+    }
+};
 
 // Statements of the OBJ format (Wavefront, "Object Files (.obj)", B1) that
 // carry no triangles: accepted and ignored. Anything else is an error.
@@ -31,6 +65,7 @@ TriangleMesh read_obj(std::string_view text, const std::string& file) {
     Tokens in(text, file);
     TriangleMesh mesh;
     std::vector<long long> face;
+    ObjIds ids;
     do {
         auto key = in.next_in_line();
         if (key.empty() || key[0] == '#') continue;
@@ -55,13 +90,82 @@ TriangleMesh read_obj(std::string_view text, const std::string& file) {
                 face.push_back(v);
             }
             if (face.size() < 3) in.fail("face with fewer than 3 vertices");
+            const size_t before = mesh.triangles.size();
             add_polygon(mesh, face);
+            add_polygon_ids(mesh, before, ids.part, ids.face);
+        } else if (key == "o") {
+            ids.object(in.rest_of_line());
+        } else if (key == "g") {
+            ids.group(in.next_in_line());
         } else if (!is_other_obj_statement(key)) {
             in.fail("unknown OBJ statement '" + std::string(key) + "'");
         }
     } while (in.next_line());
+    if (ids.seen) {
+        mesh.part_names = std::move(ids.names);
+    } else {
+        mesh.triangle_part.clear();
+        mesh.triangle_face.clear();
+    }
     return mesh;
 }
+
+namespace {
+
+// "f a b c" of triangle t.
+std::string obj_triangle(const TriangleMesh& mesh, size_t t) {
+    const auto& f = mesh.triangles[t];
+    return "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " +
+           std::to_string(f[2] + 1) + "\n";
+}
+
+// "o NAME" of part p (-1: none).
+std::string obj_object(const TriangleMesh& mesh, int p) {
+    const std::string name = part_name(mesh, p);
+    return "o " +
+           (p < 0             ? std::string(kNoPart)
+            : name == kNoPart ? "part_" + std::to_string(p)
+                              : name) +
+           "\n";
+}
+
+// Whether the parts first appear in the order of their ids, all of them
+// (the reader numbers parts in the order their names first appear).
+bool parts_in_order(const TriangleMesh& mesh) {
+    int next = 0;
+    for (int p : mesh.triangle_part)
+        if (p >= next) {
+            if (p != next) return false;
+            ++next;
+        }
+    return next == static_cast<int>(mesh.part_names.size());
+}
+
+// The triangles of a mesh with face ids: "o part" where the part changes,
+// "g face_N" (or "g no_face") where the face or part changes. Parts that
+// would not appear in order are named first, as empty objects.
+std::string format_obj_faces(const TriangleMesh& mesh) {
+    std::string out;
+    if (!parts_in_order(mesh))
+        for (int p = 0; p < static_cast<int>(mesh.part_names.size()); ++p)
+            out += obj_object(mesh, p);
+    int part = -2, face = -2;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const bool new_part = mesh.triangle_part[t] != part;
+        if (new_part) {
+            part = mesh.triangle_part[t];
+            out += obj_object(mesh, part);
+        }
+        if (new_part || mesh.triangle_face[t] != face) {
+            face = mesh.triangle_face[t];
+            out += face < 0 ? "g no_face\n" : "g face_" + std::to_string(face) + "\n";
+        }
+        out += obj_triangle(mesh, t);
+    }
+    return out;
+}
+
+} // namespace
 
 std::string format_obj(const TriangleMesh& mesh) {
     std::string out = "# seamless\n";
@@ -70,6 +174,7 @@ std::string format_obj(const TriangleMesh& mesh) {
         append_point(out, p);
         out += '\n';
     }
+    if (has_face_ids(mesh)) return out + format_obj_faces(mesh);
     const bool groups = !mesh.triangle_surface.empty();
     int current = -1;
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -81,9 +186,7 @@ std::string format_obj(const TriangleMesh& mesh) {
                        : "surface" + std::to_string(current);
             out += '\n';
         }
-        auto& f = mesh.triangles[t];
-        out += "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + " " +
-               std::to_string(f[2] + 1) + "\n";
+        out += obj_triangle(mesh, t);
     }
     return out;
 }

@@ -65,20 +65,26 @@ TriangleMesh read_off(const std::string& text, const std::string& file) {
 
 // The body that OFF and ASCII PLY share: one "x y z" line per vertex, then
 // one "3 a b c" line per triangle (0-based indices).
-void append_points_and_triangles(std::string& out, const TriangleMesh& mesh) {
+void append_points_and_triangles(std::string& out, const TriangleMesh& mesh, bool face_ids) {
     for (Vec3 p : mesh.positions) {
         append_point(out, p);
         out += '\n';
     }
-    for (auto& t : mesh.triangles)
-        out += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " +
-               std::to_string(t[2]) + "\n";
+    for (size_t k = 0; k < mesh.triangles.size(); ++k) {
+        const auto& t = mesh.triangles[k];
+        out += '3';
+        for (int v : t) (out += ' ') += std::to_string(v);
+        if (face_ids)
+            for (int id : {mesh.triangle_part[k], mesh.triangle_face[k]})
+                (out += ' ') += std::to_string(id);
+        out += '\n';
+    }
 }
 
 std::string format_off(const TriangleMesh& mesh) {
     std::string out = "OFF\n" + std::to_string(mesh.vertex_count()) + " " +
                       std::to_string(mesh.triangle_count()) + " 0\n";
-    append_points_and_triangles(out, mesh);
+    append_points_and_triangles(out, mesh, false);
     return out;
 }
 

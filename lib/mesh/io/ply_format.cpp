@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // PLY: ascii, binary_little_endian and binary_big_endian; the vertex element's
-// x, y, z and the face element's vertex_indices (or vertex_index) list; other
-// elements and properties are skipped.
+// x, y, z and the face element's vertex_indices (or vertex_index) list, and
+// its part_id and face_id (face ids, with the parts' names in "comment
+// part_name K NAME" lines); other elements and properties are skipped.
 #include <seamless/mesh/io/mesh_text.h>
 
 #include <cmath>
@@ -94,7 +95,16 @@ double ply_binary_value(const unsigned char* p, PlyType t, bool big_endian) {
 struct PlyHeader {
     std::string format;
     std::vector<PlyElement> elements;
+    std::vector<std::string> part_names; // "comment part_name K NAME", K in order
 };
+
+// A "comment part_name K NAME" line (the rest of a comment line in `in`).
+void read_part_name(Tokens& in, PlyHeader& h) {
+    if (in.next_in_line() != "part_name") return;
+    const auto k = in.next_in_line();
+    if (k != std::to_string(h.part_names.size())) return;
+    h.part_names.push_back(in.rest_of_line());
+}
 
 // The header, from "ply" to "end_header"; `in` left at the first body line.
 PlyHeader read_header(Tokens& in, const std::string& file, size_t size) {
@@ -127,7 +137,9 @@ PlyHeader read_header(Tokens& in, const std::string& file, size_t size) {
         } else if (key == "end_header") {
             in.next_line();
             return h;
-        } else if (key == "comment" || key == "obj_info" || key.empty()) {
+        } else if (key == "comment") {
+            read_part_name(in, h);
+        } else if (key == "obj_info" || key.empty()) {
             continue;
         } else {
             in.fail("unknown header line '" + std::string(key) + "'");
@@ -138,7 +150,7 @@ PlyHeader read_header(Tokens& in, const std::string& file, size_t size) {
 // Where an element keeps what a mesh needs: the x, y, z properties and the
 // vertex_indices (or vertex_index) list, or -1.
 struct PlyLayout {
-    int x = -1, y = -1, z = -1, faces = -1;
+    int x = -1, y = -1, z = -1, faces = -1, part = -1, face = -1;
 };
 
 PlyLayout layout_of(const PlyElement& e) {
@@ -150,6 +162,8 @@ PlyLayout layout_of(const PlyElement& e) {
         if (!p.list && p.name == "z") l.z = static_cast<int>(k);
         if (p.list && (p.name == "vertex_indices" || p.name == "vertex_index"))
             l.faces = static_cast<int>(k);
+        if (!p.list && p.name == "part_id") l.part = static_cast<int>(k);
+        if (!p.list && p.name == "face_id") l.face = static_cast<int>(k);
     }
     return l;
 }
@@ -165,7 +179,9 @@ class PlyBody {
             throw InputError(file, "format", "unknown PLY format '" + format + "'");
     }
 
-    TriangleMesh read(const std::vector<PlyElement>& elements) {
+    TriangleMesh read(const std::vector<PlyElement>& elements,
+                      std::vector<std::string> part_names) {
+        mesh_.part_names = std::move(part_names);
         check_counts(elements);
         for (const PlyElement& e : elements) read_element(e);
         if (!have_vertices_) throw InputError(file_, "header", "no vertex element");
@@ -212,8 +228,11 @@ class PlyBody {
         }
         if (is_face && l.faces < 0)
             throw InputError(file_, "element face", "needs a vertex_indices list");
+        const bool ids = is_face && (l.part >= 0 || l.face >= 0);
         for (long long i = 0; i < (e.properties.empty() ? 0 : e.count); ++i) {
             Vec3 p;
+            int ids_of[2] = {-1, -1}; // part, face
+            const size_t before = mesh_.triangles.size();
             for (size_t k = 0; k < e.properties.size(); ++k) {
                 const auto& prop = e.properties[k];
                 const int kk = static_cast<int>(k);
@@ -226,10 +245,21 @@ class PlyBody {
                         if (kk == l.y) p.y = v;
                         if (kk == l.z) p.z = v;
                     }
+                    if (ids && (kk == l.part || kk == l.face))
+                        ids_of[kk == l.face] = face_id(v, e, i, prop);
                 }
             }
             if (is_vertex) mesh_.positions.push_back(p);
+            if (ids) add_polygon_ids(mesh_, before, ids_of[0], ids_of[1]);
         }
+    }
+
+    // A part_id or face_id: an integer from -1 (none) to 2^31 - 1.
+    int face_id(double v, const PlyElement& e, long long i, const PlyProperty& prop) const {
+        if (!(v >= -1 && v <= 2147483647.0) || v != std::floor(v))
+            throw InputError(file_, e.name + " " + std::to_string(i),
+                             prop.name + " " + number_text(v) + " is not an integer in -1..2^31-1");
+        return static_cast<int>(v);
     }
 
     // List `prop` of item i of element e; `keep`: it is a face's vertex list.
@@ -272,16 +302,20 @@ class PlyBody {
 TriangleMesh read_ply(const std::string& text, const std::string& file) {
     Tokens in(text, file);
     const PlyHeader header = read_header(in, file, text.size());
-    return PlyBody(in, text, file, header.format).read(header.elements);
+    return PlyBody(in, text, file, header.format).read(header.elements, header.part_names);
 }
 
 std::string format_ply(const TriangleMesh& mesh) {
-    std::string out = "ply\nformat ascii 1.0\ncomment seamless\nelement vertex " +
-                      std::to_string(mesh.vertex_count()) +
-                      "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
-                      std::to_string(mesh.triangle_count()) +
-                      "\nproperty list uchar int vertex_indices\nend_header\n";
-    append_points_and_triangles(out, mesh);
+    const bool ids = has_face_ids(mesh);
+    std::string out = "ply\nformat ascii 1.0\ncomment seamless\n";
+    for (size_t p = 0; ids && p < mesh.part_names.size(); ++p)
+        out += "comment part_name " + std::to_string(p) + " " + part_name(mesh, int(p)) + "\n";
+    out += "element vertex " + std::to_string(mesh.vertex_count()) +
+           "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+           std::to_string(mesh.triangle_count()) + "\nproperty list uchar int vertex_indices\n";
+    if (ids) out += "property int part_id\nproperty int face_id\n";
+    out += "end_header\n";
+    append_points_and_triangles(out, mesh, ids);
     return out;
 }
 

@@ -2,32 +2,57 @@
 // An assembly written as glTF (write_mesh_assembly): the tree as nodes named
 // as the assembly's, one mesh per part shared by its instances, one
 // material per colour, read back with tinygltf.
-#include "model/brep_test_models.h"
+#include "mesh/io/tessellated.h"
 #include "test_util.h"
 
 #include <seamless/base/error.h>
 #include <seamless/mesh/io/mesh_io.h>
-#include <seamless/tessellate/tessellation.h>
+#include <seamless/mesh/io/placed_mesh.h>
 
 #include <catch2/catch.hpp>
 
 #include <tiny_gltf.h>
 
 #include <cmath>
+#include <set>
 
 using namespace seamless;
 
 namespace {
 
-tinygltf::Model written(const Model& m, const std::filesystem::path& path) {
-    TessellationOptions opt;
-    opt.tolerance = 0.05;
-    write_mesh_assembly(path, tessellate(m, opt).mesh, m);
+using test::tessellated;
+
+tinygltf::Model written(const Model& m, const std::filesystem::path& path,
+                        const GltfWriteOptions& options = {}) {
+    write_mesh_assembly(path, tessellated(m), m, options);
     tinygltf::Model g;
     std::string err, warn;
     tinygltf::TinyGLTF io;
     REQUIRE(io.LoadBinaryFromFile(&g, &err, &warn, path.string()));
     return g;
+}
+
+// A primitive's triangles (its indices' count / 3).
+int triangles(const tinygltf::Model& g, const tinygltf::Primitive& p) {
+    return static_cast<int>(g.accessors[p.indices].count / 3);
+}
+
+// The primitive's face extras, [face, first, count] runs: they cover its
+// triangles in order; returns the faces.
+std::vector<int> face_runs(const tinygltf::Model& g, const tinygltf::Primitive& p) {
+    REQUIRE(p.extras.Has("faces"));
+    const tinygltf::Value& runs = p.extras.Get("faces");
+    std::vector<int> faces;
+    int next = 0;
+    for (size_t k = 0; k < runs.ArrayLen(); ++k) {
+        const tinygltf::Value& r = runs.Get(int(k));
+        REQUIRE(r.ArrayLen() == 3);
+        faces.push_back(r.Get(0).GetNumberAsInt());
+        CHECK(r.Get(1).GetNumberAsInt() == next);
+        next += r.Get(2).GetNumberAsInt();
+    }
+    CHECK(next == triangles(g, p));
+    return faces;
 }
 
 } // namespace
@@ -67,6 +92,48 @@ TEST_CASE("An assembly as glTF: nodes as the tree, one mesh per part, materials 
     CHECK(green.alphaMode == "BLEND");
     for (const auto& mesh : g.meshes)
         for (const auto& prim : mesh.primitives) CHECK(prim.attributes.count("NORMAL") == 1);
+    // Face extras: the plate's primitive is on face 0, the tube's on face 1.
+    CHECK(face_runs(g, g.meshes[0].primitives[0]) == std::vector<int>{0});
+    CHECK(face_runs(g, g.meshes[1].primitives[0]) == std::vector<int>{1});
+}
+
+TEST_CASE("An assembly merged: one node and mesh, a primitive per colour, every instance placed",
+          "[mesh][io][assembly]") {
+    const Model m = test::small_assembly();
+    GltfWriteOptions merge;
+    merge.merge = true;
+    const tinygltf::Model g = written(m, test::scratch_dir("gltf_merged") / "a.glb", merge);
+    REQUIRE(g.nodes.size() == 1);
+    REQUIRE(g.meshes.size() == 1);
+    CHECK(g.nodes[0].mesh == 0);
+    CHECK(g.nodes[0].matrix.empty());
+    // Plate red, tube green: two colours, two primitives.
+    std::set<int> materials;
+    int total = 0;
+    for (const auto& p : g.meshes[0].primitives) {
+        materials.insert(p.material);
+        total += triangles(g, p);
+        for (int f : face_runs(g, p)) CHECK(f >= 0);
+    }
+    CHECK(g.meshes[0].primitives.size() == 2);
+    CHECK(materials == std::set<int>{0, 1});
+    CHECK(total == placed_mesh(tessellated(m), m).triangle_count());
+}
+
+TEST_CASE("glTF in metres: positions and translations scaled, nodes as before",
+          "[mesh][io][assembly]") {
+    const Model m = test::small_assembly();
+    GltfWriteOptions metres;
+    metres.scale = 0.001;
+    const tinygltf::Model kept = written(m, test::scratch_dir("gltf_kept") / "a.glb");
+    const tinygltf::Model g = written(m, test::scratch_dir("gltf_metres") / "a.glb", metres);
+    REQUIRE(g.nodes.size() == kept.nodes.size());
+    CHECK(g.nodes[2].matrix[12] == 20 * 0.001);
+    CHECK(g.nodes[2].matrix[0] == kept.nodes[2].matrix[0]);
+    for (size_t a = 0; a < g.accessors.size(); ++a)
+        for (size_t k = 0; k < g.accessors[a].maxValues.size(); ++k) // POSITION's
+            CHECK(g.accessors[a].maxValues[k] ==
+                  Approx(0.001 * kept.accessors[a].maxValues[k]).margin(1e-9));
 }
 
 TEST_CASE("An assembly's tree is refused for formats without one", "[mesh][io][assembly]") {
@@ -95,6 +162,20 @@ TEST_CASE("The corpus assemblies as glTF: every instance a node sharing its part
             instances += g.nodes[k].mesh >= 0;
         }
         CHECK(instances == instance_count(m.assembly));
+        // Merged: one node, a primitive per colour its placed faces use, the
+        // triangles of every instance.
+        GltfWriteOptions merge;
+        merge.merge = true;
+        const tinygltf::Model one = written(m, test::scratch_dir("gltf_corpus") / "m.glb", merge);
+        CHECK(one.nodes.size() == 1);
+        REQUIRE(one.meshes.size() == 1);
+        const std::vector<int> colours = face_colours(m);
+        std::set<int> used;
+        for (int f : placed_face_sources(m)) used.insert(colours[f]);
+        CHECK(one.meshes[0].primitives.size() == used.size());
+        int total = 0;
+        for (const auto& p : one.meshes[0].primitives) total += triangles(one, p);
+        CHECK(total == placed_mesh(tessellated(m), m).triangle_count());
     }
 }
 

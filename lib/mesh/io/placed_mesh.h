@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// The mesh of a B-rep model as placed, with face ids (TriangleMesh's
+// triangle_face, triangle_part): what the formats without an assembly tree
+// (OFF, OBJ, PLY, STL, glTF --flatten and --merge) are written from. A model
+// that keeps its assembly is tessellated once per part; its instances are
+// copies of the part's triangles, so a part used N times is meshed once and
+// every copy is the same mesh placed.
+#pragma once
+
+#include <seamless/base/triangle_mesh.h>
+#include <seamless/model/model.h>
+
+#include <vector>
+
+namespace seamless {
+
+// The face on each surface of `model`: -1 for a surface no face or several
+// faces lie on (a STEP/IGES B-rep has one surface per face).
+std::vector<int> face_of_surface(const Model& model);
+
+// Per face of flatten_assembly(model), in its order (node after node, each
+// part's faces in order), the face of `model` it copies; the identity for a
+// model without a tree.
+std::vector<int> placed_face_sources(const Model& model);
+
+// `mesh` (the tessellation of `model`) placed, with face ids. A model with a
+// tree: every part's triangles copied once per instance, in
+// flatten_assembly's order, positions mapped to world coordinates, normals
+// by the inverse transpose, a mirroring placement's triangles turned;
+// triangle_face indexes the faces of flatten_assembly(model),
+// triangle_surface is the same index and surface_names the copies' names
+// ("#55", "#55.2"), then the surfaces no face lies on, copied once (face and
+// part -1); triangle_part indexes part_names (the parts' names, a repeated
+// one made unique as "name.2"). A B-rep model without a tree: the mesh with
+// triangle_face from its surfaces and one part named after the file. A model
+// without faces: the mesh as it is.
+TriangleMesh placed_mesh(const TriangleMesh& mesh, const Model& model);
+
+} // namespace seamless
