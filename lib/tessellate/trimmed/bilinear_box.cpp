@@ -84,12 +84,17 @@ double TriangleBound::bilinear_box(const std::array<double, 4>& box,
         (std::max(distance(M[1], M[0]), distance(M[2], M[3])) * du / (u1 - u0) +
          std::max(distance(M[3], M[0]), distance(M[2], M[1])) * dv / (v1 - v0)) *
         (1 + 1e-12);
-    std::vector<double> us{std::max(u0, u_.lo())}, vs{std::max(v0, v_.lo())};
+    // The box clamped to the domain, cut at the knots inside it; a box a
+    // rounding past the domain's end clamps to no width: no cell bounds it.
+    const double a0 = std::max(u0, u_.lo()), a1 = std::min(u1, u_.hi()), b0 = std::max(v0, v_.lo()),
+                 b1 = std::min(v1, v_.hi());
+    if (!(a0 < a1 && b0 < b1)) return kInf;
+    std::vector<double> us{a0}, vs{b0};
     for (double k : u_.at)
-        if (k > u0 && k < u1) us.push_back(k);
+        if (k > a0 && k < a1) us.push_back(k);
     for (double k : v_.at)
-        if (k > v0 && k < v1) vs.push_back(k);
-    us.push_back(std::min(u1, u_.hi())), vs.push_back(std::min(v1, v_.hi()));
+        if (k > b0 && k < b1) vs.push_back(k);
+    us.push_back(a1), vs.push_back(b1);
     const int nv = static_cast<int>(v_.at.size()) - 1;
     std::vector<Interval> c;
     double worst = 0;

@@ -197,3 +197,23 @@ TEST_CASE("the triangle bound holds past an open side, against the tangent plane
             check_face_triangles(s, {-out, -out}, {2 * size, 2 * size}, size, rng);
         }
 }
+
+TEST_CASE("the bilinear box bound takes boxes a rounding past the domain's end") {
+    // abc_0_13's pole fans: a box starting a rounding past u_max clamps to
+    // no width, which the bound refuses (infinite) instead of failing.
+    const BSplineSurface s = cylinder();
+    const TriangleBound bound(s);
+    const double hi = s.u_max(), v0 = s.v_min(), v1 = s.v_max();
+    const auto corners = [&](double u0, double u1) {
+        const double a = std::min(u0, hi), b = std::min(u1, hi);
+        return std::array<Vec3, 4>{evaluate(s, a, v0).point, evaluate(s, b, v0).point,
+                                   evaluate(s, b, v1).point, evaluate(s, a, v1).point};
+    };
+    const double past = std::nextafter(hi, 2 * hi + 1);
+    const double beyond = std::nextafter(past, 2 * hi + 1);
+    CHECK(std::isinf(bound.bilinear_box({past, beyond, v0, v1}, corners(past, beyond))));
+    const double inside = hi - 0.25 * (hi - s.u_min());
+    const double b = bound.bilinear_box({inside, past, v0, v1}, corners(inside, past));
+    CHECK(b >= 0);
+    CHECK(std::isfinite(b));
+}
