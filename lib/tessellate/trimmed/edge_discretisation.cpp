@@ -196,9 +196,11 @@ void halve_segments(const BRep& brep, int edge, EdgePolyline& line,
         const double m = 0.5 * (line.t[k - 1] + line.t[k]);
         const Vec3 pm = s.point(m);
         // A midpoint on a piece where the curve stands still would make a
-        // zero-length segment.
-        if ((segments.empty() || listed) && m > line.t[k - 1] && m < line.t[k] &&
-            !same_point(pm, line.points[k - 1]) && !same_point(pm, line.points[k])) {
+        // zero-length segment (a degenerate edge is all one point: its
+        // points differ in (u,v)).
+        const bool still = !e.degenerate() &&
+                           (same_point(pm, line.points[k - 1]) || same_point(pm, line.points[k]));
+        if ((segments.empty() || listed) && m > line.t[k - 1] && m < line.t[k] && !still) {
             t.push_back(m);
             points.push_back(pm);
         }
