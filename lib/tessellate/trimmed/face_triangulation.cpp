@@ -108,17 +108,17 @@ struct Refiner {
     const FaceCriteria& c;
     FaceDomain& d;
     Vec3 inward;
-    std::vector<Vec3> normal;                   // per point, computed once
-    std::vector<std::array<int, 2>> encroached; // boundary sides, point indices
-    int round = 0;                              // of refinement, for persistence
-    // Per side found encroached: the last round it was, and in how many.
-    std::map<std::array<int, 2>, std::array<int, 2>> rounds_encroached;
+    std::vector<Vec3> normal; // per point, computed once
+    // Per boundary side found encroached (point indices, the smaller
+    // first): the last refinement round it was, and in how many.
+    std::map<std::array<int, 2>, std::array<int, 2>> encroached;
+    int round = 0; // of refinement
 
-    // Sides found encroached in kPersistent rounds or more.
-    std::vector<std::array<int, 2>> persistent() const {
+    // Sides found encroached in `rounds` rounds or more.
+    std::vector<std::array<int, 2>> encroached_sides(int rounds) const {
         std::vector<std::array<int, 2>> out;
-        for (const auto& [side, seen] : rounds_encroached)
-            if (seen[1] >= kPersistent) out.push_back(side);
+        for (const auto& [side, seen] : encroached)
+            if (seen[1] >= rounds) out.push_back(side);
         return out;
     }
 
@@ -228,8 +228,7 @@ struct Refiner {
         for (int k = 0; k < 3; ++k) {
             const int a = t.corners[(k + 1) % 3], b = t.corners[(k + 2) % 3];
             if (!t.boundary[k] || (d.pole[a] != Vec3{} && d.pole[b] != Vec3{})) continue;
-            encroached.push_back({a, b});
-            auto& seen = rounds_encroached[{std::min(a, b), std::max(a, b)}];
+            auto& seen = encroached[{std::min(a, b), std::max(a, b)}];
             if (seen[1] == 0 || seen[0] != round) seen = {round, seen[1] + 1};
             any = true;
         }
@@ -305,7 +304,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         out.failed = true;
         return out;
     }
-    Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}, {}, 0, {}};
+    Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}, {}, 0};
     std::vector<DomainTriangle> tris;
     std::vector<Verdict> verdicts;
     // A triangle the insertions left alone keeps its verdict.
@@ -327,7 +326,8 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (verdicts[i].split) failing.push_back(static_cast<int>(i));
         }
         if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
-        if (criteria.stop_when_encroached && tris.size() > kStopSize && !r.persistent().empty()) {
+        if (criteria.stop_when_encroached && tris.size() > kStopSize &&
+            !r.encroached_sides(kPersistent).empty()) {
             stopped = true;
             break;
         }
@@ -341,10 +341,10 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         if (!inserted) break;
     }
     if (stopped)
-        out.encroached = segments_of(d, r.persistent());
+        out.encroached = segments_of(d, r.encroached_sides(kPersistent));
     else if (std::any_of(verdicts.begin(), verdicts.end(),
                          [](const Verdict& v) { return v.split; }))
-        out.encroached = segments_of(d, r.encroached);
+        out.encroached = segments_of(d, r.encroached_sides(1));
     for (size_t i = 0; i < tris.size(); ++i) {
         const Verdict& v = verdicts[i];
         if (v.drop) continue;
