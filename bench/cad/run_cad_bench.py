@@ -130,13 +130,16 @@ class Bench:
                     js = json.load(f)
             except (OSError, ValueError):
                 return {"ok": False, "error": "no --stats file written", "wall": wall}
-            times.append((js.get("seconds", wall), wall))
+            # Meshing only: the certified bound that --stats computes is
+            # reported apart (OpenCASCADE computes none).
+            bound = js.get("brep", {}).get("bound_seconds", 0.0)
+            times.append((js.get("seconds", wall) - bound, wall, bound))
             if wall > 5:  # slow: once is enough
                 break
         times.sort()
         js["ok"] = True
-        js["mesh_seconds"], js["wall"] = times[len(times) // 2]
-        # Reading, writing and start-up: what the run took beyond meshing.
+        js["mesh_seconds"], js["wall"], js["bound_seconds"] = times[len(times) // 2]
+        # Reading, writing, start-up and the bound: what the run took beyond meshing.
         js["other_seconds"] = max(0.0, js["wall"] - js["mesh_seconds"])
         return js
 

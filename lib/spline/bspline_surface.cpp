@@ -48,12 +48,25 @@ void basis_functions(int p, int k, const std::vector<double>& U, double t, doubl
     }
 }
 
-SurfacePoint evaluate(const BSplineSurface& s, double u, double v) {
-    const int p = s.degree_u, q = s.degree_v;
+namespace {
+
+// (u, v) clamped to the domain and the knot spans holding them.
+struct Spans {
+    double u, v;
+    int ku, kv;
+};
+Spans spans(const BSplineSurface& s, double u, double v) {
     u = std::clamp(u, s.u_min(), s.u_max());
     v = std::clamp(v, s.v_min(), s.v_max());
-    const int ku = find_span(p, s.size_u, s.knots_u, u);
-    const int kv = find_span(q, s.size_v, s.knots_v, v);
+    return {u, v, find_span(s.degree_u, s.size_u, s.knots_u, u),
+            find_span(s.degree_v, s.size_v, s.knots_v, v)};
+}
+
+} // namespace
+
+SurfacePoint evaluate(const BSplineSurface& s, double u_in, double v_in) {
+    const int p = s.degree_u, q = s.degree_v;
+    const auto [u, v, ku, kv] = spans(s, u_in, v_in);
     double Nu[kMaxDegree + 1], dNu[kMaxDegree + 1], Nv[kMaxDegree + 1], dNv[kMaxDegree + 1];
     basis_functions(p, ku, s.knots_u, u, Nu, dNu);
     basis_functions(q, kv, s.knots_v, v, Nv, dNv);
@@ -75,6 +88,21 @@ SurfacePoint evaluate(const BSplineSurface& s, double u, double v) {
     r.du = (Xu.xyz() - Xu.w * r.point) / X.w;
     r.dv = (Xv.xyz() - Xv.w * r.point) / X.w;
     return r;
+}
+
+Vec3 evaluate_point(const BSplineSurface& s, double u_in, double v_in) {
+    const int p = s.degree_u, q = s.degree_v;
+    const auto [u, v, ku, kv] = spans(s, u_in, v_in);
+    double Nu[kMaxDegree + 1], Nv[kMaxDegree + 1];
+    basis_functions(p, ku, s.knots_u, u, Nu, nullptr);
+    basis_functions(q, kv, s.knots_v, v, Nv, nullptr);
+    HPoint X{0, 0, 0, 0};
+    for (int a = 0; a <= p; ++a) {
+        HPoint row{0, 0, 0, 0};
+        for (int b = 0; b <= q; ++b) row = row + Nv[b] * s.hpoint(ku - p + a, kv - q + b);
+        X = X + Nu[a] * row;
+    }
+    return X.xyz() / X.w;
 }
 
 Box3 control_box(const BSplineSurface& s) {

@@ -51,6 +51,8 @@ void basis_functions(int degree, int span, const std::vector<double>& knots, dou
 
 // Evaluates the surface at (u, v) in its domain (values outside are clamped to it).
 SurfacePoint evaluate(const BSplineSurface& s, double u, double v);
+// The point alone (evaluate(s, u, v).point, to the bit), without derivatives.
+Vec3 evaluate_point(const BSplineSurface& s, double u, double v);
 
 // Bounding box of the control points: by the convex hull property it holds the surface.
 Box3 control_box(const BSplineSurface& s);

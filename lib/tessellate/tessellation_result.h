@@ -37,9 +37,9 @@ struct BRepStats {
     // Work counters: faces triangulated (a face redone after a re-split
     // counts again) and triangles judged against D and the angle.
     long long face_runs = 0, judged_triangles = 0;
-    int faces_left_out = 0;   // by TessellationOptions::allow_holes
-    int above_tolerance = 0;  // triangles the refinement limits stopped above D or the angle
-    double angle = 0;         // radians, used (0.5 by default)
+    int faces_left_out = 0;  // by TessellationOptions::allow_holes
+    int above_tolerance = 0; // triangles the refinement limits stopped above D or the angle
+    double angle = 0;        // radians, used (0.5 by default)
     // Largest sampled distance between the faces and the mesh, model units:
     // edge chords against the 3D curves, and triangles against the surface at
     // barycentric samples mapped through (u,v). Measured, not certified.
@@ -52,6 +52,7 @@ struct BRepStats {
     // chord and its curve; TessellationStats::max_error_bound is the larger.
     // The slivers between pcurves and their (u,v) chords are not covered.
     double bound_triangles = 0, bound_chords = 0;
+    double bound_seconds = 0;          // of TessellationStats::seconds, spent on the bounds
     std::vector<std::string> warnings; // one line each: faces left out, tolerances above D
 };
 

@@ -59,6 +59,7 @@ std::string tessellation_stats_json(const TessellationStats& s, const StatsSourc
                       {"certified", b.certified},
                       {"bound_triangles", b.bound_triangles},
                       {"bound_chords", b.bound_chords},
+                      {"bound_seconds", b.bound_seconds},
                       {"max_edge_tolerance", b.max_edge_tolerance},
                       {"edges_above_tolerance", b.edges_above_tolerance},
                       {"warnings", b.warnings}};

@@ -57,6 +57,23 @@ TEST_CASE("Partial derivatives agree with central differences", "[bspline]") {
     }
 }
 
+TEST_CASE("The point alone is the point of the full evaluation, to the bit", "[bspline]") {
+    std::mt19937 rng(7);
+    for (bool rational : {false, true})
+        for (int p : {1, 2, 3, 5}) {
+            const BSplineSurface s = test::random_surface(rng, {p, p + 1, true, rational});
+            std::uniform_real_distribution<double> A(-0.1, 1.1); // clamped outside
+            for (int n = 0; n < 200; ++n) {
+                const double u = s.u_min() + A(rng) * (s.u_max() - s.u_min());
+                const double v = s.v_min() + A(rng) * (s.v_max() - s.v_min());
+                const Vec3 full = evaluate(s, u, v).point, alone = evaluate_point(s, u, v);
+                CHECK(full.x == alone.x);
+                CHECK(full.y == alone.y);
+                CHECK(full.z == alone.z);
+            }
+        }
+}
+
 TEST_CASE("Rational models are exact: quarter cylinder and torus", "[bspline]") {
     const Model cyl = load_model(test::model_path("quarter_cylinder.json"));
     const Model tor = load_model(test::model_path("torus_exact.json"));

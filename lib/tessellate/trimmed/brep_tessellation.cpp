@@ -174,12 +174,19 @@ Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
     r.meshes.resize(brep.faces.size());
     std::vector<int> pending(brep.faces.size());
     for (size_t f = 0; f < pending.size(); ++f) pending[f] = static_cast<int>(f);
+    // Per face: it met the limits in its last run, its mesh seeds a redo.
+    std::vector<char> met(brep.faces.size(), 0);
     for (;; ++r.rounds) {
         FaceCriteria c = criteria;
         c.stop_when_encroached = r.rounds < kResplitRounds;
         for_each_item(static_cast<int>(pending.size()), threads, [&](int i) {
-            r.meshes[pending[i]] = triangulate_face(model, lines, pending[i], c);
+            FaceMesh& m = r.meshes[pending[i]];
+            m = met[pending[i]] ? triangulate_face(model, lines, pending[i], c, &m)
+                                : triangulate_face(model, lines, pending[i], c);
         });
+        for (int f : pending)
+            met[f] = !r.meshes[f].failed && r.meshes[f].encroached.empty() &&
+                     r.meshes[f].above_tolerance == 0;
         r.face_runs += static_cast<long long>(pending.size());
         for (int f : pending) r.judged += r.meshes[f].judged;
         std::vector<int> redo;
@@ -278,9 +285,11 @@ Tessellation tessellate_at_scale(const Model& model, const TessellationOptions& 
         st.above_tolerance += fm.above_tolerance;
     }
     if (options.certify) {
+        const auto bound_start = std::chrono::steady_clock::now();
         const BRepBound bound = certify_brep(model, lines, t.mesh, options.threads);
         st.bound_triangles = bound.triangles;
         st.bound_chords = bound.chords;
+        st.bound_seconds = seconds_since(bound_start);
     }
     TessellationStats& s = t.stats;
     s.surfaces = static_cast<int>(model.surfaces.size());

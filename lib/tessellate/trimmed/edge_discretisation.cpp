@@ -73,8 +73,8 @@ struct Splitter {
             for (double s : {0.25, 0.5, 0.75}) {
                 const Vec3 q = lerp(ua, ub, s);
                 // The tolerance is how far the surface is allowed to be.
-                d = std::max(d, point_segment_distance(use.surface.at(q).point, pa, pb) -
-                                    use.tolerance);
+                d = std::max(d,
+                             point_segment_distance(use.surface.point(q), pa, pb) - use.tolerance);
             }
             // The midpoint too: a closed edge's ends have one normal. Across
             // a crease the normal jumps however short the segment.

@@ -22,6 +22,7 @@ class FaceSurface {
   public:
     explicit FaceSurface(const BSplineSurface& s);
     SurfacePoint at(Vec3 uv) const;
+    Vec3 point(Vec3 uv) const; // at(uv).point, to the bit: cheaper inside the domain
     const BSplineSurface& surface() const { return *s_; }
     bool closed_u() const { return closed_u_; } // periodic in u: wrapped
     bool closed_v() const { return closed_v_; }

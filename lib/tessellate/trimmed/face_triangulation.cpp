@@ -2,6 +2,7 @@
 #include <seamless/base/check.h>
 #include <seamless/tessellate/tessellation_result.h>
 #include <seamless/tessellate/trimmed/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/face_seeds.h>
 #include <seamless/tessellate/trimmed/face_triangulation.h>
 #include <seamless/tessellate/trimmed/triangle_distance.h>
 
@@ -55,6 +56,8 @@ constexpr double kNudge = 1e-6;
 // within this fraction of the deviation tiny.
 constexpr double kTolerances = 8;
 constexpr double kTiny = 1.0 / 8;
+// A flat normal this far from the surface's is a fold.
+constexpr double kFold = 0.5 * M_PI;
 
 // Samples can miss a triangle's largest deviation, which lies between them:
 // the refinement aims this much below D.
@@ -128,7 +131,9 @@ struct Refiner {
         return normal[i];
     }
 
-    Verdict judge(const DomainTriangle& t) {
+    // With `full` false a triangle stops being sampled once it is found
+    // above the deviation: its deviation and badness are then lower bounds.
+    Verdict judge(const DomainTriangle& t, bool full) {
         Verdict v;
         const auto& k = t.corners;
         std::array<Vec3, 3> uv, p;
@@ -170,7 +175,9 @@ struct Refiner {
                            : crease && s.on_crease(uv[i])
                                ? unit_normal(s, uv[i] + kNudge * (centre - uv[i]), centre)
                                : point_normal(k[i]);
+        const TriangleFrame frame(p[0], p[1], p[2]);
         for (const Sample& smp : kSamples) {
+            if (!full && v.deviation > target) break;
             // Boundary segments were measured with their edge.
             if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
             const Vec3 q = smp.l[0] * uv[0] + smp.l[1] * uv[1] + smp.l[2] * uv[2];
@@ -180,7 +187,7 @@ struct Refiner {
             // points (the meridians' chords), which are measured as well;
             // across a crease the flat triangle cuts the fold, which only the
             // surface's points see.
-            double dev = point_triangle_distance(s.at(q).point, p[0], p[1], p[2]);
+            double dev = frame.distance(s.point(q));
             const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
             if (pole || crease)
                 dev = std::max(dev, distance_to_surface(s, flat, q, 0));
@@ -209,11 +216,17 @@ struct Refiner {
         // at an apex or a pole the normals turn however small it is.
         const bool tiny = longest <= kTiny * kTiny * c.deviation * c.deviation;
         const bool small = tiny || longest <= kTolerances * kTolerances * d.tolerance * d.tolerance;
+        // A triangle thinner than that (its height) across a curved direction
+        // (a band narrower than D) tilts its plane however short it is made:
+        // its flat normal counts only when folded over.
+        const bool thin = norm(n) <= kTiny * c.deviation * std::sqrt(longest);
         double turn = 0;
         if (!ear && !crease && !tiny)
-            for (int i = 0; i < 3; ++i)
+            for (int i = 0; i < 3; ++i) {
+                const double flat_turn = small ? 0.0 : angle_between(v.normals[i], n);
                 turn = std::max({turn, angle_between(v.normals[i], v.normals[(i + 1) % 3]),
-                                 small ? 0.0 : angle_between(v.normals[i], n)});
+                                 thin && flat_turn <= kFold ? 0.0 : flat_turn});
+            }
         const bool flat = !ear && !(norm(n) > 1e-12 * longest);
         v.badness = flat ? INFINITY : std::max(v.deviation / target, turn / c.angle);
         v.split = v.badness > 1;
@@ -292,7 +305,7 @@ bool collapsed(const BRep& brep, const BRepFace& f) {
 } // namespace
 
 FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& lines, int face,
-                          const FaceCriteria& criteria) {
+                          const FaceCriteria& criteria, const FaceMesh* seeds) {
     const BRepFace& f = model.brep.faces[face];
     FaceMesh out;
     if (collapsed(model.brep, f)) return out;
@@ -304,6 +317,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         out.failed = true;
         return out;
     }
+    if (seeds) insert_seeds(s, seeds->domain, d, cdt);
     Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}, {}, 0};
     std::vector<DomainTriangle> tris;
     std::vector<Verdict> verdicts;
@@ -322,7 +336,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             const TriangleKey key = key_of(tris[i].corners);
             const auto hit = known.find(key);
             if (hit == known.end()) ++out.judged;
-            verdicts[i] = hit != known.end() ? hit->second : known[key] = r.judge(tris[i]);
+            verdicts[i] = hit != known.end() ? hit->second : known[key] = r.judge(tris[i], false);
             if (verdicts[i].split) failing.push_back(static_cast<int>(i));
         }
         if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
@@ -346,6 +360,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
                          [](const Verdict& v) { return v.split; }))
         out.encroached = segments_of(d, r.encroached_sides(1));
     for (size_t i = 0; i < tris.size(); ++i) {
+        if (verdicts[i].split && !verdicts[i].drop) verdicts[i] = r.judge(tris[i], true);
         const Verdict& v = verdicts[i];
         if (v.drop) continue;
         if (v.split) ++out.above_tolerance;

@@ -44,7 +44,10 @@ struct FaceMesh {
 };
 
 // Throws TriangleBudgetError (file `model.source`) past max_triangles.
+// `seeds`, when given, is an earlier mesh of the face whose own triangles
+// all met the limits, redone after a neighbour's round re-split an edge they
+// share (face_seeds.h).
 FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& lines, int face,
-                          const FaceCriteria& criteria);
+                          const FaceCriteria& criteria, const FaceMesh* seeds = nullptr);
 
 } // namespace seamless

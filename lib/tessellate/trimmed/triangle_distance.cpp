@@ -7,17 +7,24 @@
 
 namespace seamless {
 
+TriangleFrame::TriangleFrame(Vec3 a, Vec3 b, Vec3 c)
+    : a_(a), b_(b), c_(c), n_(cross(b - a, c - a)), nn_(dot(n_, n_)) {}
+
+double TriangleFrame::distance(Vec3 p) const {
+    if (nn_ > 0) {
+        // Inside the prism over the triangle: the distance to its plane.
+        const double h = dot(p - a_, n_);
+        const Vec3 q = p - (h / nn_) * n_;
+        if (dot(cross(b_ - a_, q - a_), n_) >= 0 && dot(cross(c_ - b_, q - b_), n_) >= 0 &&
+            dot(cross(a_ - c_, q - c_), n_) >= 0)
+            return std::abs(h) / std::sqrt(nn_);
+    }
+    return std::min({point_segment_distance(p, a_, b_), point_segment_distance(p, b_, c_),
+                     point_segment_distance(p, c_, a_)});
+}
+
 double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-    const Vec3 n = cross(b - a, c - a);
-    const double nn = dot(n, n);
-    const double edges = std::min({point_segment_distance(p, a, b), point_segment_distance(p, b, c),
-                                   point_segment_distance(p, c, a)});
-    if (!(nn > 0)) return edges;
-    // Inside the prism over the triangle: the distance to its plane.
-    const Vec3 q = p - (dot(p - a, n) / nn) * n;
-    const bool inside = dot(cross(b - a, q - a), n) >= 0 && dot(cross(c - b, q - b), n) >= 0 &&
-                        dot(cross(a - c, q - c), n) >= 0;
-    return inside ? std::abs(dot(p - a, n)) / std::sqrt(nn) : edges;
+    return TriangleFrame(a, b, c).distance(p);
 }
 
 } // namespace seamless

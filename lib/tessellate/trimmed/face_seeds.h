@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// Seeds of a redone face: a face whose own triangles all met the limits is
+// redone only because a neighbour's round re-split an edge they share. Its
+// earlier interior points are inserted again before refinement, but those
+// within a new boundary segment's length of a new boundary point (a point of
+// the new loops the earlier ones did not have), so that only the triangles
+// near the change are refined afresh (triangulate_face's `seeds`).
+#pragma once
+
+#include <seamless/tessellate/trimmed/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/face_domain.h>
+#include <seamless/tessellate/trimmed/face_surface.h>
+
+namespace seamless {
+
+// Inserts `earlier`'s interior points into cdt and d (the new domain, its
+// boundary triangulated in cdt), but those near d's new boundary points.
+void insert_seeds(const FaceSurface& s, const FaceDomain& earlier, FaceDomain& d,
+                  ConstrainedTriangulation& cdt);
+
+} // namespace seamless
