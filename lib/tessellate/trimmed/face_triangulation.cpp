@@ -29,23 +29,27 @@ constexpr int kPersistent = 8;
 constexpr size_t kStopSize = 4096;
 
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
-// k), three points between the centroid and the corners, and three between
-// the centroid and the edge midpoints (where a boundary triangle's largest
-// deviation lies when its boundary side is long).
+// k), three points between the centroid and the corners, and on a triangle
+// with a boundary side three between the centroid and the edge midpoints
+// (where its largest deviation lies when the boundary side is long). Inside,
+// the surface's distance to a small triangle is near a quadratic form that
+// vanishes at the corners, whose maximum is at most 4/3 of the largest of the
+// midpoints' and the centroid's.
 struct Sample {
     double l[3];
-    int edge; // -1: interior
+    int edge;           // -1: interior
+    bool boundary_only; // taken only on a triangle with a boundary side
 };
-constexpr Sample kSamples[] = {{{1.0 / 3, 1.0 / 3, 1.0 / 3}, -1},
-                               {{0, 0.5, 0.5}, 0},
-                               {{0.5, 0, 0.5}, 1},
-                               {{0.5, 0.5, 0}, 2},
-                               {{2.0 / 3, 1.0 / 6, 1.0 / 6}, -1},
-                               {{1.0 / 6, 2.0 / 3, 1.0 / 6}, -1},
-                               {{1.0 / 6, 1.0 / 6, 2.0 / 3}, -1},
-                               {{1.0 / 6, 5.0 / 12, 5.0 / 12}, -1},
-                               {{5.0 / 12, 1.0 / 6, 5.0 / 12}, -1},
-                               {{5.0 / 12, 5.0 / 12, 1.0 / 6}, -1}};
+constexpr Sample kSamples[] = {{{1.0 / 3, 1.0 / 3, 1.0 / 3}, -1, false},
+                               {{0, 0.5, 0.5}, 0, false},
+                               {{0.5, 0, 0.5}, 1, false},
+                               {{0.5, 0.5, 0}, 2, false},
+                               {{2.0 / 3, 1.0 / 6, 1.0 / 6}, -1, false},
+                               {{1.0 / 6, 2.0 / 3, 1.0 / 6}, -1, false},
+                               {{1.0 / 6, 1.0 / 6, 2.0 / 3}, -1, false},
+                               {{1.0 / 6, 5.0 / 12, 5.0 / 12}, -1, true},
+                               {{5.0 / 12, 1.0 / 6, 5.0 / 12}, -1, true},
+                               {{5.0 / 12, 5.0 / 12, 1.0 / 6}, -1, true}};
 
 // A triangle this thin (height over longest side) is a sliver.
 constexpr double kSliver = 1e-3;
@@ -176,8 +180,10 @@ struct Refiner {
                                ? unit_normal(s, uv[i] + kNudge * (centre - uv[i]), centre)
                                : point_normal(k[i]);
         const TriangleFrame frame(p[0], p[1], p[2]);
+        const bool on_boundary = t.boundary[0] || t.boundary[1] || t.boundary[2];
         for (const Sample& smp : kSamples) {
             if (!full && v.deviation > target) break;
+            if (smp.boundary_only && !on_boundary) continue;
             // Boundary segments were measured with their edge.
             if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
             const Vec3 q = smp.l[0] * uv[0] + smp.l[1] * uv[1] + smp.l[2] * uv[2];
