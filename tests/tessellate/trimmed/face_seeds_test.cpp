@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Seeds of a redone face (face_seeds.h): a face whose edge a neighbour's
-// round re-split, redone from its earlier mesh, meets the same limits as
+// round re-split, redone from its earlier mesh, meets the limits as well as
 // one redone from scratch, over the same boundary, for less work.
 #include <tessellate/trimmed/brep_cases.h>
 
@@ -46,7 +46,7 @@ TEST_CASE("face seeds: a face redone after an edge is halved meets the limits wi
         const FaceMesh fresh = triangulate_face(c.model, lines, face, criteria);
         const FaceMesh seeded = triangulate_face(c.model, lines, face, criteria, &earlier);
         REQUIRE(!seeded.failed);
-        CHECK(seeded.above_tolerance == fresh.above_tolerance);
+        CHECK(seeded.above_tolerance <= fresh.above_tolerance);
         CHECK(seeded.deviation <= D);
         CHECK(seeded.judged < fresh.judged);
         // The same boundary, point for point: the neighbours see one polyline.
