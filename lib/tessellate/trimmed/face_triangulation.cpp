@@ -3,6 +3,7 @@
 #include <seamless/tessellate/tessellation_result.h>
 #include <seamless/tessellate/trimmed/constrained_triangulation.h>
 #include <seamless/tessellate/trimmed/face_triangulation.h>
+#include <seamless/tessellate/trimmed/touching_loops.h>
 #include <seamless/tessellate/trimmed/triangle_distance.h>
 
 #include <algorithm>
@@ -300,7 +301,8 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     out.domain = face_domain(model, lines, face);
     FaceDomain& d = out.domain;
     ConstrainedTriangulation cdt;
-    if (!cdt.build(d.scaled, d.keys, d.segments)) {
+    if (!cdt.build(d.scaled, d.keys, d.segments) &&
+        !(separate_touching_loops(model.brep, s, d) && cdt.build(d.scaled, d.keys, d.segments))) {
         out.failed = true;
         return out;
     }
