@@ -87,6 +87,9 @@ ConstrainedTriangulation::~ConstrainedTriangulation() = default;
 bool ConstrainedTriangulation::build(const std::vector<Vec3>& points,
                                      const std::vector<std::int64_t>& keys,
                                      const std::vector<std::array<int, 2>>& segments) {
+    // Built again after a failure: from nothing.
+    if (impl_->cdt.number_of_vertices() > 0) impl_ = std::make_unique<Impl>();
+    points_ = 0;
     Cdt& cdt = impl_->cdt;
     std::vector<Cdt::Vertex_handle>& handle = impl_->vertex;
     handle.assign(points.size(), {});

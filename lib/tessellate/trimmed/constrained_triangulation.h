@@ -32,7 +32,8 @@ class ConstrainedTriangulation {
     // same key are one mesh vertex: coinciding, they merge. False when two
     // points with different keys coincide, two constraints cross or overlap,
     // or a constraint passes through a point (each would split a boundary
-    // segment, a crack): the caller re-splits the edges.
+    // segment, a crack): the caller re-splits the edges, or moves points and
+    // builds again (each build starts from nothing).
     bool build(const std::vector<Vec3>& points, const std::vector<std::int64_t>& keys,
                const std::vector<std::array<int, 2>>& segments);
     // Why build() failed: the pairs of segments (indices into `segments`)

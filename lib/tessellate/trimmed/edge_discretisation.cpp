@@ -8,13 +8,22 @@
 
 namespace seamless {
 
+namespace {
+
+// |dP/du x dP/dv| below this fraction of |dP/du|^2 + |dP/dv|^2 is a pole's:
+// one derivative (nearly) vanishes. Files write a pole's control points to
+// their own precision (trj3_s1-al: 1e-10 apart), and a derivative that
+// small has a direction of rounding, a quarter turn off the true normal.
+constexpr double kSingular = 1e-8;
+
+} // namespace
+
 Vec3 unit_normal(const FaceSurface& s, Vec3 uv, Vec3 inward) {
     for (double step : {0.0, 1e-6, 1e-4, 1e-2}) {
         const Vec3 q = uv + step * (inward - uv);
         const SurfacePoint sp = s.at(q);
         const Vec3 n = sp.normal();
-        // Below this the normal's direction is rounding.
-        if (norm(n) > 1e-12 * (dot(sp.du, sp.du) + dot(sp.dv, sp.dv))) return normalize(n);
+        if (norm(n) > kSingular * (dot(sp.du, sp.du) + dot(sp.dv, sp.dv))) return normalize(n);
     }
     return {};
 }

@@ -4,6 +4,7 @@
 #include <seamless/tessellate/trimmed/constrained_triangulation.h>
 #include <seamless/tessellate/trimmed/face_seeds.h>
 #include <seamless/tessellate/trimmed/face_triangulation.h>
+#include <seamless/tessellate/trimmed/touching_loops.h>
 #include <seamless/tessellate/trimmed/triangle_distance.h>
 
 #include <algorithm>
@@ -101,6 +102,15 @@ struct TriangleKeyHash {
                (static_cast<size_t>(k[1]) * 0xC2B2AE3D27D4EB4Full) ^ static_cast<size_t>(k[2]);
     }
 };
+
+// Thin in the scaled domain: between loops that run along each other
+// (touching_loops.h) there is no room for a point whatever the 3D corners,
+// a tolerance apart, make of its normal.
+bool domain_sliver(const FaceDomain& d, const std::array<int, 3>& k) {
+    const Vec3 a = d.scaled[k[1]] - d.scaled[k[0]], b = d.scaled[k[2]] - d.scaled[k[0]],
+               e = d.scaled[k[2]] - d.scaled[k[1]];
+    return !(norm(cross(a, b)) > kSliver * std::max({dot(a, a), dot(b, b), dot(e, e)}));
+}
 
 struct Verdict {
     bool drop = false;  // two corners one mesh vertex (pole, seam): zero area, left out
@@ -212,9 +222,10 @@ struct Refiner {
         const Vec3 a = p[1] - p[0], b = p[2] - p[0], e = p[2] - p[1];
         const Vec3 n = cross(a, b);
         const double longest = std::max({dot(a, a), dot(b, b), dot(e, e)});
-        const bool ear = (t.boundary[0] + t.boundary[1] + t.boundary[2] >= 2) ||
-                         (k[0] < d.boundary_points && k[1] < d.boundary_points &&
-                          k[2] < d.boundary_points && !(norm(n) > kSliver * longest));
+        const bool ear =
+            (t.boundary[0] + t.boundary[1] + t.boundary[2] >= 2) ||
+            (k[0] < d.boundary_points && k[1] < d.boundary_points && k[2] < d.boundary_points &&
+             (!(norm(n) > kSliver * longest) || domain_sliver(d, k)));
         // Boundary points lie on their edge's curve, up to the edge's
         // tolerance off the surface: a triangle within a few tolerances has
         // a flat normal the tolerance tilts, and only its corners' count. A
@@ -319,7 +330,8 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     out.domain = face_domain(model, lines, face);
     FaceDomain& d = out.domain;
     ConstrainedTriangulation cdt;
-    if (!cdt.build(d.scaled, d.keys, d.segments)) {
+    if (!cdt.build(d.scaled, d.keys, d.segments) &&
+        !(separate_touching_loops(model.brep, s, d) && cdt.build(d.scaled, d.keys, d.segments))) {
         out.failed = true;
         return out;
     }

@@ -118,6 +118,32 @@ TEST_CASE("CAD parts: pcurves that collapse a face are recomputed, and faces col
     const Tessellation t = tessellate(m, o);
     CHECK(t.mesh.triangle_count() > 0);
     CHECK(t.stats.brep.faces_left_out == 0);
+    // Its half-disks #1303/#1304 end at a pole written to the file's
+    // precision: their edges into it are not split down to a cluster of
+    // points there, which made degenerate triangles.
+    CHECK(check_mesh(t.mesh).degenerate_triangles.empty());
+}
+
+TEST_CASE("CAD parts: a face whose loop runs along itself within tolerance is meshed closed",
+          "[heavy][cad]") {
+    // The spring's face DE25: the ground end's edge runs along the face's
+    // side edge u = -pi for half a turn, crossing it within tolerance. Its
+    // coils touch and its end faces meet the next coil inside the file's
+    // tolerance: self-intersections are the B-rep's own, not checked.
+    const Model m = load_model(part("occt_bug22869_Spring.igs"));
+    REQUIRE(all_shells_closed(m.brep));
+    TessellationOptions o;
+    o.patch_trees = false;
+    const Tessellation t = tessellate(m, o);
+    CHECK(t.stats.brep.faces_left_out == 0);
+    const CheckReport r = check_mesh(t.mesh);
+    CHECK(r.closed);
+    CHECK(r.components.size() == 1);
+    CHECK(r.t_junctions.empty());
+    CHECK(r.cracks.empty());
+    CHECK(r.non_manifold_edges.empty());
+    CHECK(r.degenerate_triangles.empty());
+    CHECK(r.inconsistent_orientation.empty());
 }
 
 TEST_CASE("CAD parts: a sewn edge whose curve stands still between two kinks", "[heavy][cad]") {

@@ -73,3 +73,31 @@ TEST_CASE("edge discretisation: a curve standing still between two kinks leaves 
         CHECK(no_zero_length(line));
     }
 }
+
+TEST_CASE("edge discretisation: a pole written to a file's precision has the surface's normal",
+          "[brep]") {
+    // The planar triangle P(u, v) = v (2u - 1, 1, 0) collapsed at v = 0, its
+    // pole's second control point 1e-10 off the first across the plane (as
+    // trj3_s1-al's half-disks #1303/#1304 are written): dP/du at the pole is
+    // that rounding, and dP/du x dP/dv lies in the plane.
+    BSplineSurface s;
+    s.degree_u = s.degree_v = 1;
+    s.size_u = s.size_v = 2;
+    s.knots_u = s.knots_v = {0, 0, 1, 1};
+    s.points = {{0, 0, 0}, {-1, 1, 0}, {0, 0, 1e-10}, {1, 1, 0}};
+    const FaceSurface surface(s);
+    const Vec3 inward{0.5, 0.5, 0};
+    for (double u : {0.0, 0.5, 1.0})
+        CHECK(std::abs(std::abs(unit_normal(surface, {u, 0, 0}, inward).z) - 1) < 1e-6);
+    // The edge from the pole to (1, 1, 0), along u = 1: its normal turns by
+    // nothing, so it is one chord, not split to the depth limit at the pole.
+    BRepBuilder b;
+    const int pole = b.vertex({0, 0, 0}), corner = b.vertex({1, 1, 0});
+    const BSplineCurve line = nurbs_line({0, 0, 0}, {1, 1, 0});
+    const int e = b.edge(line, pole, corner);
+    const BSplineCurve pcurve = nurbs_line({1, 0, 0}, {1, 1, 0});
+    const EdgePolyline polyline =
+        discretise_edge(b.m.brep, e, {{surface, &pcurve, 1e-7, inward}}, {1e-3, 0.5});
+    CHECK(!polyline.limited);
+    CHECK(polyline.t.size() == 2);
+}
