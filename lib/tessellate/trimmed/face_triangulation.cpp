@@ -34,8 +34,8 @@ constexpr size_t kStopSize = 4096;
 // with a boundary side three between the centroid and the edge midpoints
 // (where its largest deviation lies when the boundary side is long). Inside,
 // the surface's distance to a small triangle is near a quadratic form that
-// vanishes at the corners, whose maximum is at most 4/3 of the largest of the
-// midpoints' and the centroid's.
+// vanishes at the corners, which the centroid and the midpoints pin down (its
+// maximum is at most 4/3 of the midpoints' largest).
 struct Sample {
     double l[3];
     int edge;           // -1: interior

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -49,13 +50,20 @@ BSplineSurface creased(std::mt19937& rng) {
     return s;
 }
 
-// Over random triangles of size `size` inside the domain, with corners moved
-// off the surface by up to `lift`: the bound holds at every sampled point;
-// returns the median ratio bound / sampled distance.
-double check_triangles(const BSplineSurface& s, double size, double lift, std::mt19937& rng) {
-    const TriangleBound bound(s);
-    std::uniform_real_distribution<double> U(s.u_min(), s.u_max() - size),
-        V(s.v_min(), s.v_max() - size), d(0, size), l(-lift, lift), b(0, 1);
+// Random triangles of size `size` with corners in [lo, hi]^2 of (u,v), on
+// `surface` (the one `bound` is for), their corners moved off it by up to
+// `lift`: the bound is finite and holds at every sampled point.
+struct TriangleCheck {
+    const TriangleBound& bound;
+    std::function<Vec3(double, double)> surface;
+    std::array<double, 2> lo, hi;
+    double size, lift = 0;
+};
+
+// Returns the median ratio bound / largest sampled distance.
+double check_triangles(const TriangleCheck& t, std::mt19937& rng) {
+    std::uniform_real_distribution<double> U(t.lo[0], t.hi[0] - t.size),
+        V(t.lo[1], t.hi[1] - t.size), d(0, t.size), l(-t.lift, t.lift), b(0, 1);
     std::vector<double> ratios;
     for (int n = 0; n < 200; ++n) {
         const double u = U(rng), v = V(rng);
@@ -63,9 +71,11 @@ double check_triangles(const BSplineSurface& s, double size, double lift, std::m
         std::array<Vec3, 3> Q;
         for (int k = 0; k < 3; ++k) {
             x[k] = {u + d(rng), v + d(rng)};
-            Q[k] = evaluate(s, x[k][0], x[k][1]).point + Vec3{l(rng), l(rng), l(rng)};
+            Q[k] = t.surface(x[k][0], x[k][1]);
+            if (t.lift > 0) Q[k] = Q[k] + Vec3{l(rng), l(rng), l(rng)};
         }
-        const double B = bound(x, Q);
+        const double B = t.bound(x, Q);
+        REQUIRE(std::isfinite(B));
         double largest = 0;
         for (int m = 0; m < 60; ++m) {
             double a = b(rng), c = b(rng);
@@ -74,13 +84,25 @@ double check_triangles(const BSplineSurface& s, double size, double lift, std::m
             const double pu = lam[0] * x[0][0] + lam[1] * x[1][0] + lam[2] * x[2][0];
             const double pv = lam[0] * x[0][1] + lam[1] * x[1][1] + lam[2] * x[2][1];
             const Vec3 L = lam[0] * Q[0] + lam[1] * Q[1] + lam[2] * Q[2];
-            largest = std::max(largest, distance(evaluate(s, pu, pv).point, L));
+            largest = std::max(largest, distance(t.surface(pu, pv), L));
         }
         REQUIRE(largest <= B);
         if (largest > 0) ratios.push_back(B / largest);
     }
     std::sort(ratios.begin(), ratios.end());
     return ratios.empty() ? 0 : ratios[ratios.size() / 2];
+}
+
+// Over the domain of s, the surface as evaluated.
+double check_triangles(const BSplineSurface& s, double size, double lift, std::mt19937& rng) {
+    const TriangleBound bound(s);
+    return check_triangles({bound,
+                            [&](double u, double v) { return evaluate(s, u, v).point; },
+                            {s.u_min(), s.v_min()},
+                            {s.u_max(), s.v_max()},
+                            size,
+                            lift},
+                           rng);
 }
 
 } // namespace
@@ -145,35 +167,18 @@ TEST_CASE("the chord bound holds on a rational quarter circle and is tight") {
 
 namespace {
 
-// As check_triangles, with the face's surface as the trimmed pipeline
-// evaluates it (FaceSurface: wrapped where closed, its tangent plane beyond
-// an open side), on triangles whose corners lie in [lo, hi]^2 of (u,v).
+// With the face's surface as the trimmed pipeline evaluates it (FaceSurface:
+// wrapped where closed, its tangent plane beyond an open side).
 void check_face_triangles(const BSplineSurface& s, std::array<double, 2> lo,
                           std::array<double, 2> hi, double size, std::mt19937& rng) {
     const FaceSurface face(s);
     const TriangleBound bound(s, face.closed_u(), face.closed_v());
-    std::uniform_real_distribution<double> U(lo[0], hi[0] - size), V(lo[1], hi[1] - size),
-        d(0, size), b(0, 1);
-    for (int n = 0; n < 200; ++n) {
-        const double u = U(rng), v = V(rng);
-        std::array<UV, 3> x;
-        std::array<Vec3, 3> Q;
-        for (int k = 0; k < 3; ++k) {
-            x[k] = {u + d(rng), v + d(rng)};
-            Q[k] = face.at({x[k][0], x[k][1], 0}).point;
-        }
-        const double B = bound(x, Q);
-        REQUIRE(std::isfinite(B));
-        for (int m = 0; m < 60; ++m) {
-            double a = b(rng), c = b(rng);
-            if (a + c > 1) a = 1 - a, c = 1 - c;
-            const double lam[3] = {1 - a - c, a, c};
-            const Vec3 p{lam[0] * x[0][0] + lam[1] * x[1][0] + lam[2] * x[2][0],
-                         lam[0] * x[0][1] + lam[1] * x[1][1] + lam[2] * x[2][1], 0};
-            const Vec3 L = lam[0] * Q[0] + lam[1] * Q[1] + lam[2] * Q[2];
-            REQUIRE(distance(face.at(p).point, L) <= B);
-        }
-    }
+    check_triangles({bound,
+                     [&](double u, double v) {
+                         return face.at({u, v, 0}).point;
+                     },
+                     lo, hi, size},
+                    rng);
 }
 
 } // namespace
