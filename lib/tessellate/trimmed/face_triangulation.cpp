@@ -61,8 +61,6 @@ constexpr double kNudge = 1e-6;
 // within this fraction of the deviation tiny.
 constexpr double kTolerances = 8;
 constexpr double kTiny = 1.0 / 8;
-// A flat normal this far from the surface's is a fold.
-constexpr double kFold = 0.5 * M_PI;
 
 // Samples can miss a triangle's largest deviation, which lies between them:
 // the refinement aims this much below D.
@@ -233,17 +231,11 @@ struct Refiner {
         // at an apex or a pole the normals turn however small it is.
         const bool tiny = longest <= kTiny * kTiny * c.deviation * c.deviation;
         const bool small = tiny || longest <= kTolerances * kTolerances * d.tolerance * d.tolerance;
-        // A triangle thinner than that (its height) across a curved direction
-        // (a band narrower than D) tilts its plane however short it is made:
-        // its flat normal counts only when folded over.
-        const bool thin = norm(n) <= kTiny * c.deviation * std::sqrt(longest);
         double turn = 0;
         if (!ear && !crease && !tiny)
-            for (int i = 0; i < 3; ++i) {
-                const double flat_turn = small ? 0.0 : angle_between(v.normals[i], n);
+            for (int i = 0; i < 3; ++i)
                 turn = std::max({turn, angle_between(v.normals[i], v.normals[(i + 1) % 3]),
-                                 thin && flat_turn <= kFold ? 0.0 : flat_turn});
-            }
+                                 small ? 0.0 : angle_between(v.normals[i], n)});
         const bool flat = !ear && !(norm(n) > 1e-12 * longest);
         v.badness = flat ? INFINITY : std::max(v.deviation / target, turn / c.angle);
         v.split = v.badness > 1;
