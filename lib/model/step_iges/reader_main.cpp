@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
@@ -49,16 +50,18 @@ constexpr bool kAddressSanitizer = SEAMLESS_READER_ASAN;
 // readers catch their own failed allocations and report the file unreadable
 // (11752 under a limit of 72 MiB: "not a readable STEP file"), so the worker
 // cannot tell a memory blow-up from its outcome: it watches malloc instead.
-volatile sig_atomic_t allocation_failed = 0;
-
-void* watched(void* p) {
-    if (!p) allocation_failed = 1;
-    return p;
-}
+std::atomic<bool> allocation_failed{false}; // OpenCASCADE may allocate in threads
 
 } // namespace
 
 #if !SEAMLESS_READER_ASAN
+namespace {
+void* watched(void* p) {
+    if (!p) allocation_failed.store(true, std::memory_order_relaxed);
+    return p;
+}
+} // namespace
+
 // glibc's allocator under this executable's malloc, calloc and realloc, which
 // every library's calls resolve to (ASan has its own allocator: not there).
 extern "C" {
@@ -66,13 +69,13 @@ void* __libc_malloc(size_t size);
 void* __libc_calloc(size_t n, size_t size);
 void* __libc_realloc(void* p, size_t size);
 
-void* malloc(size_t size) {
+void* malloc(size_t size) noexcept {
     return watched(__libc_malloc(size));
 }
-void* calloc(size_t n, size_t size) {
+void* calloc(size_t n, size_t size) noexcept {
     return watched(__libc_calloc(n, size));
 }
-void* realloc(void* p, size_t size) {
+void* realloc(void* p, size_t size) noexcept {
     void* q = __libc_realloc(p, size);
     return size == 0 ? q : watched(q); // realloc(p, 0) frees p
 }
@@ -166,7 +169,7 @@ bool write_all(int fd, const void* data, size_t size) {
     }
     // Whatever the read made of a failed allocation (an error, or a model
     // without what it could not hold), it ran out of memory.
-    if (allocation_failed) _exit(proc::kOutOfMemory);
+    if (allocation_failed.load()) _exit(proc::kOutOfMemory);
     char head[1 + sizeof(std::uint64_t)] = {proc::kModelAnswer};
     const std::uint64_t size = model.size();
     std::memcpy(head + 1, &size, sizeof size);
