@@ -44,9 +44,9 @@ int millis_until(Clock::time_point deadline) {
 // A model answer's head: its tag and size (step_iges_process.h).
 constexpr size_t kHead = 1 + sizeof(std::uint64_t);
 
-// The room a model answer needs, from its head: the whole of it at once, not
-// doubling (a 26-MB model's doublings cost more than its pipe). The size is
-// the worker's word, so at most 1 GiB is taken on it.
+// The room a model answer needs, from its head: the whole of it at once (a
+// 26-MB model grown by doubling touched twice its size in fresh pages). The
+// size is the worker's word, so at most 1 GiB is taken on it.
 size_t reserved(const std::string& head) {
     if (head.size() < kHead || head[0] != proc::kModelAnswer) return 0;
     std::uint64_t size;

@@ -12,7 +12,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <fstream>
+#include <sstream>
 #include <thread>
 
 using namespace seamless;
@@ -123,6 +126,30 @@ TEST_CASE("A memory blow-up under any limit says it ran out of the limit, never 
                            ": OpenCASCADE ran out of memory reading it (the reader's limit is " +
                            std::to_string(mib) + " MiB, ModelLoadOptions::reader_memory_limit)");
         }
+}
+
+TEST_CASE("The reader's server runs with the caller's environment and malloc on huge pages",
+          "[model][step_iges][heavy]") {
+    load_model(test::model_path("cad/torus.igs")); // the server started
+    std::string environment;
+    for (const auto& e : std::filesystem::directory_iterator("/proc")) {
+        std::ifstream stat(e.path() / "stat");
+        std::string line;
+        if (!std::getline(stat, line) || line.find("(seamless-step-i") == std::string::npos)
+            continue;
+        std::istringstream fields(line.substr(line.rfind(')') + 2));
+        std::string state;
+        pid_t parent = 0;
+        fields >> state >> parent;
+        if (parent != getpid()) continue;
+        std::ifstream in(e.path() / "environ");
+        std::getline(in, environment, '\x01'); // NUL-separated: all of it
+    }
+    REQUIRE_FALSE(environment.empty());
+    CHECK_THAT(environment, Catch::Contains("glibc.malloc.hugetlb="));
+    const char* path = std::getenv("PATH");
+    REQUIRE(path != nullptr);
+    CHECK_THAT(environment, Catch::Contains(std::string("PATH=") + path));
 }
 
 TEST_CASE("An InputError of the reader reaches the caller as it was raised",
