@@ -41,6 +41,19 @@ int millis_until(Clock::time_point deadline) {
     return static_cast<int>(std::clamp<long long>(left.count() + 1, 0, 1000));
 }
 
+// A model answer's head: its tag and size (step_iges_process.h).
+constexpr size_t kHead = 1 + sizeof(std::uint64_t);
+
+// The room a model answer needs, from its head: the whole of it at once (a
+// 26-MB model grown by doubling touched twice its size in fresh pages). The
+// size is the worker's word, so at most 1 GiB is taken on it.
+size_t reserved(const std::string& head) {
+    if (head.size() < kHead || head[0] != proc::kModelAnswer) return 0;
+    std::uint64_t size;
+    std::memcpy(&size, head.data() + 1, sizeof size);
+    return kHead + static_cast<size_t>(std::min<std::uint64_t>(size, std::uint64_t(1) << 30));
+}
+
 // One read by a worker of the reader's server: its pipes, and its pid once
 // the server has said it. A worker not seen to end is killed (a time-out, or
 // an exception here).
@@ -72,6 +85,8 @@ class Worker {
         if (status_bytes_.size() < sizeof pid_)
             fail("the STEP/IGES reader's server did not start a worker for it");
         std::memcpy(&pid_, status_bytes_.data(), sizeof pid_);
+        if (!read_all(pipes_.answer, kHead, deadline, answer)) return false;
+        answer.reserve(reserved(answer));
         if (!read_all(pipes_.answer, SIZE_MAX, deadline, answer)) return false;
         if (!read_all(pipes_.status, sizeof pid_ + sizeof status, deadline, status_bytes_))
             return false;
@@ -132,9 +147,17 @@ std::string limit_text(double x, const char* unit) {
 // The reader's model, or its InputError, from a complete answer.
 Model take_answer(const std::string& answer, const std::string& file,
                   const ModelLoadOptions& options) {
-    if (!answer.empty() && answer[0] == 'M') {
+    if (!answer.empty() && answer[0] == proc::kModelAnswer) {
+        std::uint64_t size = 0;
+        if (answer.size() >= kHead) std::memcpy(&size, answer.data() + 1, sizeof size);
+        if (answer.size() < kHead || size != answer.size() - kHead)
+            throw InputError(file, "",
+                             "the STEP/IGES reader's answer is malformed (" +
+                                 std::to_string(answer.size()) + " bytes, a model of " +
+                                 std::to_string(size) + ")");
         try {
-            return read_model_exchange(std::string_view(answer).substr(1), file, options.limits);
+            return read_model_exchange(std::string_view(answer).substr(kHead), file,
+                                       options.limits);
         } catch (const InputError& e) {
             throw InputError(file, "",
                              "the STEP/IGES reader's answer is malformed (" + e.field() + ": " +

@@ -9,8 +9,9 @@
 // ends of two pipes (SCM_RIGHTS). The server forks a worker for it and
 // writes the worker's pid on the status pipe (a pid_t), then, when the worker
 // has ended, its wait status (an int). The worker answers on the answer pipe
-// with 'M' and the model (model_exchange.h) or encode_error's 'E' and the
-// InputError it met, and exits 0; or exits kOutOfMemory. Anything else (a
+// with kModelAnswer, the model's size (a uint64_t) and the model
+// (model_exchange.h), or encode_error's 'E' and the InputError it met, and
+// exits 0; or exits kOutOfMemory. Anything else (a
 // signal, another status, a malformed answer) is a failure of the reader,
 // which the library reports as one InputError naming the file.
 #pragma once
@@ -28,6 +29,7 @@ inline constexpr const char* kServerArgument = "--server";
 inline constexpr int kServerFd = 3;
 inline constexpr int kOutOfMemory = 3; // exit status: an allocation failed
 inline constexpr int kUsage = 64;      // exit status: not run by the library
+inline constexpr char kModelAnswer = 'M';
 
 // The options as one argument (every field, doubles exactly) and back;
 // decode_options returns false on any defect.

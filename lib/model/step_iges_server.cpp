@@ -20,11 +20,15 @@
 #include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <string>
+#include <vector>
 
 extern char** environ;
 
 namespace seamless::step_iges_process {
 namespace {
+
+constexpr const char* kHugePages = "glibc.malloc.hugetlb=1";
 
 // The reader's path: beside the file holding this code (libseamless.so, or
 // the program itself where the library is linked in, as in the fuzz build).
@@ -33,6 +37,26 @@ std::filesystem::path reader_path() {
     if (dladdr(reinterpret_cast<void*>(&reader_path), &info) && info.dli_fname)
         return std::filesystem::path(info.dli_fname).parent_path() / kExecutable;
     return kExecutable;
+}
+
+// The server's environment: the caller's, with glibc's malloc asked to back
+// its heap with transparent huge pages (docs/results/step_iges_boundary.md: a
+// worker's heap starts empty, and its first touches of 4-KiB pages were a
+// good part of the boundary's cost). A caller's own malloc tunables are kept.
+std::vector<std::string> server_environment() {
+    std::vector<std::string> env;
+    bool tunables = false;
+    for (char** e = environ; *e; ++e) {
+        std::string v = *e;
+        if (v.rfind("GLIBC_TUNABLES=", 0) == 0) {
+            tunables = true;
+            if (v.find("glibc.malloc.hugetlb") == std::string::npos)
+                v += (v.size() > 15 ? ":" : "") + std::string(kHugePages);
+        }
+        env.push_back(std::move(v));
+    }
+    if (!tunables) env.push_back(std::string("GLIBC_TUNABLES=") + kHugePages);
+    return env;
 }
 
 struct Server {
@@ -69,7 +93,11 @@ struct Server {
         const std::string exe = reader_path().string();
         char* argv[] = {const_cast<char*>(exe.c_str()), const_cast<char*>(kServerArgument),
                         nullptr};
-        const int rc = posix_spawn(&pid, exe.c_str(), &actions, &attr, argv, environ);
+        std::vector<std::string> env = server_environment();
+        std::vector<char*> envp;
+        for (std::string& v : env) envp.push_back(v.data());
+        envp.push_back(nullptr);
+        const int rc = posix_spawn(&pid, exe.c_str(), &actions, &attr, argv, envp.data());
         posix_spawn_file_actions_destroy(&actions);
         posix_spawnattr_destroy(&attr);
         close(sv[1]);
@@ -126,6 +154,9 @@ RequestPipes request_read(const std::string& file, const ModelLoadOptions& optio
                          std::string("cannot start the STEP/IGES reader (pipe: ") +
                              std::strerror(e) + ")");
     }
+    // A large model is tens of MB: a pipe of 1 MiB (Linux's limit for a user)
+    // takes it in fewer turns of the worker and the caller than one of 64 KiB.
+    fcntl(answer[0], F_SETPIPE_SZ, 1 << 20); // a failure leaves the default
     const std::string payload = encode_options(options) + '\0' + file;
     std::string error;
     bool sent = false;

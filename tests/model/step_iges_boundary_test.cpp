@@ -12,7 +12,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <fstream>
+#include <sstream>
 #include <thread>
 
 using namespace seamless;
@@ -94,14 +97,59 @@ TEST_CASE("The reader's time limit ends a long read with one line", "[model][ste
 
 TEST_CASE("The reader's memory limit ends a read that needs more with one line",
           "[model][step_iges][heavy][native-allocator]") {
-    // Below what OpenCASCADE has mapped already: its first allocations fail.
+    // Below what OpenCASCADE has mapped already: its first allocations past
+    // the heap the worker started with fail (a file as small as the torus
+    // may need none).
     ModelLoadOptions o;
     o.reader_memory_limit = std::uint64_t(16) << 20;
-    const auto f = test::model_path("cad/torus.igs");
+    const auto f = test::model_path("cad/b123d_M6-1x12-countersunk-screw.step");
     CHECK(error_of(f, o) == f.string() +
                                 ": OpenCASCADE ran out of memory reading it (the reader's limit is "
                                 "16 MiB, ModelLoadOptions::reader_memory_limit)");
     CHECK_FALSE(load_model(f).surfaces.empty());
+}
+
+TEST_CASE("A memory blow-up under any limit says it ran out of the limit, never that the file "
+          "is unreadable",
+          "[model][step_iges][heavy][native-allocator]") {
+    // OpenCASCADE's STEP reader catches its own failed allocations and says
+    // "not a readable STEP file" (11752 below about 100 MiB): the worker
+    // tells it by the allocations that failed.
+    for (const auto& f : {corpus("pyocc_11752.stp"), corpus("occt_bearing.iges")})
+        for (int mib = 8; mib <= 88; mib += 16) {
+            INFO(f << " " << mib << " MiB");
+            ModelLoadOptions o;
+            o.reader_memory_limit = std::uint64_t(mib) << 20;
+            const std::string e = error_of(f, o);
+            if (e.empty()) continue; // enough for this file
+            CHECK(e == f.string() +
+                           ": OpenCASCADE ran out of memory reading it (the reader's limit is " +
+                           std::to_string(mib) + " MiB, ModelLoadOptions::reader_memory_limit)");
+        }
+}
+
+TEST_CASE("The reader's server runs with the caller's environment and malloc on huge pages",
+          "[model][step_iges][heavy]") {
+    load_model(test::model_path("cad/torus.igs")); // the server started
+    std::string environment;
+    for (const auto& e : std::filesystem::directory_iterator("/proc")) {
+        std::ifstream stat(e.path() / "stat");
+        std::string line;
+        if (!std::getline(stat, line) || line.find("(seamless-step-i") == std::string::npos)
+            continue;
+        std::istringstream fields(line.substr(line.rfind(')') + 2));
+        std::string state;
+        pid_t parent = 0;
+        fields >> state >> parent;
+        if (parent != getpid()) continue;
+        std::ifstream in(e.path() / "environ");
+        std::getline(in, environment, '\x01'); // NUL-separated: all of it
+    }
+    REQUIRE_FALSE(environment.empty());
+    CHECK_THAT(environment, Catch::Contains("glibc.malloc.hugetlb="));
+    const char* path = std::getenv("PATH");
+    REQUIRE(path != nullptr);
+    CHECK_THAT(environment, Catch::Contains(std::string("PATH=") + path));
 }
 
 TEST_CASE("An InputError of the reader reaches the caller as it was raised",

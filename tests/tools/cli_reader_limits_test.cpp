@@ -2,7 +2,8 @@
 // The STEP/IGES reader's limits on the command line (--reader-time-limit,
 // --reader-memory-limit; tools/model_options.h): every command that reads
 // models takes them, a read past the time limit ends with exit 2 and one line
-// naming the file and the limit, and bad values are refused in one line.
+// naming the file and the limit, so does one past the memory limit, and bad
+// values are refused in one line.
 #include "test_util.h"
 
 #include <catch2/catch.hpp>
@@ -45,6 +46,20 @@ TEST_CASE("A corpus file read past --reader-time-limit ends with exit 2 and one 
     }
     for (const char* ext : {".glb", ".json", ".png"})
         CHECK_FALSE(std::filesystem::exists(out.string() + ext));
+}
+
+TEST_CASE("A read past a small --reader-memory-limit ends with exit 2 and one line naming the "
+          "file and the limit",
+          "[cli][cad][heavy][native-allocator]") {
+    // OpenCASCADE's STEP reader would call 11752 unreadable under 64 MiB.
+    const auto f = test::shared_dir() / "models" / "cad-corpus" / "pyocc_11752.stp";
+    REQUIRE(std::filesystem::exists(f));
+    const auto r = test::run_cli("info " + test::quoted(f) + " --reader-memory-limit 64M");
+    CHECK(r.status == 2);
+    CHECK(one_line(r.err));
+    CHECK(r.err == "error: " + f.string() +
+                       ": OpenCASCADE ran out of memory reading it (the reader's limit is 64 MiB, "
+                       "ModelLoadOptions::reader_memory_limit)\n");
 }
 
 TEST_CASE("Bad reader limits are refused in one line naming the option; good ones are taken",
