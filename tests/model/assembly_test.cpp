@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -152,4 +153,91 @@ TEST_CASE("load_model flattens an assembly unless asked to keep it", "[model][as
     const Model tree = load_model(file, keep);
     CHECK(tree.brep.faces.size() == 2);
     CHECK(tree.assembly.nodes.size() == 6);
+}
+
+namespace {
+
+// small_assembly with the tube a solid, on a layer of its own.
+Model with_solid_layer() {
+    Model m = test::small_assembly();
+    m.brep.solids.push_back({{1}, "tube solid"});
+    m.assembly.parts[1].solid_count = 1;
+    m.assembly.layers.push_back({"solids", true, {}, {0}, {}});
+    return m;
+}
+
+} // namespace
+
+TEST_CASE("Layers round-trip through JSON, are checked by index, and follow each copy",
+          "[model][assembly]") {
+    const Model m = with_solid_layer();
+    validate_assembly(m, "a.json");
+    const Model back = parse_model_json(to_json(m), "a.json");
+    CHECK(back.assembly.layers == m.assembly.layers);
+    CHECK_FALSE(back.assembly.layers[1].visible);
+    CHECK(layer_faces(m, m.assembly.layers[2], false) == std::vector<int>{1});
+    CHECK(layer_faces(m, m.assembly.layers[0], false).empty()); // a part only
+    CHECK(layer_faces(m, m.assembly.layers[0], true) == std::vector<int>{0});
+
+    // Placed: the part's one copy, the tube's face and solid in each of its three.
+    const Model flat = flatten_assembly(m);
+    const std::vector<AssemblyLayer>& placed = flat.assembly.layers;
+    REQUIRE(placed.size() == 3);
+    CHECK(placed[0].faces == std::vector<int>{0});
+    CHECK(placed[0].parts.empty());
+    CHECK(placed[1].faces == std::vector<int>{1, 2, 3});
+    CHECK(placed[2].solids == std::vector<int>{0, 1, 2});
+    CHECK(placed[2].faces.empty());
+    validate_assembly(flat, "flat");
+    for (size_t k = 0; k < placed.size(); ++k) {
+        CHECK(placed[k].name == m.assembly.layers[k].name);
+        CHECK(placed[k].visible == m.assembly.layers[k].visible);
+        // Every copy of a face the layer covers, and nothing else.
+        const std::vector<int> covered = layer_faces(m, m.assembly.layers[k], true);
+        const std::vector<int> sources = {0, 1, 1, 1}; // the plate, then the tube thrice
+        std::vector<int> want;
+        for (size_t f = 0; f < sources.size(); ++f)
+            if (std::count(covered.begin(), covered.end(), sources[f])) want.push_back(int(f));
+        CHECK(layer_faces(flat, placed[k], true) == want);
+    }
+
+    const auto refused = [](Model bad, const std::string& field) {
+        try {
+            validate_assembly(bad, "a.json");
+        } catch (const InputError& e) {
+            CHECK(e.field() == field);
+            return true;
+        }
+        return false;
+    };
+    Model bad = m;
+    bad.assembly.layers[1].faces = {1, 2};
+    CHECK(refused(bad, "assembly.layers[1].faces[1]"));
+    bad = m;
+    bad.assembly.layers[0].parts = {-1};
+    CHECK(refused(bad, "assembly.layers[0].parts[0]"));
+    bad = m;
+    bad.assembly.layers[2].solids = {1};
+    CHECK(refused(bad, "assembly.layers[2].solids[0]"));
+    // And in JSON, before the B-rep is known: a negative index, a wrong type.
+    const std::string text = to_json(m);
+    const std::string vis = "\"visible\": false";
+    const size_t at = text.find(vis);
+    REQUIRE(at != std::string::npos);
+    const auto json_refused = [](const std::string& t, const std::string& field) {
+        try {
+            parse_model_json(t, "a.json");
+        } catch (const InputError& e) {
+            CHECK(e.field() == field);
+            return true;
+        }
+        return false;
+    };
+    CHECK(json_refused(text.substr(0, at) + "\"visible\": 0" + text.substr(at + vis.size()),
+                       "assembly.layers[1].visible"));
+    const std::string faces = "\"faces\": [1]";
+    const size_t f = text.rfind(faces); // the last layer's
+    REQUIRE(f != std::string::npos);
+    CHECK(json_refused(text.substr(0, f) + "\"faces\": [-1]" + text.substr(f + faces.size()),
+                       "assembly.layers[1].faces[0]"));
 }
