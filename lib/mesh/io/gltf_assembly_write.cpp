@@ -141,17 +141,22 @@ void write_tree(const std::filesystem::path& path, const TriangleMesh& mesh, con
     tinygltf::Model model = coloured_model(a);
     std::vector<int> face_of;
     const auto parts = part_triangles(mesh, m, name, face_of);
-    for (size_t p = 0; p < parts.size(); ++p)
+    // One mesh per part with triangles: glTF forbids a mesh without
+    // primitives, so a part without faces has none (mesh_of -1).
+    std::vector<int> mesh_of(parts.size(), -1);
+    for (size_t p = 0; p < parts.size(); ++p) {
+        if (parts[p].empty()) continue;
+        mesh_of[p] = static_cast<int>(model.meshes.size());
         model.meshes.push_back(
             grouped_mesh(model, mesh, parts[p], face_of, a.parts[p].name, scale));
+    }
     tinygltf::Scene scene;
     for (size_t k = 0; k < a.nodes.size(); ++k) {
         const AssemblyNode& n = a.nodes[k];
         tinygltf::Node node;
         node.name = n.name;
         node.matrix = node_matrix(n.placement, scale);
-        // A part without triangles (no faces) has an empty mesh, which glTF forbids.
-        if (n.part >= 0 && !model.meshes[n.part].primitives.empty()) node.mesh = n.part;
+        if (n.part >= 0) node.mesh = mesh_of[n.part];
         model.nodes.push_back(std::move(node));
         if (n.parent < 0)
             scene.nodes.push_back(static_cast<int>(k));
@@ -163,7 +168,7 @@ void write_tree(const std::filesystem::path& path, const TriangleMesh& mesh, con
         [&](const AssemblyLayer& l) {
             std::vector<int> meshes;
             for (int p : l.parts)
-                if (!model.meshes[p].primitives.empty()) meshes.push_back(p);
+                if (mesh_of[p] >= 0) meshes.push_back(mesh_of[p]);
             return meshes;
         },
         [&](const AssemblyLayer& l) { return layer_faces(m, l, false); });

@@ -262,3 +262,21 @@ TEST_CASE("Layers as the scene's extras: a part's mesh, the faces of the rest, p
     bare.assembly.layers.clear();
     CHECK(written(bare, dir / "b.glb").scenes[0].extras.Type() == tinygltf::NULL_TYPE);
 }
+
+TEST_CASE("A part without faces has no glTF mesh (glTF forbids an empty one)",
+          "[mesh][io][assembly]") {
+    Model m = test::small_assembly();
+    m.assembly.parts.insert(m.assembly.parts.begin() + 1, {"empty", 0, 0, 0, -1});
+    for (AssemblyNode& n : m.assembly.nodes)
+        if (n.part >= 1) ++n.part;
+    m.assembly.nodes.push_back({"empty-1", 0, AffineMap{}, 1});
+    m.assembly.layers.push_back({"all", true, {0, 1, 2}, {}, {}});
+    validate_assembly(m, "a.json");
+    const tinygltf::Model g = written(m, test::scratch_dir("gltf_empty_part") / "a.glb");
+    REQUIRE(g.meshes.size() == 2); // plate and tube
+    for (const auto& mesh : g.meshes) CHECK(!mesh.primitives.empty());
+    CHECK(g.nodes.back().mesh == -1);
+    CHECK(g.meshes[g.nodes[1].mesh].name == "plate");
+    CHECK(g.meshes[g.nodes[2].mesh].name == "tube");
+    CHECK(scene_layers(g).back().meshes == std::vector<int>{0, 1});
+}
