@@ -114,15 +114,9 @@ void write_index(std::ostream& os, const char* key, int k) {
         os << k;
 }
 
-void write_list(std::ostream& os, const std::vector<int>& v) {
-    os << '[';
-    for (size_t k = 0; k < v.size(); ++k) os << (k ? ", " : "") << v[k];
-    os << ']';
-}
-
 void write_indices(std::ostream& os, const char* key, const std::vector<int>& v) {
     os << ",\n   \"" << key << "\": ";
-    write_list(os, v);
+    write_json_ints(os, v);
 }
 
 void write_layers(std::ostream& os, const std::vector<AssemblyLayer>& layers) {
@@ -131,12 +125,13 @@ void write_layers(std::ostream& os, const std::vector<AssemblyLayer>& layers) {
         const AssemblyLayer& l = layers[k];
         os << (k ? ",\n   " : "\n   ");
         write_name(os, l.name);
-        os << ", \"visible\": " << (l.visible ? "true" : "false") << ", \"parts\": ";
-        write_list(os, l.parts);
-        os << ", \"solids\": ";
-        write_list(os, l.solids);
-        os << ", \"faces\": ";
-        write_list(os, l.faces);
+        os << ", \"visible\": " << (l.visible ? "true" : "false");
+        for (const auto& [key, list] :
+             {std::pair{"parts", &l.parts}, std::pair{"solids", &l.solids},
+              std::pair{"faces", &l.faces}}) {
+            os << ", \"" << key << "\": ";
+            write_json_ints(os, *list);
+        }
         os << '}';
     }
     os << ']';

@@ -17,6 +17,30 @@
 
 using namespace seamless;
 
+namespace {
+
+// The field validate_assembly names for m ("" when it passes).
+std::string refused_field(const Model& m) {
+    try {
+        validate_assembly(m, "a.json");
+    } catch (const InputError& e) {
+        return e.field();
+    }
+    return "";
+}
+
+// The field the JSON reader names for text ("" when it reads).
+std::string json_refused_field(const std::string& text) {
+    try {
+        parse_model_json(text, "a.json");
+    } catch (const InputError& e) {
+        return e.field();
+    }
+    return "";
+}
+
+} // namespace
+
 TEST_CASE("Assemblies round-trip through version-2 JSON bit for bit", "[model][assembly]") {
     const Model m = test::small_assembly();
     validate_assembly(m, "a.json");
@@ -49,14 +73,8 @@ TEST_CASE("A model without structure is written as before: no assembly member",
 }
 
 TEST_CASE("Assembly defects are refused with the field named", "[model][assembly]") {
-    const auto refused = [](Model m, const std::string& field) {
-        try {
-            validate_assembly(m, "a.json");
-        } catch (const InputError& e) {
-            CHECK(e.field() == field);
-            return true;
-        }
-        return false;
+    const auto refused = [](const Model& m, const std::string& field) {
+        return refused_field(m) == field;
     };
     Model m = test::small_assembly();
     m.assembly.nodes[1].parent = 3; // a child before its parent
@@ -90,13 +108,7 @@ TEST_CASE("Assembly defects are refused with the field named", "[model][assembly
 TEST_CASE("Assembly JSON defects are refused with the field named", "[model][assembly]") {
     std::string text = to_json(test::small_assembly());
     const auto refused = [](const std::string& t, const std::string& field) {
-        try {
-            parse_model_json(t, "a.json");
-        } catch (const InputError& e) {
-            CHECK(e.field() == field);
-            return true;
-        }
-        return false;
+        return json_refused_field(t) == field;
     };
     const std::string placement = "\"placement\": [1";
     const size_t at = text.find(placement);
@@ -201,43 +213,25 @@ TEST_CASE("Layers round-trip through JSON, are checked by index, and follow each
         CHECK(layer_faces(flat, placed[k], true) == want);
     }
 
-    const auto refused = [](Model bad, const std::string& field) {
-        try {
-            validate_assembly(bad, "a.json");
-        } catch (const InputError& e) {
-            CHECK(e.field() == field);
-            return true;
-        }
-        return false;
-    };
     Model bad = m;
     bad.assembly.layers[1].faces = {1, 2};
-    CHECK(refused(bad, "assembly.layers[1].faces[1]"));
+    CHECK(refused_field(bad) == "assembly.layers[1].faces[1]");
     bad = m;
     bad.assembly.layers[0].parts = {-1};
-    CHECK(refused(bad, "assembly.layers[0].parts[0]"));
+    CHECK(refused_field(bad) == "assembly.layers[0].parts[0]");
     bad = m;
     bad.assembly.layers[2].solids = {1};
-    CHECK(refused(bad, "assembly.layers[2].solids[0]"));
+    CHECK(refused_field(bad) == "assembly.layers[2].solids[0]");
     // And in JSON, before the B-rep is known: a negative index, a wrong type.
     const std::string text = to_json(m);
     const std::string vis = "\"visible\": false";
     const size_t at = text.find(vis);
     REQUIRE(at != std::string::npos);
-    const auto json_refused = [](const std::string& t, const std::string& field) {
-        try {
-            parse_model_json(t, "a.json");
-        } catch (const InputError& e) {
-            CHECK(e.field() == field);
-            return true;
-        }
-        return false;
-    };
-    CHECK(json_refused(text.substr(0, at) + "\"visible\": 0" + text.substr(at + vis.size()),
-                       "assembly.layers[1].visible"));
+    CHECK(json_refused_field(text.substr(0, at) + "\"visible\": 0" +
+                             text.substr(at + vis.size())) == "assembly.layers[1].visible");
     const std::string faces = "\"faces\": [1]";
     const size_t f = text.rfind(faces); // the last layer's
     REQUIRE(f != std::string::npos);
-    CHECK(json_refused(text.substr(0, f) + "\"faces\": [-1]" + text.substr(f + faces.size()),
-                       "assembly.layers[1].faces[0]"));
+    CHECK(json_refused_field(text.substr(0, f) + "\"faces\": [-1]" +
+                             text.substr(f + faces.size())) == "assembly.layers[1].faces[0]");
 }

@@ -4,25 +4,20 @@
 // and the glTF's scene extras name the layers.
 #include "test_util.h"
 
+#include <seamless/base/files/input_file.h>
 #include <seamless/mesh/io/mesh_io.h>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 
 using namespace seamless;
 
 namespace {
 
 std::string read_text(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return read_input_file(p, std::uintmax_t(1) << 30, "test");
 }
 
 const std::filesystem::path kAs1 = test::model_path("cad/occt_as1-oc-214-mat.stp");
