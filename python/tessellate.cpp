@@ -6,7 +6,7 @@
 #include "options.h"
 
 #include <seamless/mesh/io/placed_mesh.h>
-#include <seamless/mesh/io/placed_stats_json.h>
+#include <seamless/mesh/placed_stats_json.h>
 #include <seamless/tessellate/tessellation.h>
 
 #include <pybind11/stl.h>

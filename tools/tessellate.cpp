@@ -14,7 +14,7 @@
 #include <seamless/mesh/io/mesh_formats.h>
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/mesh/io/placed_mesh.h>
-#include <seamless/mesh/io/placed_stats_json.h>
+#include <seamless/mesh/placed_stats_json.h>
 #include <seamless/model/length_unit.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>

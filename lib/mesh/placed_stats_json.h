@@ -2,7 +2,8 @@
 // The statistics JSON of `seamless tessellate --stats` and the Python
 // module's Mesh.stats (docs/formats.md, "Statistics JSON"): the
 // tessellation's figures (tessellation_stats_json.h) with those of the
-// model as placed (placed_mesh.h, placed_counts).
+// model as placed (io/placed_mesh.h, placed_counts). Outside io/: the fuzz
+// harnesses' readers link io/ without the tessellation.
 #pragma once
 
 #include <seamless/base/triangle_mesh.h>

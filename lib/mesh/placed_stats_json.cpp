@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/mesh/io/placed_mesh.h>
-#include <seamless/mesh/io/placed_stats_json.h>
+#include <seamless/mesh/placed_stats_json.h>
 
 #include <nlohmann/json.hpp>
 
