@@ -5,9 +5,9 @@
 #include "model_binding.h"
 #include "options.h"
 
+#include <seamless/mesh/io/placed_mesh.h>
+#include <seamless/mesh/placed_stats_json.h>
 #include <seamless/tessellate/tessellation.h>
-
-#include <seamless/tessellate/tessellation_stats_json.h>
 
 #include <pybind11/stl.h>
 
@@ -121,9 +121,11 @@ std::shared_ptr<Mesh> run(py::object model_or_path, const TessellateArgs& args) 
     {
         const py::gil_scoped_release release;
         Tessellation t = tessellate(*model, opt);
-        out->stats = tessellation_stats_json(t.stats, {model->source, "", args.angle.value_or(0)});
+        out->stats =
+            placed_stats_json(t.stats, {model->source, "", args.angle.value_or(0)}, t.mesh, *model);
         out->mesh = std::move(t.mesh);
-        out->face_id = brep_face_ids(*model, out->mesh);
+        // Each triangle's B-rep face; none without a B-rep.
+        if (!model->brep.empty()) out->face_id = triangle_faces(out->mesh, *model);
     }
     callback.rethrow();
     return out;

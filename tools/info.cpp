@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -124,6 +126,48 @@ void print_assembly(const Assembly& a) {
     }
 }
 
+nlohmann::json layers_json(const std::vector<AssemblyLayer>& layers) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const AssemblyLayer& l : layers)
+        out.push_back({{"name", l.name},
+                       {"visible", l.visible},
+                       {"parts", l.parts},
+                       {"solids", l.solids},
+                       {"faces", l.faces}});
+    return out;
+}
+
+// "3 faces (#12, #13, #14)": the count and the first few names.
+std::string named_items(const std::vector<int>& items, const char* one, const char* many,
+                        const std::function<std::string(int)>& name) {
+    std::string s = plural(static_cast<int>(items.size()), one, many) + " (";
+    const size_t shown = std::min<size_t>(items.size(), 5);
+    for (size_t k = 0; k < shown; ++k) s += (k ? ", " : "") + name(items[k]);
+    if (items.size() > shown) s += ", ... " + std::to_string(items.size() - shown) + " more";
+    return s + ")";
+}
+
+// One line per layer: what it holds, by name.
+void print_layers(const Model& m) {
+    const std::vector<AssemblyLayer>& layers = m.assembly.layers;
+    std::cout << plural(static_cast<int>(layers.size()), "layer", "layers") << ":\n";
+    for (const AssemblyLayer& l : layers) {
+        std::vector<std::string> what;
+        if (!l.parts.empty())
+            what.push_back(named_items(l.parts, "part", "parts",
+                                       [&](int k) { return m.assembly.parts[k].name; }));
+        if (!l.solids.empty())
+            what.push_back(named_items(l.solids, "solid", "solids",
+                                       [&](int k) { return m.brep.solids[k].name; }));
+        if (!l.faces.empty())
+            what.push_back(
+                named_items(l.faces, "face", "faces", [&](int k) { return m.brep.faces[k].name; }));
+        std::cout << "  " << l.name << (l.visible ? "" : " (hidden)") << ": ";
+        for (size_t k = 0; k < what.size(); ++k) std::cout << (k ? ", " : "") << what[k];
+        std::cout << (what.empty() ? "no parts, solids or faces\n" : "\n");
+    }
+}
+
 } // namespace
 
 void add_info(CLI::App& app, Action& action) {
@@ -196,6 +240,7 @@ void add_info(CLI::App& app, Action& action) {
                 js["d_max"] = dmax;
                 if (!m.brep.empty()) js["brep"] = brep_json(m.brep);
                 if (tree.assembly.has_tree()) js["assembly"] = assembly_json(tree.assembly);
+                if (!tree.assembly.layers.empty()) js["layers"] = layers_json(tree.assembly.layers);
                 js["warnings"] = m.warnings;
                 std::cout << js.dump(2) << "\n";
             } else {
@@ -208,6 +253,7 @@ void add_info(CLI::App& app, Action& action) {
                           << "d_max: " << dmax << "\n";
                 if (!m.brep.empty()) print_brep(m.brep);
                 if (tree.assembly.has_tree()) print_assembly(tree.assembly);
+                if (!tree.assembly.layers.empty()) print_layers(tree);
             }
             return 0;
         };

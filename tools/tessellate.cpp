@@ -14,10 +14,10 @@
 #include <seamless/mesh/io/mesh_formats.h>
 #include <seamless/mesh/io/mesh_io.h>
 #include <seamless/mesh/io/placed_mesh.h>
+#include <seamless/mesh/placed_stats_json.h>
 #include <seamless/model/length_unit.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
-#include <seamless/tessellate/tessellation_stats_json.h>
 
 #include <cmath>
 #include <filesystem>
@@ -194,25 +194,21 @@ int run_tessellate(const TessellateArgs& args) {
     const bool is_gltf = format == MeshFormat::gltf || format == MeshFormat::glb;
     if (is_gltf && args.units == "metres")
         if (const double unit = file_length_unit(args.model); unit > 0) gltf.scale = unit;
-    int placed_triangles = t.mesh.triangle_count(), placed_vertices = t.mesh.vertex_count();
-    if (is_gltf && !args.flatten && !m.brep.empty() && (args.merge || !m.assembly.empty())) {
+    if (is_gltf && !args.flatten && !m.brep.empty() && (args.merge || !m.assembly.empty()))
         write_mesh_assembly(files.staging(0), t.mesh, m, gltf);
-    } else {
-        const TriangleMesh placed = placed_mesh(t.mesh, m);
-        write_mesh(files.staging(0), placed, gltf);
-        placed_triangles = placed.triangle_count();
-        placed_vertices = placed.vertex_count();
-    }
+    else
+        write_mesh(files.staging(0), placed_mesh(t.mesh, m), gltf);
     print_tessellation_summary(t.stats);
     if (gltf.scale != 1)
         std::cout << "coordinates scaled to metres: 1 file unit = " << gltf.scale << " m\n";
-    if (placed_triangles != t.mesh.triangle_count())
-        std::cout << "written with every instance placed: " << placed_triangles << " triangles, "
-                  << placed_vertices << " vertices\n";
+    if (const PlacedCounts placed = tree ? placed_counts(t.mesh, m) : PlacedCounts{}; tree)
+        std::cout << "assembly placed (instances: " << instance_count(m.assembly)
+                  << ", parts: " << m.assembly.parts.size() << "): " << placed.triangles
+                  << " triangles, " << placed.vertices << " vertices\n";
     if (!args.stats.empty())
-        write_text_atomically(files.staging(1),
-                              tessellation_stats_json(t.stats, {args.model, args.out, args.angle}) +
-                                  "\n");
+        write_text_atomically(
+            files.staging(1),
+            placed_stats_json(t.stats, {args.model, args.out, args.angle}, t.mesh, m) + "\n");
     files.commit(); // both outputs, or neither
     return 0;
 }

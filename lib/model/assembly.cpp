@@ -23,6 +23,15 @@ std::vector<PartRange> part_ranges(const Assembly& a) {
     return out;
 }
 
+std::vector<int> face_parts(const Assembly& a, size_t faces) {
+    std::vector<int> out(faces, -1);
+    const std::vector<PartRange> ranges = part_ranges(a);
+    for (size_t p = 0; p < ranges.size(); ++p)
+        for (int f = 0; f < ranges[p].face_count; ++f)
+            out[ranges[p].first_face + f] = static_cast<int>(p);
+    return out;
+}
+
 int instance_count(const Assembly& a) {
     int n = 0;
     for (const AssemblyNode& node : a.nodes) n += node.part >= 0;
@@ -160,6 +169,24 @@ void check_parts(const Model& m, const std::string& file) {
     for (size_t p = 0; p < ranges.size(); ++p) check_part_items(m, file, p, ranges[p]);
 }
 
+// Each layer's parts, solids and faces in range.
+void check_layers(const Model& m, const std::string& file) {
+    const Assembly& a = m.assembly;
+    for (size_t k = 0; k < a.layers.size(); ++k) {
+        const AssemblyLayer& layer = a.layers[k];
+        const std::string f = field("layers", k);
+        for (size_t i = 0; i < layer.parts.size(); ++i)
+            check_index(file, f + ".parts[" + std::to_string(i) + "]", layer.parts[i], 0,
+                        a.parts.size(), "parts");
+        for (size_t i = 0; i < layer.solids.size(); ++i)
+            check_index(file, f + ".solids[" + std::to_string(i) + "]", layer.solids[i], 0,
+                        m.brep.solids.size(), "brep.solids");
+        for (size_t i = 0; i < layer.faces.size(); ++i)
+            check_index(file, f + ".faces[" + std::to_string(i) + "]", layer.faces[i], 0,
+                        m.brep.faces.size(), "brep.faces");
+    }
+}
+
 } // namespace
 
 void validate_assembly(const Model& m, const std::string& file) {
@@ -180,6 +207,7 @@ void validate_assembly(const Model& m, const std::string& file) {
     check_colour_list(file, "solid_colours", a.solid_colours, m.brep.solids.size(),
                       a.colours.size());
     check_colour_list(file, "face_colours", a.face_colours, m.brep.faces.size(), a.colours.size());
+    check_layers(m, file);
 }
 
 } // namespace seamless

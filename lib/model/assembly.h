@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // What a CAD file says about itself beyond its geometry: the assembly tree
 // (products placed by instances, a part used N times being one part placed
-// N times), the names of parts and instances, and the colours of parts,
-// solids and faces (STEP's styled items, IGES's colour entities, as
-// OpenCASCADE's XCAF reads them). Flat arrays of indices, like the B-rep.
+// N times), the names of parts and instances, the colours of parts, solids
+// and faces (STEP's styled items, IGES's colour entities) and the layers
+// they are on (STEP's PRESENTATION_LAYER_ASSIGNMENT, IGES's levels), as
+// OpenCASCADE's XCAF reads them. Flat arrays of indices, like the B-rep.
 //
 // A model with an assembly holds each part's geometry once, in the part's
 // own coordinates: its faces, shells and solids are consecutive ranges of
@@ -43,6 +44,19 @@ struct AssemblyNode {
     int part = -1;       // index into Assembly::parts; -1: an assembly
 };
 
+// A layer: a name and what the file assigns to it. A part stands for all
+// its instances, a solid for its faces; `faces` holds only faces outside the
+// listed solids. Items a mesh does not keep (curves, points) are not listed:
+// a layer may list nothing.
+struct AssemblyLayer {
+    std::string name;
+    bool visible = true;     // false: the file hides it (STEP's INVISIBILITY)
+    std::vector<int> parts;  // indices into Assembly::parts
+    std::vector<int> solids; // B-rep solids
+    std::vector<int> faces;  // B-rep faces
+    bool operator==(const AssemblyLayer&) const = default;
+};
+
 struct Assembly {
     std::vector<AssemblyPart> parts; // empty: the B-rep is the model as placed
     std::vector<AssemblyNode> nodes; // parents before their children
@@ -50,10 +64,11 @@ struct Assembly {
     // Empty, or one colour index (-1: none) per B-rep solid and face: a
     // face's colour is its own, else its solid's, else its part's.
     std::vector<int> solid_colours, face_colours;
+    std::vector<AssemblyLayer> layers; // in the file's order
 
     bool empty() const {
         return parts.empty() && nodes.empty() && colours.empty() && solid_colours.empty() &&
-               face_colours.empty();
+               face_colours.empty() && layers.empty();
     }
     bool has_tree() const { return !parts.empty(); }
 };
@@ -65,6 +80,10 @@ struct PartRange {
     int first_solid = 0, solid_count = 0;
 };
 std::vector<PartRange> part_ranges(const Assembly& a);
+
+// Each B-rep face's part (index into a.parts), -1 for none; one per face of
+// a model whose B-rep has `faces` faces.
+std::vector<int> face_parts(const Assembly& a, size_t faces);
 
 // The number of nodes that place a part.
 int instance_count(const Assembly& a);
@@ -83,8 +102,20 @@ std::vector<int> face_colours(const Model& m);
 // each part's shells using its own faces and its solids its own shells,
 // parents before children, indices in range, placements finite, within
 // kMaxCoordinate and invertible, colours in [0, 1]. Messages name the
-// field: "assembly.nodes[3].placement[5]".
+// field: "assembly.nodes[3].placement[5]". Layers' indices are checked
+// against the parts and the B-rep's solids and faces.
 void validate_assembly(const Model& m, const std::string& file);
+
+// The B-rep faces `layer` of m covers, ascending: its solids' faces and its
+// faces, and with `with_parts` its parts' faces too.
+std::vector<int> layer_faces(const Model& m, const AssemblyLayer& layer, bool with_parts);
+
+// The layers of a flattened model (flatten_assembly): m's layers with each
+// part, solid and face listed once per copy, copies in the order of the
+// nodes placing them; `first_face[k]`, `first_solid[k]`: where node k's copy
+// starts in the flattened B-rep (-1 for a node placing no part).
+std::vector<AssemblyLayer> placed_layers(const Model& m, const std::vector<int>& first_face,
+                                         const std::vector<int>& first_solid);
 
 // "#55", then "#55.2", "#55.3" ...: the names the file reader gives the
 // copies of an instanced face (read_step_iges.cpp, face_names), and
@@ -103,8 +134,9 @@ class CopyNames {
 // The model with every instance placed: each part's faces (and their
 // surfaces, edges, curves, vertices) copied once per instance, mapped to
 // world coordinates, names made unique as the file reader makes them ("#55",
-// "#55.2", ...), the face colours resolved per copy. A model without a tree
-// is returned as it is.
+// "#55.2", ...), the face colours resolved per copy, the layers' parts,
+// solids and faces listed per copy (a part as its copies' solids and the
+// faces outside them). A model without a tree is returned as it is.
 Model flatten_assembly(const Model& m);
 
 } // namespace seamless

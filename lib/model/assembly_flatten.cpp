@@ -122,6 +122,8 @@ Model flatten_assembly(const Model& m) {
     bool coloured = false;
     for (int c : colours) coloured = coloured || c >= 0;
     CopyNames face_names, solid_names;
+    // Where each node's copy starts, for the layers.
+    std::vector<int> first_face(m.assembly.nodes.size(), -1), first_solid = first_face;
     for (size_t n = 0; n < m.assembly.nodes.size(); ++n) {
         const int p = m.assembly.nodes[n].part;
         if (p < 0) continue;
@@ -129,6 +131,8 @@ Model flatten_assembly(const Model& m) {
         InstanceCopier copy(m, out, world[n], face_names);
         const int f0 = static_cast<int>(out.brep.faces.size());
         const int s0 = static_cast<int>(out.brep.shells.size());
+        first_face[n] = f0;
+        first_solid[n] = static_cast<int>(out.brep.solids.size());
         for (int f = r.first_face; f < r.first_face + r.face_count; ++f) {
             copy.face(f);
             if (coloured) out.assembly.face_colours.push_back(colours[f]);
@@ -149,6 +153,7 @@ Model flatten_assembly(const Model& m) {
     if (out.surfaces.empty())
         throw InputError(m.source, "assembly.nodes", "no node places a part: nothing to show");
     if (coloured) out.assembly.colours = m.assembly.colours;
+    out.assembly.layers = placed_layers(m, first_face, first_solid);
     return out;
 }
 

@@ -72,16 +72,33 @@ Rgba read_colour(const JsonFields& r, const Json& js, const std::string& f) {
     return {c(0), c(1), c(2), c(3)};
 }
 
-std::vector<int> read_colour_indices(const JsonFields& r, const Json& obj, const char* key,
-                                     long long n) {
-    const std::string f = member_field("assembly", key);
-    const Json& j = list_or_empty(r, obj, "assembly", key, n);
+// A list of indices in lo..n-1 (colour indices: -1 for none), absent: empty;
+// validate_assembly checks them against their lists.
+std::vector<int> read_indices(const JsonFields& r, const Json& obj, const std::string& parent,
+                              const char* key, long long n, int lo) {
+    const std::string f = member_field(parent, key);
+    const Json& j = list_or_empty(r, obj, parent, key, n);
     std::vector<int> out;
     out.reserve(j.size());
     for (size_t k = 0; k < j.size(); ++k)
         out.push_back(static_cast<int>(
-            r.integer(j[k], element_field(f, k), -1, std::min<long long>(n, INT_MAX) - 1)));
+            r.integer(j[k], element_field(f, k), lo, std::min<long long>(n, INT_MAX) - 1)));
     return out;
+}
+
+AssemblyLayer read_layer(const JsonFields& r, const Json& js, const std::string& f, long long n) {
+    r.object(js, f);
+    AssemblyLayer layer;
+    layer.name = r.string(r.member(js, "name", f + ".name"), f + ".name");
+    if (const Json* v = JsonFields::find(js, "visible")) {
+        if (!v->is_boolean())
+            r.fail(f + ".visible", "expected true or false, got " + JsonFields::type_name(*v));
+        layer.visible = v->get<bool>();
+    }
+    layer.parts = read_indices(r, js, f, "parts", n, 0);
+    layer.solids = read_indices(r, js, f, "solids", n, 0);
+    layer.faces = read_indices(r, js, f, "faces", n, 0);
+    return layer;
 }
 
 void write_name(std::ostream& os, const std::string& name) {
@@ -98,8 +115,25 @@ void write_index(std::ostream& os, const char* key, int k) {
 }
 
 void write_indices(std::ostream& os, const char* key, const std::vector<int>& v) {
-    os << ",\n   \"" << key << "\": [";
-    for (size_t k = 0; k < v.size(); ++k) os << (k ? ", " : "") << v[k];
+    os << ",\n   \"" << key << "\": ";
+    write_json_ints(os, v);
+}
+
+void write_layers(std::ostream& os, const std::vector<AssemblyLayer>& layers) {
+    os << ",\n  \"layers\": [";
+    for (size_t k = 0; k < layers.size(); ++k) {
+        const AssemblyLayer& l = layers[k];
+        os << (k ? ",\n   " : "\n   ");
+        write_name(os, l.name);
+        os << ", \"visible\": " << (l.visible ? "true" : "false");
+        for (const auto& [key, list] :
+             {std::pair{"parts", &l.parts}, std::pair{"solids", &l.solids},
+              std::pair{"faces", &l.faces}}) {
+            os << ", \"" << key << "\": ";
+            write_json_ints(os, *list);
+        }
+        os << '}';
+    }
     os << ']';
 }
 
@@ -119,8 +153,11 @@ void read_assembly_json(const JsonFields& r, const Json& j, const ModelLimits& l
     const Json& colours = list_or_empty(r, j, f, "colours", n);
     for (size_t k = 0; k < colours.size(); ++k)
         a.colours.push_back(read_colour(r, colours[k], element_field(f + ".colours", k)));
-    a.solid_colours = read_colour_indices(r, j, "solid_colours", n);
-    a.face_colours = read_colour_indices(r, j, "face_colours", n);
+    a.solid_colours = read_indices(r, j, f, "solid_colours", n, -1);
+    a.face_colours = read_indices(r, j, f, "face_colours", n, -1);
+    const Json& layers = list_or_empty(r, j, f, "layers", n);
+    for (size_t k = 0; k < layers.size(); ++k)
+        a.layers.push_back(read_layer(r, layers[k], element_field(f + ".layers", k), n));
 }
 
 void write_assembly_json(std::ostream& os, const Assembly& a) {
@@ -164,6 +201,7 @@ void write_assembly_json(std::ostream& os, const Assembly& a) {
     os << ']';
     if (!a.solid_colours.empty()) write_indices(os, "solid_colours", a.solid_colours);
     if (!a.face_colours.empty()) write_indices(os, "face_colours", a.face_colours);
+    if (!a.layers.empty()) write_layers(os, a.layers);
     os << '}';
 }
 

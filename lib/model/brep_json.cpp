@@ -262,12 +262,6 @@ void write_face(std::ostream& os, const BRepFace& f) {
     os << "]}";
 }
 
-void write_indices(std::ostream& os, const std::vector<int>& v) {
-    os << '[';
-    for (size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
-    os << ']';
-}
-
 // "key": [ one element a line ], closed by `tail`.
 template <class T, class Write>
 void write_list(std::ostream& os, const char* key, const std::vector<T>& v, const char* tail,
@@ -299,12 +293,12 @@ void write_brep_json(std::ostream& os, const BRep& b) {
     write_list(os, "faces", b.faces, ",\n", [&](const BRepFace& f) { write_face(os, f); });
     write_list(os, "shells", b.shells, ",\n", [&](const BRepShell& s) {
         os << "{\"faces\": ";
-        write_indices(os, s.faces);
+        write_json_ints(os, s.faces);
         os << ", \"closed\": " << boolean(s.closed) << '}';
     });
     write_list(os, "solids", b.solids, "\n", [&](const BRepSolid& s) {
         os << "{\"shells\": ";
-        write_indices(os, s.shells);
+        write_json_ints(os, s.shells);
         os << ", \"name\": ";
         write_json_string(os, s.name);
         os << '}';

@@ -107,6 +107,12 @@ void write_json_string(std::ostream& os, const std::string& s) {
     os << Json(s).dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
+void write_json_ints(std::ostream& os, const std::vector<int>& v) {
+    os << '[';
+    for (size_t i = 0; i < v.size(); ++i) os << (i ? ", " : "") << v[i];
+    os << ']';
+}
+
 void JsonFields::fail(const std::string& field, const std::string& message) const {
     throw InputError(file_, field, message);
 }

@@ -33,9 +33,10 @@ std::string element_field(const std::string& array, std::size_t k);
 
 // The writers' side (model_json.cpp, brep_json.cpp): x with 17 significant
 // digits, which reads back bit-identical (-0 as "-0.0": "-0" reads back +0);
-// a string quoted and escaped.
+// a string quoted and escaped; a list of indices on one line.
 void write_json_number(std::ostream& os, double x);
 void write_json_string(std::ostream& os, const std::string& s);
+void write_json_ints(std::ostream& os, const std::vector<int>& v);
 
 // Reads the fields of one file's document; every defect throws an InputError
 // naming the file and the field.

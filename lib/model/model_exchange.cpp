@@ -16,16 +16,16 @@
 namespace seamless {
 namespace {
 
-constexpr std::string_view kTag = "seamless-model-exchange 1\n";
+constexpr std::string_view kTag = "seamless-model-exchange 2\n";
 
 // A member added to one of these types must be written and read below; the
 // sizes (x86-64, libstdc++) stop the build until it is.
-static_assert(sizeof(Model) == 392 && sizeof(BRep) == 168 && sizeof(Assembly) == 120 &&
+static_assert(sizeof(Model) == 416 && sizeof(BRep) == 168 && sizeof(Assembly) == 144 &&
                   sizeof(AssemblyPart) == 48 && sizeof(AssemblyNode) == 144 && sizeof(Rgba) == 32 &&
-                  sizeof(SurfaceOrigin) == 80 && sizeof(BSplineSurface) == 144 &&
-                  sizeof(BSplineCurve) == 80 && sizeof(BRepFace) == 64 && sizeof(BRepEdge) == 40 &&
-                  sizeof(BRepSolid) == 56 && sizeof(BRepShell) == 32 && sizeof(BRepCoedge) == 12 &&
-                  sizeof(BRepVertex) == 32,
+                  sizeof(AssemblyLayer) == 112 && sizeof(SurfaceOrigin) == 80 &&
+                  sizeof(BSplineSurface) == 144 && sizeof(BSplineCurve) == 80 &&
+                  sizeof(BRepFace) == 64 && sizeof(BRepEdge) == 40 && sizeof(BRepSolid) == 56 &&
+                  sizeof(BRepShell) == 32 && sizeof(BRepCoedge) == 12 && sizeof(BRepVertex) == 32,
               "a member was added to Model or its parts: write and read it in model_exchange.cpp");
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "points are written as their doubles");
@@ -95,6 +95,13 @@ void Writer::assembly(const Assembly& a) {
     list(a.colours, [&](const Rgba& c) { scalar(c.r), scalar(c.g), scalar(c.b), scalar(c.a); });
     ints(a.solid_colours);
     ints(a.face_colours);
+    list(a.layers, [&](const AssemblyLayer& l) {
+        string(l.name);
+        scalar<std::uint8_t>(l.visible);
+        ints(l.parts);
+        ints(l.solids);
+        ints(l.faces);
+    });
 }
 
 void Writer::brep(const BRep& b) {
@@ -361,6 +368,19 @@ void Reader::assembly(Assembly& a) {
                               std::pair{&a.face_colours, "assembly.face_colours"}}) {
         list->resize(items({nullptr, name}, 4));
         for (int& i : *list) i = integer({nullptr, name});
+    }
+    // A layer takes at least its name's length, its flag and 3 counts: 33 bytes.
+    a.layers.resize(items({nullptr, "assembly.layers"}, 33));
+    for (std::size_t k = 0; k < a.layers.size(); ++k) {
+        const Path f{nullptr, "assembly.layers", static_cast<long long>(k)};
+        AssemblyLayer& l = a.layers[k];
+        l.name = string({&f, "name"});
+        l.visible = flag({&f, "visible"});
+        for (auto [list, name] : {std::pair{&l.parts, "parts"}, std::pair{&l.solids, "solids"},
+                                  std::pair{&l.faces, "faces"}}) {
+            list->resize(items({&f, name}, 4));
+            for (int& i : *list) i = integer({&f, name});
+        }
     }
 }
 

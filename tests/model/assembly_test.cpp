@@ -10,11 +10,36 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
 
 using namespace seamless;
+
+namespace {
+
+// The field validate_assembly names for m ("" when it passes).
+std::string refused_field(const Model& m) {
+    try {
+        validate_assembly(m, "a.json");
+    } catch (const InputError& e) {
+        return e.field();
+    }
+    return "";
+}
+
+// The field the JSON reader names for text ("" when it reads).
+std::string json_refused_field(const std::string& text) {
+    try {
+        parse_model_json(text, "a.json");
+    } catch (const InputError& e) {
+        return e.field();
+    }
+    return "";
+}
+
+} // namespace
 
 TEST_CASE("Assemblies round-trip through version-2 JSON bit for bit", "[model][assembly]") {
     const Model m = test::small_assembly();
@@ -48,14 +73,8 @@ TEST_CASE("A model without structure is written as before: no assembly member",
 }
 
 TEST_CASE("Assembly defects are refused with the field named", "[model][assembly]") {
-    const auto refused = [](Model m, const std::string& field) {
-        try {
-            validate_assembly(m, "a.json");
-        } catch (const InputError& e) {
-            CHECK(e.field() == field);
-            return true;
-        }
-        return false;
+    const auto refused = [](const Model& m, const std::string& field) {
+        return refused_field(m) == field;
     };
     Model m = test::small_assembly();
     m.assembly.nodes[1].parent = 3; // a child before its parent
@@ -89,13 +108,7 @@ TEST_CASE("Assembly defects are refused with the field named", "[model][assembly
 TEST_CASE("Assembly JSON defects are refused with the field named", "[model][assembly]") {
     std::string text = to_json(test::small_assembly());
     const auto refused = [](const std::string& t, const std::string& field) {
-        try {
-            parse_model_json(t, "a.json");
-        } catch (const InputError& e) {
-            CHECK(e.field() == field);
-            return true;
-        }
-        return false;
+        return json_refused_field(t) == field;
     };
     const std::string placement = "\"placement\": [1";
     const size_t at = text.find(placement);
@@ -152,4 +165,73 @@ TEST_CASE("load_model flattens an assembly unless asked to keep it", "[model][as
     const Model tree = load_model(file, keep);
     CHECK(tree.brep.faces.size() == 2);
     CHECK(tree.assembly.nodes.size() == 6);
+}
+
+namespace {
+
+// small_assembly with the tube a solid, on a layer of its own.
+Model with_solid_layer() {
+    Model m = test::small_assembly();
+    m.brep.solids.push_back({{1}, "tube solid"});
+    m.assembly.parts[1].solid_count = 1;
+    m.assembly.layers.push_back({"solids", true, {}, {0}, {}});
+    return m;
+}
+
+} // namespace
+
+TEST_CASE("Layers round-trip through JSON, are checked by index, and follow each copy",
+          "[model][assembly]") {
+    const Model m = with_solid_layer();
+    validate_assembly(m, "a.json");
+    const Model back = parse_model_json(to_json(m), "a.json");
+    CHECK(back.assembly.layers == m.assembly.layers);
+    CHECK_FALSE(back.assembly.layers[1].visible);
+    CHECK(layer_faces(m, m.assembly.layers[2], false) == std::vector<int>{1});
+    CHECK(layer_faces(m, m.assembly.layers[0], false).empty()); // a part only
+    CHECK(layer_faces(m, m.assembly.layers[0], true) == std::vector<int>{0});
+
+    // Placed: the part's one copy, the tube's face and solid in each of its three.
+    const Model flat = flatten_assembly(m);
+    const std::vector<AssemblyLayer>& placed = flat.assembly.layers;
+    REQUIRE(placed.size() == 3);
+    CHECK(placed[0].faces == std::vector<int>{0});
+    CHECK(placed[0].parts.empty());
+    CHECK(placed[1].faces == std::vector<int>{1, 2, 3});
+    CHECK(placed[2].solids == std::vector<int>{0, 1, 2});
+    CHECK(placed[2].faces.empty());
+    validate_assembly(flat, "flat");
+    for (size_t k = 0; k < placed.size(); ++k) {
+        CHECK(placed[k].name == m.assembly.layers[k].name);
+        CHECK(placed[k].visible == m.assembly.layers[k].visible);
+        // Every copy of a face the layer covers, and nothing else.
+        const std::vector<int> covered = layer_faces(m, m.assembly.layers[k], true);
+        const std::vector<int> sources = {0, 1, 1, 1}; // the plate, then the tube thrice
+        std::vector<int> want;
+        for (size_t f = 0; f < sources.size(); ++f)
+            if (std::count(covered.begin(), covered.end(), sources[f])) want.push_back(int(f));
+        CHECK(layer_faces(flat, placed[k], true) == want);
+    }
+
+    Model bad = m;
+    bad.assembly.layers[1].faces = {1, 2};
+    CHECK(refused_field(bad) == "assembly.layers[1].faces[1]");
+    bad = m;
+    bad.assembly.layers[0].parts = {-1};
+    CHECK(refused_field(bad) == "assembly.layers[0].parts[0]");
+    bad = m;
+    bad.assembly.layers[2].solids = {1};
+    CHECK(refused_field(bad) == "assembly.layers[2].solids[0]");
+    // And in JSON, before the B-rep is known: a negative index, a wrong type.
+    const std::string text = to_json(m);
+    const std::string vis = "\"visible\": false";
+    const size_t at = text.find(vis);
+    REQUIRE(at != std::string::npos);
+    CHECK(json_refused_field(text.substr(0, at) + "\"visible\": 0" +
+                             text.substr(at + vis.size())) == "assembly.layers[1].visible");
+    const std::string faces = "\"faces\": [1]";
+    const size_t f = text.rfind(faces); // the last layer's
+    REQUIRE(f != std::string::npos);
+    CHECK(json_refused_field(text.substr(0, f) + "\"faces\": [-1]" +
+                             text.substr(f + faces.size())) == "assembly.layers[1].faces[0]");
 }

@@ -144,7 +144,8 @@ inline AffineMap mirror_x() {
 
 // Two parts, "plate" (the plate with a hole, red) and "tube" (a cylinder,
 // its face green), placed four times: the plate once at the root, the tube
-// twice beside it (once mirrored) and once in a sub-assembly moved up.
+// twice beside it (once mirrored) and once in a sub-assembly moved up; the
+// plate on layer "plates", the tube's face on the hidden layer "tube face".
 inline Model small_assembly() {
     Model m = test::plate_with_hole();
     const Model tube = test::revolved(1);
@@ -160,6 +161,8 @@ inline Model small_assembly() {
                {"tube-2", 0, mirror_x(), 1},
                {"sub", 0, translation(0, 0, 5), -1},
                {"tube-3", 4, translation(0, 30, 0), 1}};
+    // A whole part on one layer, the tube's face on a hidden one.
+    a.layers = {{"plates", true, {0}, {}, {}}, {"tube face", false, {}, {}, {1}}};
     return m;
 }
 

@@ -3,13 +3,16 @@
 // every member of Model comes back bit for bit, and damaged answers are
 // refused with one line, never read out of bounds.
 #include "model/brep_test_models.h"
+#include "test_util.h"
 
 #include <seamless/base/error.h>
+#include <seamless/base/files/input_file.h>
 #include <seamless/model/model_exchange.h>
 
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <filesystem>
 
 using namespace seamless;
 
@@ -71,7 +74,7 @@ TEST_CASE("The exchange form carries every member of a model bit for bit", "[mod
     CHECK(r.brep.shells[0].closed);
 }
 
-TEST_CASE("The exchange form carries an assembly: parts, placed nodes and colours",
+TEST_CASE("The exchange form carries an assembly: parts, placed nodes, colours and layers",
           "[model][exchange]") {
     const Model m = test::small_assembly();
     REQUIRE(m.assembly.has_tree());
@@ -90,10 +93,16 @@ TEST_CASE("The exchange form carries an assembly: parts, placed nodes and colour
     CHECK(r.assembly.colours == m.assembly.colours);
     CHECK(r.assembly.face_colours == m.assembly.face_colours);
     CHECK(r.assembly.solid_colours == m.assembly.solid_colours);
-    // A node naming a part that is not there is refused by name.
+    REQUIRE(!m.assembly.layers.empty());
+    CHECK(r.assembly.layers == m.assembly.layers);
+    // A node naming a part that is not there is refused by name, and a layer's face.
     Model bad = m;
     bad.assembly.nodes.back().part = 99;
     CHECK_THAT(error_of(write_model_exchange(bad)), Catch::Contains("assembly.nodes["));
+    bad = m;
+    bad.assembly.layers.back().faces = {0, 5};
+    CHECK_THAT(error_of(write_model_exchange(bad)),
+               Catch::Contains("assembly.layers[1].faces[1]: index 5 out of range"));
 }
 
 TEST_CASE("Every truncation and every flipped byte of an answer is refused or read whole",
@@ -116,10 +125,19 @@ TEST_CASE("Every truncation and every flipped byte of an answer is refused or re
     CHECK_THAT(error_of(bytes + "x"), Catch::Contains("1 bytes after the model"));
 }
 
+TEST_CASE("Every truncation of an assembly's tail, its layers last, is refused",
+          "[model][exchange]") {
+    const std::string tree = write_model_exchange(test::small_assembly());
+    for (size_t n = tree.size() - 200; n < tree.size(); ++n) {
+        INFO(n);
+        CHECK_THAT(error_of(tree.substr(0, n)), Catch::StartsWith("x.step: exchange.assembly"));
+    }
+}
+
 TEST_CASE("Hostile counts in an answer are refused before anything is allocated",
           "[model][exchange]") {
     std::string bytes = write_model_exchange(full_model());
-    const std::string tag = "seamless-model-exchange 1\n";
+    const std::string tag = "seamless-model-exchange 2\n";
     // The source's length, then the surface count: 2^62 surfaces.
     const size_t count_at = tag.size() + 8 + std::strlen("part.step");
     const std::uint64_t huge = std::uint64_t(1) << 62;
@@ -130,4 +148,21 @@ TEST_CASE("Hostile counts in an answer are refused before anything is allocated"
     tight.max_brep_items = 2;
     CHECK_THAT(error_of(write_model_exchange(full_model()), tight),
                Catch::Contains("exchange.brep.vertices: 8 items exceed the limit of 2"));
+}
+
+TEST_CASE("fuzz_model_exchange's seeds are answers in this build's form, layers among them",
+          "[model][exchange]") {
+    const auto seeds = test::data_dir() / ".." / "tests" / "fuzz" / "corpus" / "model_exchange";
+    int read = 0, with_layers = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(seeds)) {
+        INFO(entry.path());
+        const std::string bytes =
+            read_input_file(entry.path(), std::uintmax_t(1) << 24, "fuzz seed");
+        const Model m = read_model_exchange(bytes, entry.path().string());
+        CHECK(write_model_exchange(m) == bytes);
+        ++read;
+        with_layers += !m.assembly.layers.empty();
+    }
+    CHECK(read > 0);
+    CHECK(with_layers > 0);
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A CAD assembly as glTF (gltf_io.h, write_gltf_assembly): the tree, one
 // mesh per part shared by its instances, or (--merge) every instance placed
-// in one mesh; one material per colour.
+// in one mesh; one material per colour; the layers as the scene's extras.
 #include <seamless/base/error.h>
 #include <seamless/mesh/io/gltf_io.h>
 #include <seamless/mesh/io/gltf_primitives.h>
@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 
 namespace seamless {
@@ -54,13 +55,9 @@ std::vector<ColourGroups> part_triangles(const TriangleMesh& mesh, const Model& 
     if (mesh.triangle_surface.size() != nf)
         throw InputError(name, "", "the mesh does not say which face each triangle is on");
     const std::vector<int> face_on = face_of_surface(model);
-    std::vector<int> part_of(model.brep.faces.size(), -1);
-    const std::vector<PartRange> ranges = part_ranges(model.assembly);
-    for (size_t p = 0; p < ranges.size(); ++p)
-        for (int f = 0; f < ranges[p].face_count; ++f)
-            part_of[ranges[p].first_face + f] = static_cast<int>(p);
+    const std::vector<int> part_of = face_parts(model.assembly, model.brep.faces.size());
     const std::vector<int> colours = face_colours(model);
-    std::vector<ColourGroups> out(ranges.size());
+    std::vector<ColourGroups> out(model.assembly.parts.size());
     face_of.assign(nf, -1);
     for (size_t t = 0; t < nf; ++t) {
         const int s = mesh.triangle_surface[t];
@@ -73,7 +70,7 @@ std::vector<ColourGroups> part_triangles(const TriangleMesh& mesh, const Model& 
     return out;
 }
 
-// A model with colours but no tree as one part placed once.
+// A model with colours or layers but no tree as one part placed once.
 Model one_part(const Model& m, const std::string& name) {
     Model one = m;
     AssemblyPart part;
@@ -108,29 +105,73 @@ tinygltf::Mesh grouped_mesh(tinygltf::Model& model, const TriangleMesh& mesh,
     return gmesh;
 }
 
+tinygltf::Value int_array(const std::vector<int>& v) {
+    tinygltf::Value::Array a;
+    for (int x : v) a.emplace_back(x);
+    return tinygltf::Value(std::move(a));
+}
+
+// The layers as the scene's extras (docs/formats.md, "Layers"): per layer
+// its name, visibility, the meshes of its parts (`meshes`) and the face ids
+// (as the primitives' extras give them) of the rest (`faces`; each absent
+// when empty: tinygltf writes an empty array as null). Nothing without layers.
+void add_layer_extras(tinygltf::Scene& scene, const std::vector<AssemblyLayer>& layers,
+                      const std::function<std::vector<int>(const AssemblyLayer&)>& meshes_of,
+                      const std::function<std::vector<int>(const AssemblyLayer&)>& faces_of) {
+    if (layers.empty()) return;
+    tinygltf::Value::Array table;
+    for (const AssemblyLayer& l : layers) {
+        tinygltf::Value::Object layer;
+        layer["name"] = tinygltf::Value(l.name);
+        layer["visible"] = tinygltf::Value(l.visible);
+        if (const std::vector<int> meshes = meshes_of(l); !meshes.empty())
+            layer["meshes"] = int_array(meshes);
+        if (const std::vector<int> faces = faces_of(l); !faces.empty())
+            layer["faces"] = int_array(faces);
+        table.emplace_back(std::move(layer));
+    }
+    tinygltf::Value::Object extras;
+    extras["layers"] = tinygltf::Value(std::move(table));
+    scene.extras = tinygltf::Value(std::move(extras));
+}
+
 void write_tree(const std::filesystem::path& path, const TriangleMesh& mesh, const Model& m,
                 bool binary, const std::string& name, double scale) {
     const Assembly& a = m.assembly;
     tinygltf::Model model = coloured_model(a);
     std::vector<int> face_of;
     const auto parts = part_triangles(mesh, m, name, face_of);
-    for (size_t p = 0; p < parts.size(); ++p)
+    // One mesh per part with triangles: glTF forbids a mesh without
+    // primitives, so a part without faces has none (mesh_of -1).
+    std::vector<int> mesh_of(parts.size(), -1);
+    for (size_t p = 0; p < parts.size(); ++p) {
+        if (parts[p].empty()) continue;
+        mesh_of[p] = static_cast<int>(model.meshes.size());
         model.meshes.push_back(
             grouped_mesh(model, mesh, parts[p], face_of, a.parts[p].name, scale));
+    }
     tinygltf::Scene scene;
     for (size_t k = 0; k < a.nodes.size(); ++k) {
         const AssemblyNode& n = a.nodes[k];
         tinygltf::Node node;
         node.name = n.name;
         node.matrix = node_matrix(n.placement, scale);
-        // A part without triangles (no faces) has an empty mesh, which glTF forbids.
-        if (n.part >= 0 && !model.meshes[n.part].primitives.empty()) node.mesh = n.part;
+        if (n.part >= 0) node.mesh = mesh_of[n.part];
         model.nodes.push_back(std::move(node));
         if (n.parent < 0)
             scene.nodes.push_back(static_cast<int>(k));
         else
             model.nodes[n.parent].children.push_back(static_cast<int>(k));
     }
+    add_layer_extras(
+        scene, a.layers,
+        [&](const AssemblyLayer& l) {
+            std::vector<int> meshes;
+            for (int p : l.parts)
+                if (mesh_of[p] >= 0) meshes.push_back(mesh_of[p]);
+            return meshes;
+        },
+        [&](const AssemblyLayer& l) { return layer_faces(m, l, false); });
     model.scenes.push_back(scene);
     finish_and_write(model, path, binary, name);
 }
@@ -158,6 +199,17 @@ void write_merged(const std::filesystem::path& path, const TriangleMesh& mesh, c
     model.nodes.push_back(std::move(node));
     tinygltf::Scene scene;
     scene.nodes.push_back(0);
+    // A layer's faces, placed: every copy of each face it covers.
+    add_layer_extras(
+        scene, m.assembly.layers, [](const AssemblyLayer&) { return std::vector<int>(); },
+        [&](const AssemblyLayer& l) {
+            std::vector<char> in(m.brep.faces.size(), 0);
+            for (int f : layer_faces(m, l, true)) in[f] = 1;
+            std::vector<int> faces;
+            for (size_t f = 0; f < sources.size(); ++f)
+                if (in[sources[f]]) faces.push_back(static_cast<int>(f));
+            return faces;
+        });
     model.scenes.push_back(scene);
     finish_and_write(model, path, binary, name);
 }

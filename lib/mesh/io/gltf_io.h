@@ -38,10 +38,12 @@ void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, boo
 // that places the part; one node per assembly node, named as it and placed
 // by its matrix; one material per colour (PBR metallic-roughness: the
 // colour, linearised, as baseColorFactor, its alpha blended); each
-// primitive's extras give its triangles' faces (indices into model's faces).
-// With options.merge, one mesh and node instead, its face ids those of
+// primitive's extras give its triangles' faces (indices into model's faces);
+// the scene's extras the layers (docs/formats.md, "Layers"). With
+// options.merge, one mesh and node instead, its face ids those of
 // flatten_assembly(model). Throws InputError naming `name` on failure. A
-// B-rep model with colours and no tree is written as one part placed once.
+// B-rep model with colours or layers and no tree is written as one part
+// placed once.
 void write_gltf_assembly(const std::filesystem::path& path, const TriangleMesh& mesh,
                          const Model& model, bool binary, const std::string& name,
                          const GltfWriteOptions& options = {});

@@ -66,13 +66,9 @@ std::string file_stem(const Model& m) {
 // A B-rep model without a tree: face ids from the surfaces, one part.
 TriangleMesh with_face_ids(const TriangleMesh& mesh, const Model& model) {
     TriangleMesh out = mesh;
-    const std::vector<int> face_on = face_of_surface(model);
     out.part_names = {file_stem(model)};
-    for (int s : mesh.triangle_surface) {
-        const int f = s >= 0 && s < static_cast<int>(face_on.size()) ? face_on[s] : -1;
-        out.triangle_face.push_back(f);
-        out.triangle_part.push_back(f >= 0 ? 0 : -1);
-    }
+    out.triangle_face = triangle_faces(mesh, model);
+    for (int f : out.triangle_face) out.triangle_part.push_back(f >= 0 ? 0 : -1);
     return out;
 }
 
@@ -116,6 +112,16 @@ std::vector<int> face_of_surface(const Model& model) {
     return face_on;
 }
 
+std::vector<int> triangle_faces(const TriangleMesh& mesh, const Model& model) {
+    if (mesh.triangle_surface.size() != mesh.triangles.size()) return {};
+    const std::vector<int> face_on = face_of_surface(model);
+    std::vector<int> out;
+    out.reserve(mesh.triangle_surface.size());
+    for (int s : mesh.triangle_surface)
+        out.push_back(s >= 0 && s < static_cast<int>(face_on.size()) ? face_on[s] : -1);
+    return out;
+}
+
 std::vector<int> placed_face_sources(const Model& model) {
     std::vector<int> sources;
     if (!model.assembly.has_tree()) {
@@ -128,6 +134,43 @@ std::vector<int> placed_face_sources(const Model& model) {
             for (int f = 0; f < ranges[n.part].face_count; ++f)
                 sources.push_back(ranges[n.part].first_face + f);
     return sources;
+}
+
+PlacedCounts placed_counts(const TriangleMesh& mesh, const Model& model) {
+    PlacedCounts out{mesh.triangle_count(), mesh.vertex_count(), {}};
+    if (model.brep.faces.empty() || mesh.triangle_surface.size() != mesh.triangles.size() ||
+        !model.assembly.has_tree())
+        return out;
+    const std::vector<PartRange> ranges = part_ranges(model.assembly);
+    const std::vector<int> part_of = face_parts(model.assembly, model.brep.faces.size());
+    out.parts.resize(ranges.size());
+    for (const AssemblyNode& n : model.assembly.nodes)
+        if (n.part >= 0) ++out.parts[n.part].instances;
+    // The triangles of each part, then those on no face (index parts.size()).
+    std::vector<std::vector<int>> on_part(ranges.size() + 1);
+    const std::vector<int> faces = triangle_faces(mesh, model);
+    for (size_t t = 0; t < faces.size(); ++t)
+        on_part[faces[t] >= 0 ? part_of[faces[t]] : ranges.size()].push_back(static_cast<int>(t));
+    // Each vertex counted once per part using it, as placed_mesh copies it.
+    std::vector<long long> triangles(on_part.size(), 0), vertices(on_part.size(), 0);
+    std::vector<int> counted_for(mesh.positions.size(), -1);
+    for (size_t p = 0; p < on_part.size(); ++p) {
+        triangles[p] = static_cast<long long>(on_part[p].size());
+        for (int t : on_part[p])
+            for (int v : mesh.triangles[t])
+                if (counted_for[v] != static_cast<int>(p))
+                    counted_for[v] = static_cast<int>(p), ++vertices[p];
+    }
+    out.triangles = triangles.back();
+    out.vertices = vertices.back();
+    for (size_t p = 0; p < ranges.size(); ++p) {
+        PlacedCounts::Part& part = out.parts[p];
+        part.triangles = triangles[p];
+        part.vertices = vertices[p];
+        out.triangles += part.instances * part.triangles;
+        out.vertices += part.instances * part.vertices;
+    }
+    return out;
 }
 
 TriangleMesh placed_mesh(const TriangleMesh& mesh, const Model& model) {

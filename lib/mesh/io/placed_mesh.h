@@ -18,10 +18,28 @@ namespace seamless {
 // faces lie on (a STEP/IGES B-rep has one surface per face).
 std::vector<int> face_of_surface(const Model& model);
 
+// Each triangle's face in `model`, by its surface (face_of_surface), -1
+// where that names no one face; empty when `mesh` does not give every
+// triangle's surface.
+std::vector<int> triangle_faces(const TriangleMesh& mesh, const Model& model);
+
 // Per face of flatten_assembly(model), in its order (node after node, each
 // part's faces in order), the face of `model` it copies; the identity for a
 // model without a tree.
 std::vector<int> placed_face_sources(const Model& model);
+
+// What placed_mesh(mesh, model) would hold, counted without placing: each
+// part's triangles and vertices times its instances, plus those on surfaces
+// no face lies on (once). A model without a tree: the mesh's own counts.
+struct PlacedCounts {
+    struct Part {
+        int instances = 0;
+        long long triangles = 0, vertices = 0; // of one instance
+    };
+    long long triangles = 0, vertices = 0;
+    std::vector<Part> parts; // one per model.assembly.parts; empty without a tree
+};
+PlacedCounts placed_counts(const TriangleMesh& mesh, const Model& model);
 
 // `mesh` (the tessellation of `model`) placed, with face ids. A model with a
 // tree: every part's triangles copied once per instance, in

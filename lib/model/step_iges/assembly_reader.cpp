@@ -2,6 +2,7 @@
 #include <seamless/model/step_iges/assembly_reader.h>
 
 #include <seamless/model/step_iges/brep_reader.h>
+#include <seamless/model/step_iges/cad_layers.h>
 
 #include <TopExp.hxx>
 
@@ -29,6 +30,9 @@ Model read_assembly(const TransferredFile& t, CadStructure structure, const std:
     m.source = file;
     UniqueAcrossParts face_names_all, solid_names_all;
     std::vector<int> colours;
+    // Each part's faces and solids in read_brep's order, for the layers.
+    std::vector<TopTools_IndexedMapOfShape> part_faces(structure.parts.size()),
+        part_solids(structure.parts.size());
     for (size_t k = 0; k < structure.parts.size(); ++k) {
         TransferredFile part = {t.readers, t.iges, structure.parts[k].shape, {}, t.transfer,
                                 t.model,   {}};
@@ -49,8 +53,14 @@ Model read_assembly(const TransferredFile& t, CadStructure structure, const std:
         m.warnings.insert(m.warnings.end(), pm.warnings.begin(), pm.warnings.end());
         const std::vector<int> c = part_face_colours(structure, k, part.faces);
         colours.insert(colours.end(), c.begin(), c.end());
+        part_faces[k] = part.faces;
+        TopExp::MapShapes(part.shape, TopAbs_SOLID, part_solids[k]);
+        // Sewn (read_brep made solids of its own): layers name its faces only.
+        if (part_solids[k].Extent() != p.solid_count) part_solids[k].Clear();
     }
+    std::vector<AssemblyLayer> layers = tree_layers(structure, part_faces, part_solids);
     m.assembly = std::move(structure.assembly);
+    m.assembly.layers = std::move(layers);
     for (int c : colours)
         if (c >= 0) {
             m.assembly.face_colours = std::move(colours);

@@ -3,8 +3,10 @@
 // components are instances (a location and a reference to the product's
 // label), a simple shape is a part, met once however often it is placed.
 // Colours follow STEP's styling as XCAF keeps it: a surface colour over a
-// generic one, a face's over its solid's over its part's.
+// generic one, a face's over its solid's over its part's. Layers: cad_layers.h.
 #include <seamless/model/step_iges/cad_structure.h>
+
+#include <seamless/model/step_iges/cad_layers.h>
 
 #include <Quantity_ColorRGBA.hxx>
 #include <TDF_LabelSequence.hxx>
@@ -25,7 +27,6 @@
 #include <map>
 
 namespace seamless::step_iges {
-namespace {
 
 std::string utf8(const TCollection_ExtendedString& s) {
     std::string out(static_cast<size_t>(s.LengthOfCString()) + 1, '\0');
@@ -34,6 +35,8 @@ std::string utf8(const TCollection_ExtendedString& s) {
     out.resize(std::strlen(out.c_str()));
     return out;
 }
+
+namespace {
 
 std::string label_name(const TDF_Label& label) {
     Handle(TDataStd_Name) name;
@@ -57,7 +60,7 @@ AffineMap placement(const TopLoc_Location& loc) {
 class StructureReader {
   public:
     explicit StructureReader(const Handle(TDocStd_Document) & doc)
-        : shapes_(XCAFDoc_DocumentTool::ShapeTool(doc->Main())),
+        : doc_(doc), shapes_(XCAFDoc_DocumentTool::ShapeTool(doc->Main())),
           colours_(XCAFDoc_DocumentTool::ColorTool(doc->Main())) {}
 
     CadStructure read() {
@@ -65,6 +68,10 @@ class StructureReader {
         shapes_->GetFreeShapes(roots);
         for (int k = 1; k <= roots.Length(); ++k)
             visit(roots.Value(k), -1, TopLoc_Location(), label_name(roots.Value(k)));
+        s_.layers = read_layers(doc_, [&](const TDF_Label& label) {
+            const auto it = part_of_.find(entry(label));
+            return it == part_of_.end() ? -1 : static_cast<int>(it->second);
+        });
         return std::move(s_);
     }
 
@@ -135,6 +142,7 @@ class StructureReader {
         return static_cast<int>(all.size()) - 1;
     }
 
+    Handle(TDocStd_Document) doc_;
     Handle(XCAFDoc_ShapeTool) shapes_;
     Handle(XCAFDoc_ColorTool) colours_;
     CadStructure s_;

@@ -2,13 +2,14 @@
 // The structure of a transferred file's XCAF document (file_transfer.h,
 // transfer_document): the tree of products and instances with their names
 // and placements, each distinct part's shape in its own coordinates, and
-// the colours of parts and of their solids and faces. Internal to the
+// the colours of parts and of their solids and faces, the layers. Internal to the
 // STEP/IGES module: it exposes OpenCASCADE's types.
 #pragma once
 
 #include <seamless/model/assembly.h>
 #include <seamless/model/step_iges/file_transfer.h>
 
+#include <TCollection_ExtendedString.hxx>
 #include <TopoDS_Shape.hxx>
 
 #include <string>
@@ -29,17 +30,34 @@ struct CadPart {
     std::vector<SubShapeColour> colours;
 };
 
+// A layer as XCAF keeps it (cad_layers.h): the shapes assigned to it, each
+// a part's or a sub-shape of one.
+struct CadLayerItem {
+    int part = -1;      // index into CadStructure::parts
+    TopoDS_Shape shape; // a sub-shape of the part's shape; null: the whole part
+};
+
+struct CadLayer {
+    std::string name;
+    bool visible = true;
+    std::vector<CadLayerItem> items; // what XCAF gives that lies in a part
+};
+
 struct CadStructure {
     // parts[k] is assembly.parts[k] (name and colour set, counts not yet);
     // nodes and colours are complete.
     Assembly assembly;
     std::vector<CadPart> parts;
+    std::vector<CadLayer> layers;
     // Whether the parts can be read one by one: the file has an assembly
     // (products placed by instances) and no two parts share an edge (IGES
     // files' roots and some STEP files' products do; read apart, their
     // shared edges would become two and the mesh would crack there).
     bool keeps_tree() const;
 };
+
+// A name of XCAF's (TDataStd_Name, a layer's) as UTF-8.
+std::string utf8(const TCollection_ExtendedString& s);
 
 // The structure of t.document; t must come from transfer_document.
 CadStructure cad_structure(const TransferredFile& t);

@@ -168,7 +168,7 @@ TransferredFile transfer_document(const std::filesystem::path& path) {
     if (t.iges) {
         auto reader = std::make_shared<IGESCAFControl_Reader>();
         t.readers = reader;
-        reader->SetLayerMode(false);
+        reader->SetLayerMode(true); // layers (cad_layers.h)
         read_checked(*reader, file, true);
         // keep_iges_units declared the file's unit to be millimetres.
         XCAFDoc_DocumentTool::SetLengthUnit(t.document, 1.0, UnitsMethods_LengthUnit_Millimeter);
@@ -177,7 +177,7 @@ TransferredFile transfer_document(const std::filesystem::path& path) {
     } else {
         auto reader = std::make_shared<STEPCAFControl_Reader>();
         t.readers = reader;
-        reader->SetLayerMode(false);
+        reader->SetLayerMode(true); // layers (cad_layers.h)
         reader->SetPropsMode(false);
         reader->SetGDTMode(false);
         reader->SetMatMode(false);

@@ -11,6 +11,7 @@
 #include <seamless/base/error.h>
 #include <seamless/model/step_iges/assembly_reader.h>
 #include <seamless/model/step_iges/brep_reader.h>
+#include <seamless/model/step_iges/cad_layers.h>
 #include <seamless/model/step_iges/cad_structure.h>
 #include <seamless/model/step_iges/face_range.h>
 #include <seamless/model/step_iges/file_transfer.h>
@@ -136,9 +137,10 @@ class FaceReader {
     std::vector<std::string> trimmed_, approximated_;
 };
 
-// The flattened model's face colours, when the file has any.
-void add_colours(Model& m, const CadStructure& s, const TopTools_IndexedMapOfShape& faces) {
-    std::vector<int> colours = flat_face_colours(s, faces);
+// The flattened model's face colours and layers, when the file has any.
+void add_colours(Model& m, const CadStructure& s, const TransferredFile& t) {
+    m.assembly.layers = flat_layers(s, t, m.brep);
+    std::vector<int> colours = flat_face_colours(s, t.faces);
     if (std::all_of(colours.begin(), colours.end(), [](int c) { return c < 0; })) return;
     m.assembly.colours = s.assembly.colours;
     m.assembly.face_colours = std::move(colours);
@@ -164,7 +166,7 @@ Model read_locked(const std::filesystem::path& path, const ModelLoadOptions& opt
         CadStructure structure = cad_structure(t);
         if (structure.keeps_tree()) return read_assembly(t, std::move(structure), file, options);
         Model m = read_brep(t, names, file, options);
-        add_colours(m, structure, t.faces);
+        add_colours(m, structure, t);
         return m;
     }
     FaceReader faces(file, options);

@@ -185,3 +185,29 @@ TEST_CASE("Face ids of the corpus's assembly and a coloured part round-trip",
         }
     }
 }
+
+TEST_CASE("placed_counts counts what placed_mesh holds, without placing", "[mesh][io][face_ids]") {
+    const Model m = test::small_assembly();
+    const TriangleMesh mesh = tessellated(m);
+    const TriangleMesh placed = placed_mesh(mesh, m);
+    const PlacedCounts counts = placed_counts(mesh, m);
+    CHECK(counts.triangles == placed.triangle_count());
+    CHECK(counts.vertices == placed.vertex_count());
+    REQUIRE(counts.parts.size() == m.assembly.parts.size());
+    long long per_part = 0;
+    for (size_t p = 0; p < counts.parts.size(); ++p) {
+        long long on_part = 0; // placed triangles of part p
+        for (int tp : placed.triangle_part) on_part += tp == static_cast<int>(p);
+        CHECK(on_part == counts.parts[p].instances * counts.parts[p].triangles);
+        per_part += counts.parts[p].triangles;
+    }
+    CHECK(per_part == mesh.triangle_count()); // every triangle on a part's face
+    CHECK(counts.parts[1].instances == 3);
+    // Without a tree: the mesh's own counts.
+    const Model part = test::plate_with_hole();
+    const TriangleMesh one = tessellated(part);
+    CHECK(placed_counts(one, part).triangles == one.triangle_count());
+    CHECK(placed_counts(one, part).parts.empty());
+    // Each triangle's face by its surface, as placed_mesh gives a model without a tree.
+    CHECK(triangle_faces(one, part) == placed_mesh(one, part).triangle_face);
+}

@@ -192,3 +192,91 @@ TEST_CASE("A coloured model without a tree is one part placed once", "[mesh][io]
     CHECK(dark < 0.2); // sRGB 0.2 is linear 0.033
     CHECK(dark > 0);
 }
+
+namespace {
+
+// The scene's layer table: per layer its name, meshes and faces.
+struct GltfLayer {
+    std::string name;
+    bool visible = true;
+    std::vector<int> meshes, faces;
+};
+
+std::vector<GltfLayer> scene_layers(const tinygltf::Model& g) {
+    std::vector<GltfLayer> out;
+    REQUIRE(g.scenes.size() == 1);
+    const tinygltf::Value& extras = g.scenes[0].extras;
+    if (!extras.Has("layers")) return out;
+    const auto ints = [](const tinygltf::Value& v) {
+        std::vector<int> x;
+        for (size_t k = 0; k < v.ArrayLen(); ++k) x.push_back(v.Get(int(k)).GetNumberAsInt());
+        return x;
+    };
+    const tinygltf::Value& table = extras.Get("layers");
+    for (size_t k = 0; k < table.ArrayLen(); ++k) {
+        const tinygltf::Value& l = table.Get(int(k));
+        GltfLayer layer{l.Get("name").Get<std::string>(), l.Get("visible").Get<bool>(), {}, {}};
+        if (l.Has("meshes")) layer.meshes = ints(l.Get("meshes"));
+        if (l.Has("faces")) layer.faces = ints(l.Get("faces"));
+        out.push_back(std::move(layer));
+    }
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("Layers as the scene's extras: a part's mesh, the faces of the rest, placed when merged",
+          "[mesh][io][assembly]") {
+    const Model m = test::small_assembly();
+    const auto dir = test::scratch_dir("gltf_layers");
+    const tinygltf::Model g = written(m, dir / "a.glb");
+    const std::vector<GltfLayer> tree = scene_layers(g);
+    REQUIRE(tree.size() == m.assembly.layers.size());
+    for (size_t k = 0; k < tree.size(); ++k) {
+        const AssemblyLayer& l = m.assembly.layers[k];
+        CHECK(tree[k].name == l.name);
+        CHECK(tree[k].visible == l.visible);
+        CHECK(tree[k].meshes == l.parts); // every part here has triangles
+        CHECK(tree[k].faces == layer_faces(m, l, false));
+        // The faces name faces that some primitive's extras hold.
+        for (int f : tree[k].faces) {
+            bool held = false;
+            for (const auto& mesh : g.meshes)
+                for (const auto& p : mesh.primitives)
+                    for (int face : face_runs(g, p)) held = held || face == f;
+            CHECK(held);
+        }
+    }
+    // Merged: the faces of the placed model, every copy.
+    GltfWriteOptions merge;
+    merge.merge = true;
+    const std::vector<GltfLayer> merged = scene_layers(written(m, dir / "m.glb", merge));
+    const Model flat = flatten_assembly(m);
+    REQUIRE(merged.size() == flat.assembly.layers.size());
+    for (size_t k = 0; k < merged.size(); ++k) {
+        CHECK(merged[k].meshes.empty());
+        CHECK(merged[k].faces == layer_faces(flat, flat.assembly.layers[k], true));
+    }
+    // Without layers, no scene extras.
+    Model bare = m;
+    bare.assembly.layers.clear();
+    CHECK(written(bare, dir / "b.glb").scenes[0].extras.Type() == tinygltf::NULL_TYPE);
+}
+
+TEST_CASE("A part without faces has no glTF mesh (glTF forbids an empty one)",
+          "[mesh][io][assembly]") {
+    Model m = test::small_assembly();
+    m.assembly.parts.insert(m.assembly.parts.begin() + 1, {"empty", 0, 0, 0, -1});
+    for (AssemblyNode& n : m.assembly.nodes)
+        if (n.part >= 1) ++n.part;
+    m.assembly.nodes.push_back({"empty-1", 0, AffineMap{}, 1});
+    m.assembly.layers.push_back({"all", true, {0, 1, 2}, {}, {}});
+    validate_assembly(m, "a.json");
+    const tinygltf::Model g = written(m, test::scratch_dir("gltf_empty_part") / "a.glb");
+    REQUIRE(g.meshes.size() == 2); // plate and tube
+    for (const auto& mesh : g.meshes) CHECK(!mesh.primitives.empty());
+    CHECK(g.nodes.back().mesh == -1);
+    CHECK(g.meshes[g.nodes[1].mesh].name == "plate");
+    CHECK(g.meshes[g.nodes[2].mesh].name == "tube");
+    CHECK(scene_layers(g).back().meshes == std::vector<int>{0, 1});
+}
