@@ -55,17 +55,21 @@ FaceSurface::FaceSurface(const BSplineSurface& s)
         closed_v_ = closed_v_ && distance(s.point(i, 0), s.point(i, s.size_v - 1)) <= tiny;
 }
 
+Vec3 FaceSurface::wrapped(Vec3 uv) const {
+    return {closed_u_ ? wrap(uv.x, s_->u_min(), s_->u_max()) : uv.x,
+            closed_v_ ? wrap(uv.y, s_->v_min(), s_->v_max()) : uv.y, 0};
+}
+
 Vec3 FaceSurface::point(Vec3 uv) const {
-    const double u = closed_u_ ? wrap(uv.x, s_->u_min(), s_->u_max()) : uv.x;
-    const double v = closed_v_ ? wrap(uv.y, s_->v_min(), s_->v_max()) : uv.y;
-    if (u < s_->u_min() || u > s_->u_max() || v < s_->v_min() || v > s_->v_max())
+    const Vec3 w = wrapped(uv);
+    if (w.x < s_->u_min() || w.x > s_->u_max() || w.y < s_->v_min() || w.y > s_->v_max())
         return at(uv).point; // the continuation needs the derivatives
-    return evaluate_point(*s_, u, v);
+    return evaluate_point(*s_, w.x, w.y);
 }
 
 SurfacePoint FaceSurface::at(Vec3 uv) const {
-    const double u = closed_u_ ? wrap(uv.x, s_->u_min(), s_->u_max()) : uv.x;
-    const double v = closed_v_ ? wrap(uv.y, s_->v_min(), s_->v_max()) : uv.y;
+    const Vec3 w = wrapped(uv);
+    const double u = w.x, v = w.y;
     const double uc = std::clamp(u, s_->u_min(), s_->u_max()),
                  vc = std::clamp(v, s_->v_min(), s_->v_max());
     SurfacePoint p = evaluate(*s_, uc, vc);

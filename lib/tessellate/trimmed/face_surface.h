@@ -33,6 +33,7 @@ class FaceSurface {
     bool on_crease(Vec3 uv) const { return crosses_crease({uv, uv, uv}); }
 
   private:
+    Vec3 wrapped(Vec3 uv) const; // moved by whole periods into a closed direction's domain
     const BSplineSurface* s_;
     bool closed_u_ = false, closed_v_ = false;
     std::vector<double> creases_u_, creases_v_;
