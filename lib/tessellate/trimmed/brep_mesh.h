@@ -8,7 +8,7 @@
 #include <seamless/base/triangle_mesh.h>
 #include <seamless/model/model.h>
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
-#include <seamless/tessellate/trimmed/face_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/face_triangulation.h>
 
 #include <vector>
 

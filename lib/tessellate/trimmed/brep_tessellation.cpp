@@ -2,13 +2,13 @@
 #include <seamless/base/error.h>
 #include <seamless/base/parallel/parallel.h>
 #include <seamless/base/phase_clock.h>
-#include <seamless/tessellate/trimmed/brep_certification.h>
+#include <seamless/tessellate/trimmed/bounds/brep_certification.h>
 #include <seamless/tessellate/trimmed/brep_mesh.h>
 #include <seamless/tessellate/trimmed/brep_tessellation.h>
-#include <seamless/tessellate/trimmed/constrained_triangulation.h>
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
-#include <seamless/tessellate/trimmed/face_domain.h>
-#include <seamless/tessellate/trimmed/face_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/face_domain.h>
+#include <seamless/tessellate/trimmed/faces/face_triangulation.h>
 
 #include <algorithm>
 #include <chrono>

@@ -10,7 +10,7 @@
 // of the rational patch E / W, as in triangle_bound.h).
 #include <seamless/interval/interval_matrix.h>
 #include <seamless/spline/enclosure/subpatch.h>
-#include <seamless/tessellate/trimmed/triangle_bound.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 
 #include <algorithm>
 #include <cmath>

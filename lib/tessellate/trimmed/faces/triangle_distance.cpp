@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/segment_distance.h>
-#include <seamless/tessellate/trimmed/triangle_distance.h>
+#include <seamless/tessellate/trimmed/faces/triangle_distance.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/check.h>
-#include <seamless/tessellate/trimmed/face_domain.h>
+#include <seamless/tessellate/trimmed/faces/face_domain.h>
 
 #include <algorithm>
 #include <limits>

@@ -35,7 +35,7 @@
 
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/spline/bspline_surface.h>
-#include <seamless/tessellate/trimmed/triangle_pieces.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_pieces.h>
 
 #include <array>
 #include <vector>

@@ -4,7 +4,7 @@
 // one redone from scratch, over the same boundary, for less work.
 #include <tessellate/trimmed/brep_cases.h>
 
-#include <seamless/tessellate/trimmed/face_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/face_triangulation.h>
 
 #include <catch2/catch.hpp>
 
@@ -13,8 +13,7 @@ using namespace seamless::test;
 
 TEST_CASE("face seeds: a face redone after an edge is halved meets the limits with less work",
           "[brep][heavy]") {
-    for (const BRepCase& c :
-         {freeform_face(), torus_solid(), sphere_solid()}) {
+    for (const BRepCase& c : {freeform_face(), torus_solid(), sphere_solid()}) {
         INFO(c.name);
         const BRep& brep = c.model.brep;
         const double D = 1e-2;

@@ -6,8 +6,8 @@
 
 #include <seamless/model/model.h>
 #include <seamless/tessellate/tessellation.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 #include <seamless/tessellate/trimmed/face_surface.h>
-#include <seamless/tessellate/trimmed/triangle_bound.h>
 
 #include <catch2/catch.hpp>
 

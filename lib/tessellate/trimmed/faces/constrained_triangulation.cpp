@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/segment_distance.h>
-#include <seamless/tessellate/trimmed/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/check.h>
-#include <seamless/tessellate/trimmed/face_seeds.h>
+#include <seamless/tessellate/trimmed/faces/face_seeds.h>
 
 #include <algorithm>
 #include <cmath>

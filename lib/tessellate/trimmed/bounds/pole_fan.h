@@ -21,7 +21,7 @@
 // triangles keep the parametric bound.
 #pragma once
 
-#include <seamless/tessellate/trimmed/triangle_bound.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 
 #include <span>
 #include <vector>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/check.h>
 #include <seamless/tessellate/tessellation_result.h>
-#include <seamless/tessellate/trimmed/constrained_triangulation.h>
-#include <seamless/tessellate/trimmed/face_seeds.h>
-#include <seamless/tessellate/trimmed/face_triangulation.h>
-#include <seamless/tessellate/trimmed/touching_loops.h>
-#include <seamless/tessellate/trimmed/triangle_distance.h>
+#include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/face_seeds.h>
+#include <seamless/tessellate/trimmed/faces/face_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/touching_loops.h>
+#include <seamless/tessellate/trimmed/faces/triangle_distance.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/tessellate/trimmed/chord_bound.h>
+#include <seamless/tessellate/trimmed/bounds/chord_bound.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 #include <seamless/tessellate/trimmed/face_surface.h>
-#include <seamless/tessellate/trimmed/triangle_bound.h>
 
 #include <catch2/catch.hpp>
 

@@ -9,7 +9,7 @@
 #pragma once
 
 #include <seamless/spline/bspline_curve.h>
-#include <seamless/tessellate/trimmed/triangle_bound.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 
 namespace seamless {
 

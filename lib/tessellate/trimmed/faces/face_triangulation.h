@@ -9,7 +9,7 @@
 
 #include <seamless/model/model.h>
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
-#include <seamless/tessellate/trimmed/face_domain.h>
+#include <seamless/tessellate/trimmed/faces/face_domain.h>
 
 #include <array>
 #include <cstdint>

@@ -10,7 +10,7 @@
 #pragma once
 
 #include <seamless/model/model.h>
-#include <seamless/tessellate/trimmed/face_domain.h>
+#include <seamless/tessellate/trimmed/faces/face_domain.h>
 
 namespace seamless {
 

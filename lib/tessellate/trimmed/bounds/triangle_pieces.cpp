@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/tessellate/trimmed/triangle_pieces.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_pieces.h>
 
 #include <cmath>
 #include <limits>

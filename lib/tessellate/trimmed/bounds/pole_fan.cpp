@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/tessellate/trimmed/pole_fan.h>
+#include <seamless/tessellate/trimmed/bounds/pole_fan.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include <seamless/interval/interval.h>
 #include <seamless/spline/enclosure/triangle_restriction.h>
 #include <seamless/spline/knot_insertion.h>
-#include <seamless/tessellate/trimmed/triangle_bound.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/parallel/parallel.h>
-#include <seamless/tessellate/trimmed/brep_certification.h>
-#include <seamless/tessellate/trimmed/chord_bound.h>
+#include <seamless/tessellate/trimmed/bounds/brep_certification.h>
+#include <seamless/tessellate/trimmed/bounds/chord_bound.h>
+#include <seamless/tessellate/trimmed/bounds/pole_fan.h>
+#include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 #include <seamless/tessellate/trimmed/face_surface.h>
-#include <seamless/tessellate/trimmed/pole_fan.h>
-#include <seamless/tessellate/trimmed/triangle_bound.h>
 
 #include <algorithm>
 #include <limits>

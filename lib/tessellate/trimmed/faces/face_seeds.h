@@ -7,9 +7,9 @@
 // near the change are refined afresh (triangulate_face's `seeds`).
 #pragma once
 
-#include <seamless/tessellate/trimmed/constrained_triangulation.h>
-#include <seamless/tessellate/trimmed/face_domain.h>
 #include <seamless/tessellate/trimmed/face_surface.h>
+#include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/face_domain.h>
 
 namespace seamless {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/tessellate/trimmed/chord_bound.h>
+#include <seamless/tessellate/trimmed/bounds/chord_bound.h>
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include <seamless/tessellate/trimmed/constrained_triangulation.h>
-#include <seamless/tessellate/trimmed/touching_loops.h>
+#include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/touching_loops.h>
 
 #include <algorithm>
 #include <cmath>

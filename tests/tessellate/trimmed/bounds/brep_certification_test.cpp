@@ -6,7 +6,7 @@
 
 #include <seamless/tessellate/tessellation.h>
 #include <seamless/tessellate/trimmed/face_surface.h>
-#include <seamless/tessellate/trimmed/triangle_distance.h>
+#include <seamless/tessellate/trimmed/faces/triangle_distance.h>
 
 #include <catch2/catch.hpp>
 

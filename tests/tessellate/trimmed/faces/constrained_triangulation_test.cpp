@@ -3,7 +3,7 @@
 // the domain is what lies at odd nesting across the loops, loops that cross
 // or pass through a point are refused, and points are inserted only inside
 // the domain, clear of its boundary.
-#include <seamless/tessellate/trimmed/constrained_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
 
 #include <catch2/catch.hpp>
 
