@@ -214,7 +214,7 @@ struct CoedgeEnds {
 CoedgeEnds ends(const BRep& b, const BRepCoedge& c) {
     const BRepEdge& e = b.edges[c.edge];
     const BSplineCurve& p = b.pcurves[c.pcurve];
-    CoedgeEnds r{e.start, e.end, evaluate(p, e.t0).point, evaluate(p, e.t1).point};
+    CoedgeEnds r{e.start, e.end, evaluate_point(p, e.t0), evaluate_point(p, e.t1)};
     if (c.reversed) {
         std::swap(r.v0, r.v1);
         std::swap(r.uv0, r.uv1);
@@ -233,7 +233,7 @@ bool gap_closes(const BSplineSurface& s, const Vec3& a, const Vec3& z, const Vec
     if (distance(z, a) <= kLoopGap * diag) return true;
     for (int i = 0; i <= 4; ++i) {
         const Vec3 uv = a + (z - a) * (i / 4.0);
-        if (!(distance(evaluate(s, uv.x, uv.y).point, v) <= tol)) return false;
+        if (!(distance(evaluate_point(s, uv.x, uv.y), v) <= tol)) return false;
     }
     return true;
 }
@@ -263,7 +263,7 @@ bool leaves_domain(const BSplineCurve& c, double t0, double t1, const BSplineSur
         const double a = std::max(t0, c.knots[k]), z = std::min(t1, c.knots[k + 1]);
         if (!(a <= z)) continue;
         for (int i = 0; i <= kSamplesPerSpan; ++i) {
-            const Vec3 p = evaluate(c, a + (z - a) * i / kSamplesPerSpan).point;
+            const Vec3 p = evaluate_point(c, a + (z - a) * i / kSamplesPerSpan);
             if (!(p.x >= s.u_min() - su && p.x <= s.u_max() + su && p.y >= s.v_min() - sv &&
                   p.y <= s.v_max() + sv)) {
                 out = p;

@@ -25,4 +25,18 @@ CurvePoint evaluate(const BSplineCurve& c, double t) {
     return r;
 }
 
+Vec3 evaluate_point(const BSplineCurve& c, double t) {
+    const int p = c.degree;
+    t = std::clamp(t, c.t_min(), c.t_max());
+    const int k = find_span(p, c.size(), c.knots, t);
+    double N[kMaxDegree + 1];
+    basis_functions(p, k, c.knots, t, N, nullptr);
+    HPoint X{0, 0, 0, 0};
+    for (int a = 0; a <= p; ++a) {
+        const int i = k - p + a;
+        X = X + N[a] * HPoint::from(c.points[i], c.weight(i));
+    }
+    return X.xyz() / X.w;
+}
+
 } // namespace seamless

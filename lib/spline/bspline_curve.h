@@ -32,5 +32,7 @@ struct CurvePoint {
 
 // The curve at t in its domain (values outside are clamped to it).
 CurvePoint evaluate(const BSplineCurve& c, double t);
+// The point alone (evaluate(c, t).point, to the bit), without the derivative.
+Vec3 evaluate_point(const BSplineCurve& c, double t);
 
 } // namespace seamless

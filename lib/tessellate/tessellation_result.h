@@ -52,7 +52,10 @@ struct BRepStats {
     // chord and its curve; TessellationStats::max_error_bound is the larger.
     // The slivers between pcurves and their (u,v) chords are not covered.
     double bound_triangles = 0, bound_chords = 0;
-    double bound_seconds = 0;          // of TessellationStats::seconds, spent on the bounds
+    double bound_seconds = 0; // of TessellationStats::seconds, spent on the bounds
+    // Of the meshing (seconds less bound_seconds): discretising the edges,
+    // triangulating the faces (re-split rounds included) and joining them.
+    double edge_seconds = 0, face_seconds = 0, mesh_seconds = 0;
     std::vector<std::string> warnings; // one line each: faces left out, tolerances above D
 };
 

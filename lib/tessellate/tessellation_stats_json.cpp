@@ -60,6 +60,9 @@ std::string tessellation_stats_json(const TessellationStats& s, const StatsSourc
                       {"bound_triangles", b.bound_triangles},
                       {"bound_chords", b.bound_chords},
                       {"bound_seconds", b.bound_seconds},
+                      {"edge_seconds", b.edge_seconds},
+                      {"face_seconds", b.face_seconds},
+                      {"mesh_seconds", b.mesh_seconds},
                       {"max_edge_tolerance", b.max_edge_tolerance},
                       {"edges_above_tolerance", b.edges_above_tolerance},
                       {"warnings", b.warnings}};

@@ -107,7 +107,7 @@ constexpr double kEven = 1.5;
 double sag(const BRep& brep, const std::vector<EdgePolyline>& lines, const FaceDomain& d, int i) {
     const FaceDomain::Origin& o = d.origins[i];
     const std::vector<double>& t = lines[o.edge].t;
-    const Vec3 m = evaluate(brep.pcurves[o.pcurve], 0.5 * (t[o.segment] + t[o.segment + 1])).point;
+    const Vec3 m = evaluate_point(brep.pcurves[o.pcurve], 0.5 * (t[o.segment] + t[o.segment + 1]));
     const Vec3 a = d.scaled[d.segments[i][0]], b = d.scaled[d.segments[i][1]];
     return distance(Vec3{m.x * d.su, m.y * d.sv, 0}, 0.5 * (a + b));
 }
@@ -256,12 +256,17 @@ Tessellation tessellate_at_scale(const Model& model, const TessellationOptions& 
     std::vector<EdgePolyline> lines(brep.edges.size());
     for_each_item(static_cast<int>(lines.size()), options.threads,
                   [&](int e) { lines[e] = discretise_edge(brep, e, uses[e], ec); });
+    st.edge_seconds = seconds_since(start);
     if (options.progress) options.progress(0.2);
+    const auto faces_start = std::chrono::steady_clock::now();
     Faces faces =
         triangulate_faces(model, lines, {D, st.angle, options.max_triangles}, options.threads);
+    st.face_seconds = seconds_since(faces_start);
     refuse_or_leave_out(model, faces, options, st);
     if (options.progress) options.progress(0.9);
+    const auto mesh_start = std::chrono::steady_clock::now();
     t.mesh = brep_mesh(model, lines, faces.meshes);
+    st.mesh_seconds = seconds_since(mesh_start);
     if (t.mesh.triangle_count() > options.max_triangles)
         throw TriangleBudgetError(model.source, "brep", options.max_triangles);
 

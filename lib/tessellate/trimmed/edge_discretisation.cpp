@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace seamless {
@@ -33,6 +34,19 @@ double angle_between(Vec3 a, Vec3 b) {
     return std::atan2(norm(cross(a, b)), dot(a, b));
 }
 
+AngleLimit::AngleLimit(double angle)
+    : angle_(angle),
+      cos2_(angle < 0.5 * std::numbers::pi ? std::cos(angle) * std::cos(angle) : -1) {}
+
+bool AngleLimit::exceeded(Vec3 a, Vec3 b) const {
+    // Within the angle by a margin far above the cosine's rounding: a
+    // non-negative cosine whose square is above cos^2 of the limit.
+    constexpr double kMargin = 1 + 1e-6;
+    const double d = dot(a, b);
+    if (d > 0 && d * d > kMargin * cos2_ * dot(a, a) * dot(b, b)) return false;
+    return angle_between(a, b) > angle_;
+}
+
 namespace {
 
 constexpr int kMaxDepth = 24;
@@ -45,12 +59,13 @@ struct Splitter {
     const std::vector<EdgeOnFace>& uses;
     const EdgeCriteria& c;
     EdgePolyline& line;
+    const AngleLimit limit = AngleLimit(c.angle);
 
     Vec3 point(double t) const {
         if (t == e.t0) return brep.vertices[e.start].point;
         if (t == e.t1) return brep.vertices[e.end].point;
         return e.degenerate() ? brep.vertices[e.start].point
-                              : evaluate(brep.curves[e.curve], t).point;
+                              : evaluate_point(brep.curves[e.curve], t);
     }
 
     // The largest sampled distance of [a, b]'s curve and (u,v) images from
@@ -63,22 +78,21 @@ struct Splitter {
             constexpr int kSamples = 16;
             for (int k = 1; k < kSamples; ++k)
                 d = std::max(d, point_segment_distance(
-                                    evaluate(curve, a + (b - a) * k / kSamples).point, pa, pb));
+                                    evaluate_point(curve, a + (b - a) * k / kSamples), pa, pb));
             // A span shorter than the samples' spacing could hide a wiggle.
             for (double knot : curve.knots)
                 if (knot > a && knot < b)
-                    d = std::max(d, point_segment_distance(evaluate(curve, knot).point, pa, pb));
+                    d = std::max(d, point_segment_distance(evaluate_point(curve, knot), pa, pb));
             // The ends' tangents from inside [a, b]: at a kink (a break of
             // discretise_edge) the curve's other side turns away.
             const double in = kInside * (b - a);
             const Vec3 ta = evaluate(curve, a + in).tangent, tb = evaluate(curve, b - in).tangent,
                        tm = evaluate(curve, 0.5 * (a + b)).tangent;
-            if (std::max({angle_between(ta, tm), angle_between(tm, tb), angle_between(ta, tb)}) >
-                c.angle)
+            if (limit.exceeded(ta, tm) || limit.exceeded(tm, tb) || limit.exceeded(ta, tb))
                 return INFINITY;
         }
         for (const EdgeOnFace& use : uses) {
-            const Vec3 ua = evaluate(*use.pcurve, a).point, ub = evaluate(*use.pcurve, b).point;
+            const Vec3 ua = evaluate_point(*use.pcurve, a), ub = evaluate_point(*use.pcurve, b);
             for (double s : {0.25, 0.5, 0.75}) {
                 const Vec3 q = lerp(ua, ub, s);
                 // The tolerance is how far the surface is allowed to be.
@@ -87,13 +101,12 @@ struct Splitter {
             }
             // The midpoint too: a closed edge's ends have one normal. Across
             // a crease the normal jumps however short the segment.
-            const Vec3 um = evaluate(*use.pcurve, 0.5 * (a + b)).point;
+            const Vec3 um = evaluate_point(*use.pcurve, 0.5 * (a + b));
             if (use.surface.crosses_crease({ua, um, ub})) continue;
             const Vec3 na = unit_normal(use.surface, ua, use.inward),
                        nb = unit_normal(use.surface, ub, use.inward),
                        nm = unit_normal(use.surface, um, use.inward);
-            if (std::max({angle_between(na, nm), angle_between(nm, nb), angle_between(na, nb)}) >
-                c.angle)
+            if (limit.exceeded(na, nm) || limit.exceeded(nm, nb) || limit.exceeded(na, nb))
                 return INFINITY;
         }
         return std::max(d, 0.0);
@@ -133,8 +146,8 @@ void drop_stationary_points(EdgePolyline& line, const std::vector<EdgeOnFace>& u
     const auto stationary = [&](size_t i, size_t j) {
         if (!same_point(line.points[i], line.points[j])) return false;
         for (const EdgeOnFace& use : uses)
-            if (!same_point(evaluate(*use.pcurve, line.t[i]).point,
-                            evaluate(*use.pcurve, line.t[j]).point))
+            if (!same_point(evaluate_point(*use.pcurve, line.t[i]),
+                            evaluate_point(*use.pcurve, line.t[j])))
                 return false;
         return true;
     };

@@ -57,4 +57,16 @@ Vec3 unit_normal(const FaceSurface& s, Vec3 uv, Vec3 inward);
 // Angle in radians between two vectors (0 when one is zero).
 double angle_between(Vec3 a, Vec3 b);
 
+// The angle limit, tested as angle_between(a, b) > angle is, to the same
+// verdict: the cosine settles all but the near-equal cases without atan2
+// (a quarter of a face's refinement judged its triangles' normals).
+class AngleLimit {
+  public:
+    explicit AngleLimit(double angle);
+    bool exceeded(Vec3 a, Vec3 b) const;
+
+  private:
+    double angle_, cos2_;
+};
+
 } // namespace seamless

@@ -67,6 +67,13 @@ Vec3 FaceSurface::point(Vec3 uv) const {
     return evaluate_point(*s_, w.x, w.y);
 }
 
+Vec3 FaceSurface::point(Vec3 uv, SpanPatches& spans) const {
+    const Vec3 w = wrapped(uv);
+    if (w.x < s_->u_min() || w.x > s_->u_max() || w.y < s_->v_min() || w.y > s_->v_max())
+        return at(uv).point;
+    return spans.point(w.x, w.y);
+}
+
 SurfacePoint FaceSurface::at(Vec3 uv) const {
     const Vec3 w = wrapped(uv);
     const double u = w.x, v = w.y;

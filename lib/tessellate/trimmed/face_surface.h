@@ -12,6 +12,7 @@
 #pragma once
 
 #include <seamless/spline/bspline_surface.h>
+#include <seamless/spline/span_patches.h>
 
 #include <array>
 #include <vector>
@@ -23,6 +24,9 @@ class FaceSurface {
     explicit FaceSurface(const BSplineSurface& s);
     SurfacePoint at(Vec3 uv) const;
     Vec3 point(Vec3 uv) const; // at(uv).point, to the bit: cheaper inside the domain
+    // point(uv) up to rounding, inside the domain from the spans' Bezier
+    // patches (cheaper still where many points fall in few spans).
+    Vec3 point(Vec3 uv, SpanPatches& spans) const;
     const BSplineSurface& surface() const { return *s_; }
     bool closed_u() const { return closed_u_; } // periodic in u: wrapped
     bool closed_v() const { return closed_v_; }

@@ -108,11 +108,11 @@ FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& line
             const int n = static_cast<int>(line.t.size());
             Vec3 pole;
             if (e.degenerate())
-                pole = normalize(evaluate(pc, e.t1).point - evaluate(pc, e.t0).point);
+                pole = normalize(evaluate_point(pc, e.t1) - evaluate_point(pc, e.t0));
             // The last point is the next coedge's first (the same vertex).
             for (int j = 0; j + 1 < n; ++j) {
                 const int k = c.reversed ? n - 1 - j : j;
-                d.uv.push_back(evaluate(pc, line.t[k]).point);
+                d.uv.push_back(evaluate_point(pc, line.t[k]));
                 d.points.push_back(line.points[k]);
                 d.keys.push_back(boundary_key(brep, c.edge, k, line));
                 d.pole.push_back(pole);

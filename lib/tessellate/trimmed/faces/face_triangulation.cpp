@@ -28,6 +28,10 @@ constexpr int kPersistent = 8;
 // Only faces grown past this many triangles stop so: a small face's
 // refinement costs little, and left alone it mends most encroachments.
 constexpr size_t kStopSize = 4096;
+// ... or past this many triangles per boundary point: its refinement has
+// then gone on long beside a side it does not mend (a face whose triangles
+// meet the limits has a few dozen per boundary point).
+constexpr size_t kStopPerBoundaryPoint = 64;
 
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
 // k), three points between the centroid and the corners, and on a triangle
@@ -128,6 +132,8 @@ struct Refiner {
     // first): the last refinement round it was, and in how many.
     std::map<std::array<int, 2>, std::array<int, 2>> encroached;
     int round = 0; // of refinement
+    const AngleLimit limit = AngleLimit(c.angle);
+    SpanPatches spans = SpanPatches(s.surface());
 
     // Sides found encroached in `rounds` rounds or more.
     std::vector<std::array<int, 2>> encroached_sides(int rounds) const {
@@ -201,7 +207,7 @@ struct Refiner {
             // points (the meridians' chords), which are measured as well;
             // across a crease the flat triangle cuts the fold, which only the
             // surface's points see.
-            double dev = frame.distance(s.point(q));
+            double dev = frame.distance(s.point(q, spans));
             const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
             if (pole || crease)
                 dev = std::max(dev, distance_to_surface(s, flat, q, 0));
@@ -232,10 +238,14 @@ struct Refiner {
         const bool tiny = longest <= kTiny * kTiny * c.deviation * c.deviation;
         const bool small = tiny || longest <= kTolerances * kTolerances * d.tolerance * d.tolerance;
         double turn = 0;
+        // Turns within the angle do not matter (the badness of a triangle
+        // that meets the limits is not used).
         if (!ear && !crease && !tiny)
-            for (int i = 0; i < 3; ++i)
-                turn = std::max({turn, angle_between(v.normals[i], v.normals[(i + 1) % 3]),
-                                 small ? 0.0 : angle_between(v.normals[i], n)});
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 x = v.normals[i], y = v.normals[(i + 1) % 3];
+                if (limit.exceeded(x, y)) turn = std::max(turn, angle_between(x, y));
+                if (!small && limit.exceeded(x, n)) turn = std::max(turn, angle_between(x, n));
+            }
         const bool flat = !ear && !(norm(n) > 1e-12 * longest);
         v.badness = flat ? INFINITY : std::max(v.deviation / target, turn / c.angle);
         v.split = v.badness > 1;
@@ -350,7 +360,9 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (verdicts[i].split) failing.push_back(static_cast<int>(i));
         }
         if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
-        if (criteria.stop_when_encroached && tris.size() > kStopSize &&
+        if (criteria.stop_when_encroached &&
+            tris.size() > std::min(kStopSize, kStopPerBoundaryPoint *
+                                                  static_cast<size_t>(d.boundary_points)) &&
             !r.encroached_sides(kPersistent).empty()) {
             stopped = true;
             break;

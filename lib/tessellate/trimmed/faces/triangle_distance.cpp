@@ -7,20 +7,25 @@
 
 namespace seamless {
 
-TriangleFrame::TriangleFrame(Vec3 a, Vec3 b, Vec3 c)
-    : a_(a), b_(b), c_(c), n_(cross(b - a, c - a)), nn_(dot(n_, n_)) {}
+TriangleFrame::TriangleFrame(Vec3 a, Vec3 b, Vec3 c) : corner_{a, b, c} {
+    const Vec3 n = cross(b - a, c - a);
+    const double nn = dot(n, n);
+    flat_ = nn > 0 && std::isfinite(nn);
+    if (!flat_) return;
+    unit_ = n / std::sqrt(nn);
+    // (x - a) . (n x (b - a)) = ((b - a) x (x - a)) . n: non-negative on the
+    // triangle's side of ab.
+    for (int k = 0; k < 3; ++k) side_[k] = cross(n, corner_[(k + 1) % 3] - corner_[k]);
+}
 
 double TriangleFrame::distance(Vec3 p) const {
-    if (nn_ > 0) {
-        // Inside the prism over the triangle: the distance to its plane.
-        const double h = dot(p - a_, n_);
-        const Vec3 q = p - (h / nn_) * n_;
-        if (dot(cross(b_ - a_, q - a_), n_) >= 0 && dot(cross(c_ - b_, q - b_), n_) >= 0 &&
-            dot(cross(a_ - c_, q - c_), n_) >= 0)
-            return std::abs(h) / std::sqrt(nn_);
-    }
-    return std::min({point_segment_distance(p, a_, b_), point_segment_distance(p, b_, c_),
-                     point_segment_distance(p, c_, a_)});
+    // Inside the prism over the triangle: the distance to its plane.
+    if (flat_ && dot(p - corner_[0], side_[0]) >= 0 && dot(p - corner_[1], side_[1]) >= 0 &&
+        dot(p - corner_[2], side_[2]) >= 0)
+        return std::abs(dot(p - corner_[0], unit_));
+    return std::min({point_segment_distance(p, corner_[0], corner_[1]),
+                     point_segment_distance(p, corner_[1], corner_[2]),
+                     point_segment_distance(p, corner_[2], corner_[0])});
 }
 
 double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {

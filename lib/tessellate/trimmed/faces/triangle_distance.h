@@ -6,9 +6,14 @@
 
 #include <seamless/base/vec.h>
 
+#include <array>
+
 namespace seamless {
 
-// A triangle prepared for the distances of many points (a face's samples).
+// A triangle prepared for the distances of many points (a face's samples):
+// its unit normal and the inward normals of its sides' planes through the
+// normal, so that a point costs four dot products where its foot falls
+// inside.
 class TriangleFrame {
   public:
     TriangleFrame(Vec3 a, Vec3 b, Vec3 c);
@@ -16,8 +21,9 @@ class TriangleFrame {
     double distance(Vec3 p) const;
 
   private:
-    Vec3 a_, b_, c_, n_;
-    double nn_;
+    std::array<Vec3, 3> corner_, side_;
+    Vec3 unit_;
+    bool flat_ = false; // has a normal
 };
 
 // Euclidean distance of p to the triangle abc (to its edges when degenerate).
