@@ -117,7 +117,48 @@ void enclose_homogeneous_any_degree(const BezierPatch& b, double s, double t, in
     }
 }
 
+namespace {
+
+// evaluate_point below with the degrees known at compile time: the same
+// operations, unrolled (a trimmed face's samples evaluate low-degree patches
+// hundreds of thousands of times: span_patches.h).
+template <int P, int Q> Vec3 evaluate_point_fixed(const BezierPatch& b, double s, double t) {
+    double Bu[P + 1], dBu[P + 1], Bv[Q + 1], dBv[Q + 1];
+    bernstein_fixed<P>(s, Bu, dBu);
+    bernstein_fixed<Q>(t, Bv, dBv);
+    double x = 0, y = 0, z = 0, w = 0;
+    for (int i = 0; i <= P; ++i) {
+        double rx = 0, ry = 0, rz = 0, rw = 0;
+        for (int j = 0; j <= Q; ++j) {
+            const HPoint& h = b.at(i, j);
+            rx += Bv[j] * h.x, ry += Bv[j] * h.y, rz += Bv[j] * h.z, rw += Bv[j] * h.w;
+        }
+        x += Bu[i] * rx, y += Bu[i] * ry, z += Bu[i] * rz, w += Bu[i] * rw;
+    }
+    return b.rational ? Vec3{x / w, y / w, z / w} : Vec3{x, y, z};
+}
+
+} // namespace
+
 Vec3 evaluate_point(const BezierPatch& b, double s, double t) {
+    switch (b.p * 10 + b.q) {
+    case 11:
+        return evaluate_point_fixed<1, 1>(b, s, t);
+    case 12:
+        return evaluate_point_fixed<1, 2>(b, s, t);
+    case 21:
+        return evaluate_point_fixed<2, 1>(b, s, t);
+    case 22:
+        return evaluate_point_fixed<2, 2>(b, s, t);
+    case 23:
+        return evaluate_point_fixed<2, 3>(b, s, t);
+    case 32:
+        return evaluate_point_fixed<3, 2>(b, s, t);
+    case 33:
+        return evaluate_point_fixed<3, 3>(b, s, t);
+    default:
+        break;
+    }
     double Bu[BezierPatch::kMaxOrder], Bv[BezierPatch::kMaxOrder], unused[BezierPatch::kMaxOrder];
     bernstein(b.p, s, Bu, unused);
     bernstein(b.q, t, Bv, unused);

@@ -153,3 +153,30 @@ TEST_CASE("enclose_homogeneous() with the frame: the same enclosures, and evalua
             }
         }
 }
+
+TEST_CASE("evaluate_point() of patches up to bicubic, mixed degrees too, gives the generic sums' "
+          "point, bit for bit",
+          "[spline][fixed_degree]") {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> U(0.0, 1.0), P(-3.0, 3.0), W(0.2, 5.0);
+    for (int p = 1; p <= 4; ++p)
+        for (int q = 1; q <= 4; ++q)
+            for (bool rational : {false, true}) {
+                BezierPatch b;
+                b.p = p, b.q = q, b.rational = rational;
+                for (int i = 0; i <= p; ++i)
+                    for (int j = 0; j <= q; ++j)
+                        b.at(i, j) =
+                            HPoint::from({P(rng), P(rng), P(rng)}, rational ? W(rng) : 1.0);
+                for (int k = 0; k < 50; ++k) {
+                    const double s = U(rng), t = U(rng);
+                    const HPoint X = evaluate_homogeneous(b, s, t);
+                    const Vec3 want = rational ? X.xyz() / X.w : X.xyz();
+                    const Vec3 got = evaluate_point(b, s, t);
+                    INFO("degrees " << p << "," << q << " rational " << rational);
+                    CHECK(got.x == want.x);
+                    CHECK(got.y == want.y);
+                    CHECK(got.z == want.z);
+                }
+            }
+}

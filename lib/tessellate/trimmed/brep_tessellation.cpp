@@ -174,19 +174,18 @@ Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
     r.meshes.resize(brep.faces.size());
     std::vector<int> pending(brep.faces.size());
     for (size_t f = 0; f < pending.size(); ++f) pending[f] = static_cast<int>(f);
-    // Per face: it met the limits in its last run, its mesh seeds a redo.
-    std::vector<char> met(brep.faces.size(), 0);
+    // Per face: its last run's mesh seeds a redo (face_seeds.h), unless the
+    // run failed or its interior is crowded beside the sides to halve.
+    std::vector<char> seeds(brep.faces.size(), 0);
     for (;; ++r.rounds) {
         FaceCriteria c = criteria;
         c.stop_when_encroached = r.rounds < kResplitRounds;
         for_each_item(static_cast<int>(pending.size()), threads, [&](int i) {
             FaceMesh& m = r.meshes[pending[i]];
-            m = met[pending[i]] ? triangulate_face(model, lines, pending[i], c, &m)
-                                : triangulate_face(model, lines, pending[i], c);
+            m = seeds[pending[i]] ? triangulate_face(model, lines, pending[i], c, &m)
+                                  : triangulate_face(model, lines, pending[i], c);
         });
-        for (int f : pending)
-            met[f] = !r.meshes[f].failed && r.meshes[f].encroached.empty() &&
-                     r.meshes[f].above_tolerance == 0;
+        for (int f : pending) seeds[f] = !r.meshes[f].failed && !r.meshes[f].crowded;
         r.face_runs += static_cast<long long>(pending.size());
         for (int f : pending) r.judged += r.meshes[f].judged;
         std::vector<int> redo;

@@ -3,6 +3,7 @@
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -53,6 +54,18 @@ constexpr int kMaxDepth = 24;
 // Tangents at a segment's ends are taken this fraction inside it.
 constexpr double kInside = 1e-9;
 
+// A segment end's data that both segments meeting there use: its 3D point,
+// and per face its (u,v) point and surface normal (computed when first
+// asked: across a crease it is not). Fixed arrays: no allocation per
+// segment; an edge used by more faces computes the rest each time.
+constexpr int kCachedUses = 4;
+struct SegmentEnd {
+    double t = 0;
+    Vec3 point;
+    std::array<Vec3, kCachedUses> uv, normal;
+    std::array<bool, kCachedUses> has_normal{};
+};
+
 struct Splitter {
     const BRep& brep;
     const BRepEdge& e;
@@ -68,31 +81,54 @@ struct Splitter {
                               : evaluate_point(brep.curves[e.curve], t);
     }
 
+    SegmentEnd end_at(double t) const {
+        SegmentEnd x;
+        x.t = t;
+        x.point = point(t);
+        for (size_t k = 0; k < uses.size() && k < kCachedUses; ++k)
+            x.uv[k] = evaluate_point(*uses[k].pcurve, t);
+        return x;
+    }
+    Vec3 uv(const SegmentEnd& x, size_t k) const {
+        return k < kCachedUses ? x.uv[k] : evaluate_point(*uses[k].pcurve, x.t);
+    }
+    Vec3 normal(SegmentEnd& x, size_t k) const {
+        const EdgeOnFace& use = uses[k];
+        if (k >= kCachedUses) return unit_normal(use.surface, uv(x, k), use.inward);
+        if (!x.has_normal[k]) x.normal[k] = unit_normal(use.surface, x.uv[k], use.inward);
+        x.has_normal[k] = true;
+        return x.normal[k];
+    }
+
     // The largest sampled distance of [a, b]'s curve and (u,v) images from
-    // its chord, or infinity when a tangent or normal turns too far.
-    double deviation(double a, double b) const {
-        const Vec3 pa = point(a), pb = point(b);
+    // its chord, or infinity when a tangent or normal turns too far; m is
+    // the middle's end data.
+    double deviation(SegmentEnd& a, SegmentEnd& b, SegmentEnd& m) const {
+        const Vec3 pa = a.point, pb = b.point;
         double d = 0;
         if (!e.degenerate()) {
             const BSplineCurve& curve = brep.curves[e.curve];
             constexpr int kSamples = 16;
             for (int k = 1; k < kSamples; ++k)
-                d = std::max(d, point_segment_distance(
-                                    evaluate_point(curve, a + (b - a) * k / kSamples), pa, pb));
+                d = std::max(d,
+                             point_segment_distance(
+                                 evaluate_point(curve, a.t + (b.t - a.t) * k / kSamples), pa, pb));
             // A span shorter than the samples' spacing could hide a wiggle.
             for (double knot : curve.knots)
-                if (knot > a && knot < b)
+                if (knot > a.t && knot < b.t)
                     d = std::max(d, point_segment_distance(evaluate_point(curve, knot), pa, pb));
             // The ends' tangents from inside [a, b]: at a kink (a break of
             // discretise_edge) the curve's other side turns away.
-            const double in = kInside * (b - a);
-            const Vec3 ta = evaluate(curve, a + in).tangent, tb = evaluate(curve, b - in).tangent,
-                       tm = evaluate(curve, 0.5 * (a + b)).tangent;
+            const double in = kInside * (b.t - a.t);
+            const Vec3 ta = evaluate(curve, a.t + in).tangent,
+                       tb = evaluate(curve, b.t - in).tangent,
+                       tm = evaluate(curve, 0.5 * (a.t + b.t)).tangent;
             if (limit.exceeded(ta, tm) || limit.exceeded(tm, tb) || limit.exceeded(ta, tb))
                 return INFINITY;
         }
-        for (const EdgeOnFace& use : uses) {
-            const Vec3 ua = evaluate_point(*use.pcurve, a), ub = evaluate_point(*use.pcurve, b);
+        for (size_t k = 0; k < uses.size(); ++k) {
+            const EdgeOnFace& use = uses[k];
+            const Vec3 ua = uv(a, k), ub = uv(b, k);
             for (double s : {0.25, 0.5, 0.75}) {
                 const Vec3 q = lerp(ua, ub, s);
                 // The tolerance is how far the surface is allowed to be.
@@ -101,11 +137,9 @@ struct Splitter {
             }
             // The midpoint too: a closed edge's ends have one normal. Across
             // a crease the normal jumps however short the segment.
-            const Vec3 um = evaluate_point(*use.pcurve, 0.5 * (a + b));
+            const Vec3 um = uv(m, k);
             if (use.surface.crosses_crease({ua, um, ub})) continue;
-            const Vec3 na = unit_normal(use.surface, ua, use.inward),
-                       nb = unit_normal(use.surface, ub, use.inward),
-                       nm = unit_normal(use.surface, um, use.inward);
+            const Vec3 na = normal(a, k), nb = normal(b, k), nm = normal(m, k);
             if (limit.exceeded(na, nm) || limit.exceeded(nm, nb) || limit.exceeded(na, nb))
                 return INFINITY;
         }
@@ -113,11 +147,11 @@ struct Splitter {
     }
 
     // Appends the points after a up to b.
-    void split(double a, double b, int depth) {
-        const double d = deviation(a, b);
-        const double m = 0.5 * (a + b);
-        const bool room =
-            depth < kMaxDepth && static_cast<int>(line.t.size()) < c.max_points && m > a && m < b;
+    void split(SegmentEnd& a, SegmentEnd& b, int depth) {
+        SegmentEnd m = end_at(0.5 * (a.t + b.t));
+        const double d = deviation(a, b, m);
+        const bool room = depth < kMaxDepth && static_cast<int>(line.t.size()) < c.max_points &&
+                          m.t > a.t && m.t < b.t;
         // Samples miss the largest deviation by a few per cent: aim below D.
         if (d > 0.9 * c.deviation && room) {
             split(a, m, depth + 1);
@@ -126,8 +160,8 @@ struct Splitter {
         }
         if (d > 0.9 * c.deviation) line.limited = true;
         if (std::isfinite(d)) line.deviation = std::max(line.deviation, d);
-        line.t.push_back(b);
-        line.points.push_back(point(b));
+        line.t.push_back(b.t);
+        line.points.push_back(b.point);
     }
 };
 
@@ -194,10 +228,12 @@ EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeO
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
     breaks.push_back(e.t1);
-    double a = e.t0;
-    for (double b : breaks) {
-        if (b > a) s.split(a, b, 0);
-        a = std::max(a, b);
+    SegmentEnd a = s.end_at(e.t0);
+    for (double t : breaks) {
+        if (!(t > a.t)) continue;
+        SegmentEnd b = s.end_at(t);
+        s.split(a, b, 0);
+        a = b;
     }
     drop_stationary_points(line, uses);
     return line;

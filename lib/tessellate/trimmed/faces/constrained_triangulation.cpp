@@ -21,6 +21,10 @@ struct VertexInfo {
 };
 struct FaceInfo {
     int nesting = -1; // constraints crossed from the infinite face; -1: not yet marked
+    // set_tag's value and the corners it was set for: CGAL reuses a face
+    // object for one of the triangles an insertion or a flip makes.
+    int tag = -1;
+    std::array<int, 3> tagged{-1, -1, -1};
 };
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -67,6 +71,7 @@ struct ConstrainedTriangulation::Impl {
     // a near vertex takes a few steps instead of O(sqrt n) (CGAL's locate
     // without a hint starts anywhere).
     std::vector<Cdt::Vertex_handle> vertex;
+    std::vector<Cdt::Face_handle> listed; // by the last triangles() list
 
     void mark_domain() {
         for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info().nesting = -1;
@@ -186,8 +191,9 @@ ConstrainedTriangulation::conflicts(const std::vector<Vec3>& points,
     return out;
 }
 
-void ConstrainedTriangulation::triangles(std::vector<DomainTriangle>& out) const {
+void ConstrainedTriangulation::triangles(std::vector<DomainTriangle>& out) {
     out.clear();
+    impl_->listed.clear();
     for (auto f = impl_->cdt.finite_faces_begin(); f != impl_->cdt.finite_faces_end(); ++f) {
         if (f->info().nesting % 2 != 1) continue;
         DomainTriangle t;
@@ -195,8 +201,16 @@ void ConstrainedTriangulation::triangles(std::vector<DomainTriangle>& out) const
             t.corners[k] = f->vertex(k)->info().index;
             t.boundary[k] = f->is_constrained(k);
         }
+        if (f->info().tagged == t.corners) t.tag = f->info().tag;
         out.push_back(t);
+        impl_->listed.push_back(f);
     }
+}
+
+void ConstrainedTriangulation::set_tag(int k, int tag) {
+    FaceInfo& info = impl_->listed[k]->info();
+    info.tag = tag;
+    for (int i = 0; i < 3; ++i) info.tagged[i] = impl_->listed[k]->vertex(i)->info().index;
 }
 
 int ConstrainedTriangulation::insert(Vec3 p, double clearance, int near) {

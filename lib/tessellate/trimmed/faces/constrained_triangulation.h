@@ -19,6 +19,7 @@ namespace seamless {
 struct DomainTriangle {
     std::array<int, 3> corners;   // point indices, counter-clockwise
     std::array<bool, 3> boundary; // edge opposite corner k is a constraint
+    int tag = -1; // set_tag's value, while the triangle has the same corners; else -1
 };
 
 class ConstrainedTriangulation {
@@ -48,7 +49,11 @@ class ConstrainedTriangulation {
                                            const std::vector<std::int64_t>& keys,
                                            const std::vector<std::array<int, 2>>& segments);
     // The domain's triangles, in the triangulation's (deterministic) order.
-    void triangles(std::vector<DomainTriangle>& out) const;
+    void triangles(std::vector<DomainTriangle>& out);
+    // Tags triangle k of the last triangles() list: a caller's note (a
+    // verdict) that comes back with the triangle as long as insertions leave
+    // it as it is, without a lookup by its corners.
+    void set_tag(int k, int tag);
     // Inserts p as point size() when it lies strictly inside a domain
     // triangle at least `clearance` from its corners and from its boundary
     // edges; returns its index, else kOutside (outside the domain or too near

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Seeds of a redone face: a face whose own triangles all met the limits is
-// redone only because a neighbour's round re-split an edge they share. Its
-// earlier interior points are inserted again before refinement, but those
-// within a new boundary segment's length of a new boundary point (a point of
-// the new loops the earlier ones did not have), so that only the triangles
-// near the change are refined afresh (triangulate_face's `seeds`).
+// Seeds of a redone face: a face is redone after a round re-split edges of
+// its own (segments its triangles encroached on) or of a neighbour's that it
+// shares. Its earlier interior points are inserted again before refinement,
+// but those within a new boundary segment's length of a new boundary point
+// (a point of the new loops the earlier ones did not have), so that only the
+// triangles near the change are refined afresh (triangulate_face's
+// `seeds`). Not after a run that failed or ran on beside the sides it
+// encroached on (FaceMesh::crowded): its points there would stay.
 #pragma once
 
 #include <seamless/tessellate/trimmed/face_surface.h>

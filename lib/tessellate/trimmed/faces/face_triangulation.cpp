@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <unordered_map>
 
 namespace seamless {
 
@@ -91,19 +90,6 @@ double distance_to_surface(const FaceSurface& s, Vec3 q, Vec3 uv, double enough)
     }
     return best;
 }
-
-// A triangle by its corners, rotated to start at the smallest.
-using TriangleKey = std::array<int, 3>;
-TriangleKey key_of(std::array<int, 3> c) {
-    while (c[0] > c[1] || c[0] > c[2]) c = {c[1], c[2], c[0]};
-    return c;
-}
-struct TriangleKeyHash {
-    size_t operator()(const TriangleKey& k) const {
-        return (static_cast<size_t>(k[0]) * 0x9E3779B97F4A7C15ull) ^
-               (static_cast<size_t>(k[1]) * 0xC2B2AE3D27D4EB4Full) ^ static_cast<size_t>(k[2]);
-    }
-};
 
 // Thin in the scaled domain: between loops that run along each other
 // (touching_loops.h) there is no room for a point whatever the 3D corners,
@@ -340,61 +326,62 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     if (seeds) insert_seeds(s, seeds->domain, d, cdt);
     Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}, {}, 0};
     std::vector<DomainTriangle> tris;
-    std::vector<Verdict> verdicts;
-    // A triangle the insertions left alone keeps its verdict.
-    std::unordered_map<TriangleKey, Verdict, TriangleKeyHash> known;
+    // Verdicts, by the triangles' tags: a triangle the insertions left alone
+    // keeps its verdict.
+    std::vector<Verdict> judged;
     std::vector<int> failing;
     bool stopped = false; // by FaceCriteria::stop_when_encroached
+    const size_t runaway = kStopPerBoundaryPoint * static_cast<size_t>(d.boundary_points);
     for (int round = 0;; ++round) {
         cdt.triangles(tris);
         if (static_cast<std::int64_t>(tris.size()) > criteria.max_triangles)
             throw TriangleBudgetError(model.source, "brep.faces[" + std::to_string(face) + "]",
                                       criteria.max_triangles);
-        verdicts.resize(tris.size());
         failing.clear();
         for (size_t i = 0; i < tris.size(); ++i) {
-            const TriangleKey key = key_of(tris[i].corners);
-            const auto hit = known.find(key);
-            if (hit == known.end()) ++out.judged;
-            verdicts[i] = hit != known.end() ? hit->second : known[key] = r.judge(tris[i], false);
-            if (verdicts[i].split) failing.push_back(static_cast<int>(i));
+            if (tris[i].tag < 0) {
+                tris[i].tag = static_cast<int>(judged.size());
+                judged.push_back(r.judge(tris[i], false));
+                cdt.set_tag(static_cast<int>(i), tris[i].tag);
+            }
+            if (judged[tris[i].tag].split) failing.push_back(static_cast<int>(i));
         }
         if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
-        if (criteria.stop_when_encroached &&
-            tris.size() > std::min(kStopSize, kStopPerBoundaryPoint *
-                                                  static_cast<size_t>(d.boundary_points)) &&
+        if (criteria.stop_when_encroached && tris.size() > std::min(kStopSize, runaway) &&
             !r.encroached_sides(kPersistent).empty()) {
             stopped = true;
             break;
         }
         r.round = round;
         // The worst first: their points make room that their neighbours' need not.
-        std::stable_sort(failing.begin(), failing.end(),
-                         [&](int a, int b) { return verdicts[a].badness > verdicts[b].badness; });
+        std::stable_sort(failing.begin(), failing.end(), [&](int a, int b) {
+            return judged[tris[a].tag].badness > judged[tris[b].tag].badness;
+        });
         bool inserted = false;
         for (int i : failing)
             if (r.insert_for(cdt, tris[i])) inserted = true;
         if (!inserted) break;
     }
+    out.crowded = stopped && tris.size() > runaway;
     if (stopped)
         out.encroached = segments_of(d, r.encroached_sides(kPersistent));
-    else if (std::any_of(verdicts.begin(), verdicts.end(),
-                         [](const Verdict& v) { return v.split; }))
+    else if (!failing.empty())
         out.encroached = segments_of(d, r.encroached_sides(1));
-    for (size_t i = 0; i < tris.size(); ++i) {
-        if (verdicts[i].split && !verdicts[i].drop) verdicts[i] = r.judge(tris[i], true);
-        const Verdict& v = verdicts[i];
+    out.judged = static_cast<long long>(judged.size());
+    for (const DomainTriangle& t : tris) {
+        Verdict& v = judged[t.tag];
+        if (v.split && !v.drop) v = r.judge(t, true);
         if (v.drop) continue;
         if (v.split) ++out.above_tolerance;
         out.deviation = std::max(out.deviation, v.deviation);
-        std::array<int, 3> t = tris[i].corners;
+        std::array<int, 3> c = t.corners;
         std::array<Vec3, 3> n = v.normals;
         if (f.reversed) {
-            std::swap(t[1], t[2]);
+            std::swap(c[1], c[2]);
             std::swap(n[1], n[2]);
             for (Vec3& x : n) x = -x;
         }
-        out.triangles.push_back(t);
+        out.triangles.push_back(c);
         out.normals.push_back(n);
     }
     return out;

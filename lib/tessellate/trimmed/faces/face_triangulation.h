@@ -41,12 +41,15 @@ struct FaceMesh {
     // (Ruppert's encroachment): no interior point mends such a triangle,
     // halving the segment does.
     std::vector<int> encroached;
+    // Stopped by stop_when_encroached after its refinement ran on beside
+    // those segments (more triangles per boundary point than converged
+    // faces have): its interior points would crowd a redo.
+    bool crowded = false;
 };
 
 // Throws TriangleBudgetError (file `model.source`) past max_triangles.
-// `seeds`, when given, is an earlier mesh of the face whose own triangles
-// all met the limits, redone after a neighbour's round re-split an edge they
-// share (face_seeds.h).
+// `seeds`, when given, is an earlier mesh of the face, redone after a
+// round re-split edges of its own or of a neighbour's (face_seeds.h).
 FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& lines, int face,
                           const FaceCriteria& criteria, const FaceMesh* seeds = nullptr);
 

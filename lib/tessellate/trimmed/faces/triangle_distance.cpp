@@ -19,13 +19,19 @@ TriangleFrame::TriangleFrame(Vec3 a, Vec3 b, Vec3 c) : corner_{a, b, c} {
 }
 
 double TriangleFrame::distance(Vec3 p) const {
-    // Inside the prism over the triangle: the distance to its plane.
-    if (flat_ && dot(p - corner_[0], side_[0]) >= 0 && dot(p - corner_[1], side_[1]) >= 0 &&
-        dot(p - corner_[2], side_[2]) >= 0)
-        return std::abs(dot(p - corner_[0], unit_));
-    return std::min({point_segment_distance(p, corner_[0], corner_[1]),
-                     point_segment_distance(p, corner_[1], corner_[2]),
-                     point_segment_distance(p, corner_[2], corner_[0])});
+    if (!flat_)
+        return std::min({point_segment_distance(p, corner_[0], corner_[1]),
+                         point_segment_distance(p, corner_[1], corner_[2]),
+                         point_segment_distance(p, corner_[2], corner_[0])});
+    // Inside the prism over the triangle: the distance to its plane. Else
+    // the nearest point is on a side whose plane p is beyond (the triangle
+    // is convex).
+    double nearest = INFINITY;
+    for (int k = 0; k < 3; ++k)
+        if (dot(p - corner_[k], side_[k]) < 0)
+            nearest =
+                std::min(nearest, point_segment_distance(p, corner_[k], corner_[(k + 1) % 3]));
+    return nearest < INFINITY ? nearest : std::abs(dot(p - corner_[0], unit_));
 }
 
 double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {

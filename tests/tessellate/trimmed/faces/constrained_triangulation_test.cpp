@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 
 using namespace seamless;
@@ -29,7 +31,7 @@ struct Loops {
     }
 };
 
-double area(const ConstrainedTriangulation& cdt, const std::vector<Vec3>& points) {
+double area(ConstrainedTriangulation& cdt, const std::vector<Vec3>& points) {
     std::vector<DomainTriangle> tris;
     cdt.triangles(tris);
     double sum = 0;
@@ -98,4 +100,39 @@ TEST_CASE("trimmed faces: a loop collapsed onto one line is refused, not marked"
     flat.add({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
     ConstrainedTriangulation line;
     CHECK_FALSE(line.build(flat.points, flat.keys, flat.segments));
+}
+
+TEST_CASE("constrained triangulation: a tag stays with a triangle until an insertion changes it",
+          "[brep]") {
+    Loops l;
+    l.add({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}});
+    l.add({{1, 1, 0}, {1, 2, 0}, {2, 2, 0}, {2, 1, 0}});
+    ConstrainedTriangulation cdt;
+    REQUIRE(cdt.build(l.points, l.keys, l.segments));
+    std::vector<DomainTriangle> before;
+    cdt.triangles(before);
+    for (size_t k = 0; k < before.size(); ++k) {
+        CHECK(before[k].tag == -1);
+        cdt.set_tag(static_cast<int>(k), static_cast<int>(k));
+    }
+    REQUIRE(cdt.insert({3.2, 2.6, 0}, 0.1, 0) == 8);
+    std::vector<DomainTriangle> after;
+    cdt.triangles(after);
+    int kept = 0, fresh = 0;
+    for (const DomainTriangle& t : after) {
+        // Tagged: the very triangle tagged before (same corners in order);
+        // untagged: touching the new point or a triangle the insertion flipped.
+        if (t.tag >= 0) {
+            REQUIRE(t.tag < static_cast<int>(before.size()));
+            CHECK(before[t.tag].corners == t.corners);
+            ++kept;
+        } else {
+            const bool listed = std::any_of(before.begin(), before.end(),
+                                            [&](const auto& b) { return b.corners == t.corners; });
+            CHECK((!listed || t.corners[0] == 8 || t.corners[1] == 8 || t.corners[2] == 8));
+            ++fresh;
+        }
+    }
+    CHECK(kept > 0);
+    CHECK(fresh >= 3); // the new point's fan
 }
