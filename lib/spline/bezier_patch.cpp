@@ -9,9 +9,7 @@
 #include <limits>
 
 namespace seamless {
-namespace {
 
-// Bernstein values B_i^n(s) and derivatives d/ds B_i^n(s), i = 0..n.
 void bernstein(int n, double s, double* B, double* dB) {
     // Degree n-1 values first (for the derivative), then one more step.
     double tmp[BezierPatch::kMaxOrder];
@@ -39,6 +37,8 @@ void bernstein(int n, double s, double* B, double* dB) {
         dB[i] = n * (a - b);
     }
 }
+
+namespace {
 
 // X(s,t) and its partial derivatives in homogeneous coordinates.
 void homogeneous_derivatives(const BezierPatch& b, double s, double t, HPoint& X, HPoint& Xu,

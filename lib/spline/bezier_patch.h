@@ -44,6 +44,10 @@ struct BezierPatch {
     double v_at(double t) const { return v0 + t * (v1 - v0); }
 };
 
+// Bernstein values B_i^n(s) and derivatives d/ds B_i^n(s), i = 0..n
+// (n <= kMaxDegree).
+void bernstein(int n, double s, double* B, double* dB);
+
 // Point, derivatives with respect to the LOCAL parameters (s, t) in [0,1]^2, and
 // normal. Multiply du by 1/(u1-u0) for derivatives on the source surface.
 SurfacePoint evaluate(const BezierPatch& b, double s, double t);

@@ -2,7 +2,8 @@
 #include <seamless/tessellate/trimmed/brep_mesh.h>
 
 #include <algorithm>
-#include <map>
+#include <utility>
+#include <vector>
 
 namespace seamless {
 
@@ -15,12 +16,14 @@ namespace {
 // ear's outer points then joins the faces' other triangles, the edge's
 // middle point is left unused, and the mesh stays closed and manifold.
 void remove_fins(TriangleMesh& m) {
-    std::map<std::array<int, 3>, std::vector<int>> by_corners;
+    // Triangles by their sorted corners, in one sorted array (no node per triangle).
+    std::vector<std::pair<std::array<int, 3>, int>> by_corners(m.triangles.size());
     for (int t = 0; t < m.triangle_count(); ++t) {
         std::array<int, 3> key = m.triangles[t];
         std::sort(key.begin(), key.end());
-        by_corners[key].push_back(t);
+        by_corners[t] = {key, t};
     }
+    std::sort(by_corners.begin(), by_corners.end());
     const auto opposite = [&](int a, int b) {
         const auto& x = m.triangles[a];
         const auto& y = m.triangles[b];
@@ -30,11 +33,14 @@ void remove_fins(TriangleMesh& m) {
     };
     std::vector<char> drop(m.triangles.size(), 0);
     bool any = false;
-    for (const auto& [key, list] : by_corners)
-        for (size_t i = 0; i < list.size(); ++i)
-            for (size_t j = i + 1; j < list.size() && !drop[list[i]]; ++j)
-                if (!drop[list[j]] && opposite(list[i], list[j]))
-                    drop[list[i]] = drop[list[j]] = 1, any = true;
+    for (size_t begin = 0, end = 0; begin < by_corners.size(); begin = end) {
+        while (end < by_corners.size() && by_corners[end].first == by_corners[begin].first) ++end;
+        for (size_t i = begin; i < end; ++i)
+            for (size_t j = i + 1; j < end && !drop[by_corners[i].second]; ++j) {
+                const int a = by_corners[i].second, b = by_corners[j].second;
+                if (!drop[b] && opposite(a, b)) drop[a] = drop[b] = 1, any = true;
+            }
+    }
     if (!any) return;
     size_t kept = 0;
     for (size_t t = 0; t < drop.size(); ++t) {

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/segment_distance.h>
+#include <seamless/spline/span_segments.h>
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace seamless {
@@ -72,6 +74,7 @@ struct Splitter {
     const std::vector<EdgeOnFace>& uses;
     const EdgeCriteria& c;
     EdgePolyline& line;
+    SpanSegments* samples = nullptr; // the curve's, for the chord samples (not degenerate)
     const AngleLimit limit = AngleLimit(c.angle);
 
     Vec3 point(double t) const {
@@ -110,13 +113,12 @@ struct Splitter {
             const BSplineCurve& curve = brep.curves[e.curve];
             constexpr int kSamples = 16;
             for (int k = 1; k < kSamples; ++k)
-                d = std::max(d,
-                             point_segment_distance(
-                                 evaluate_point(curve, a.t + (b.t - a.t) * k / kSamples), pa, pb));
+                d = std::max(d, point_segment_distance(
+                                    samples->point(a.t + (b.t - a.t) * k / kSamples), pa, pb));
             // A span shorter than the samples' spacing could hide a wiggle.
-            for (double knot : curve.knots)
-                if (knot > a.t && knot < b.t)
-                    d = std::max(d, point_segment_distance(evaluate_point(curve, knot), pa, pb));
+            for (auto knot = std::upper_bound(curve.knots.begin(), curve.knots.end(), a.t);
+                 knot != curve.knots.end() && *knot < b.t; ++knot)
+                d = std::max(d, point_segment_distance(samples->point(*knot), pa, pb));
             // The ends' tangents from inside [a, b]: at a kink (a break of
             // discretise_edge) the curve's other side turns away.
             const double in = kInside * (b.t - a.t);
@@ -206,7 +208,9 @@ EdgePolyline discretise_edge(const BRep& brep, int edge, const std::vector<EdgeO
                              const EdgeCriteria& criteria) {
     const BRepEdge& e = brep.edges[edge];
     EdgePolyline line;
-    Splitter s{brep, e, uses, criteria, line};
+    std::optional<SpanSegments> samples;
+    if (!e.degenerate()) samples.emplace(brep.curves[e.curve]);
+    Splitter s{brep, e, uses, criteria, line, samples ? &*samples : nullptr};
     line.t.push_back(e.t0);
     line.points.push_back(s.point(e.t0));
     // A closed edge needs three segments to bound anything; a curve only C0

@@ -201,7 +201,10 @@ void ConstrainedTriangulation::triangles(std::vector<DomainTriangle>& out) {
             t.corners[k] = f->vertex(k)->info().index;
             t.boundary[k] = f->is_constrained(k);
         }
-        if (f->info().tagged == t.corners) t.tag = f->info().tag;
+        // Element by element: std::array's == is a call to memcmp.
+        const std::array<int, 3>& was = f->info().tagged;
+        if (was[0] == t.corners[0] && was[1] == t.corners[1] && was[2] == t.corners[2])
+            t.tag = f->info().tag;
         out.push_back(t);
         impl_->listed.push_back(f);
     }
