@@ -9,18 +9,27 @@
 // process") documents it.
 //
 // One writer and one reader for the whole Model: a member added to Model is
-// added to both, in model_exchange.cpp, and its test (model_exchange_test)
-// fails until it is.
+// added to both, in the model_exchange files (model_exchange_codec.h), and
+// its test (model_exchange_test) fails until it is.
 #pragma once
 
 #include <seamless/model/model.h>
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
 namespace seamless {
 
 std::string write_model_exchange(const Model& m);
+// The size of write_model_exchange(m), without writing it.
+std::uint64_t model_exchange_size(const Model& m);
+// The same bytes handed to `sink` in pieces, the large arrays straight from
+// the model (the reader's process answers this way: the whole form is never
+// held). Stops at the first piece the sink refuses, and returns false then.
+bool write_model_exchange(const Model& m,
+                          const std::function<bool(const char*, std::size_t)>& sink);
 
 // Trusts nothing: a hostile file may have made the reader's process misbehave
 // (tests/fuzz/fuzz_model_exchange.cpp). Every count is checked against the
