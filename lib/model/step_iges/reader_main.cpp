@@ -62,12 +62,16 @@ void* watched(void* p) {
 }
 } // namespace
 
-// glibc's allocator under this executable's malloc, calloc and realloc, which
-// every library's calls resolve to (ASan has its own allocator: not there).
+// glibc's allocator under this executable's allocation functions, which
+// every library's calls resolve to (ASan has its own allocator: not there):
+// those that OpenCASCADE and the libraries it loads call (nm -D: malloc,
+// calloc and realloc everywhere, posix_memalign in TKernel's aligned
+// allocations, aligned_alloc in libstdc++'s aligned new, memalign in TBB's).
 extern "C" {
 void* __libc_malloc(size_t size);
 void* __libc_calloc(size_t n, size_t size);
 void* __libc_realloc(void* p, size_t size);
+void* __libc_memalign(size_t alignment, size_t size);
 
 void* malloc(size_t size) noexcept {
     return watched(__libc_malloc(size));
@@ -78,6 +82,20 @@ void* calloc(size_t n, size_t size) noexcept {
 void* realloc(void* p, size_t size) noexcept {
     void* q = __libc_realloc(p, size);
     return size == 0 ? q : watched(q); // realloc(p, 0) frees p
+}
+void* memalign(size_t alignment, size_t size) noexcept {
+    return watched(__libc_memalign(alignment, size));
+}
+void* aligned_alloc(size_t alignment, size_t size) noexcept { // glibc 2.36's is memalign's
+    return watched(__libc_memalign(alignment, size));
+}
+int posix_memalign(void** p, size_t alignment, size_t size) noexcept {
+    if (alignment == 0 || alignment % sizeof(void*) != 0 || (alignment & (alignment - 1)) != 0)
+        return EINVAL;
+    void* q = watched(__libc_memalign(alignment, size));
+    if (!q) return ENOMEM;
+    *p = q;
+    return 0;
 }
 }
 #endif
