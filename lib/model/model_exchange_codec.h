@@ -32,7 +32,8 @@ static_assert(sizeof(Vec3) == 3 * sizeof(double), "points are written as their d
 class ExchangeWriter {
   public:
     using Sink = std::function<bool(const char*, std::size_t)>;
-    static constexpr std::size_t kPiece = std::size_t(1) << 20; // the answer pipe's size
+    static constexpr std::size_t kPiece = std::size_t(1)
+                                          << 20; // a pipe's worth (step_iges_process.h)
 
     // Counts only.
     ExchangeWriter() = default;
