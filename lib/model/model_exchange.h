@@ -38,9 +38,9 @@ bool write_model_exchange(const Model& m,
 // against its list, so that no later stage reads out of bounds. The geometric
 // checks of validate_brep (loops closed in (u,v), pcurves inside their
 // surface's domain), which the reader's process ran on this same model before
-// writing it, are not repeated: they cost a fifth of the read
-// (docs/results/step_iges_boundary.md). Throws InputError naming `file` and
-// the field ("exchange.surfaces[3].knots_u: ...").
+// writing it, are not repeated: they alone would take most of the boundary's
+// budget, or more (docs/results/step_iges_boundary.md). Throws
+// InputError naming `file` and the field ("exchange.surfaces[3].knots_u: ...").
 Model read_model_exchange(std::string_view bytes, const std::string& file,
                           const ModelLimits& limits = {});
 
