@@ -57,11 +57,12 @@ void validate_points(const std::vector<Vec3>& points, const std::string& file,
                      const std::string& field) {
     for (size_t k = 0; k < points.size(); ++k) {
         const Vec3 p = points[k];
-        const std::string fk = field + "[" + std::to_string(k) + "]";
-        if (!is_finite(p)) throw InputError(file, fk, "not a finite point");
+        // The field's name only on failure: a model has up to millions of points.
+        const auto fk = [&] { return field + "[" + std::to_string(k) + "]"; };
+        if (!is_finite(p)) throw InputError(file, fk(), "not a finite point");
         for (int i = 0; i < 3; ++i)
             if (std::abs(p[i]) > kMaxCoordinate)
-                throw InputError(file, fk + "[" + std::to_string(i) + "]",
+                throw InputError(file, fk() + "[" + std::to_string(i) + "]",
                                  "coordinate " + fmt(p[i]) + " beyond the limit of " +
                                      fmt(kMaxCoordinate) + " (docs/formats.md, Limits)");
     }

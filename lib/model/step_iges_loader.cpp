@@ -103,9 +103,11 @@ class Worker {
     }
 
     // Reads fd into `out` until it holds `size` bytes or the end; false when
-    // the deadline passed first.
+    // the deadline passed first. Straight into out's room (reserved for a
+    // model: a pipe's worth a call); past it (the end, or more than the
+    // worker said) through a small buffer.
     bool read_all(int fd, size_t size, Clock::time_point deadline, std::string& out) const {
-        char buf[1 << 16];
+        char spare[1 << 12];
         while (out.size() < size) {
             if (Clock::now() >= deadline) return false;
             pollfd p{fd, POLLIN, 0};
@@ -114,11 +116,19 @@ class Worker {
                 fail("cannot read the STEP/IGES reader's answer (" +
                      std::string(std::strerror(errno)) + ")");
             if (r <= 0) continue;
-            const ssize_t n = read(fd, buf, std::min(sizeof buf, size - out.size()));
+            const size_t at = out.size();
+            const size_t room = std::min(
+                {size - at, out.capacity() - at, static_cast<size_t>(proc::kAnswerPipeBytes)});
+            ssize_t n;
+            if (room > 0) {
+                out.resize(at + room);
+                n = read(fd, out.data() + at, room);
+                out.resize(at + static_cast<size_t>(std::max<ssize_t>(n, 0)));
+            } else if ((n = read(fd, spare, std::min(sizeof spare, size - at))) > 0) {
+                out.append(spare, static_cast<size_t>(n));
+            }
             if (n == 0) return true;
-            if (n > 0)
-                out.append(buf, static_cast<size_t>(n));
-            else if (errno != EINTR && errno != EAGAIN)
+            if (n < 0 && errno != EINTR && errno != EAGAIN)
                 fail("cannot read the STEP/IGES reader's answer (" +
                      std::string(std::strerror(errno)) + ")");
         }

@@ -30,6 +30,10 @@ inline constexpr int kServerFd = 3;
 inline constexpr int kOutOfMemory = 3; // exit status: an allocation failed
 inline constexpr int kUsage = 64;      // exit status: not run by the library
 inline constexpr char kModelAnswer = 'M';
+// The answer pipe's size: a large model is tens of MB, and a pipe of 1 MiB
+// (Linux's limit for a user) takes it in fewer turns of the worker and the
+// caller than one of 64 KiB.
+inline constexpr int kAnswerPipeBytes = 1 << 20;
 
 // The options as one argument (every field, doubles exactly) and back;
 // decode_options returns false on any defect.

@@ -154,9 +154,7 @@ RequestPipes request_read(const std::string& file, const ModelLoadOptions& optio
                          std::string("cannot start the STEP/IGES reader (pipe: ") +
                              std::strerror(e) + ")");
     }
-    // A large model is tens of MB: a pipe of 1 MiB (Linux's limit for a user)
-    // takes it in fewer turns of the worker and the caller than one of 64 KiB.
-    fcntl(answer[0], F_SETPIPE_SZ, 1 << 20); // a failure leaves the default
+    fcntl(answer[0], F_SETPIPE_SZ, kAnswerPipeBytes); // a failure leaves the default
     const std::string payload = encode_options(options) + '\0' + file;
     std::string error;
     bool sent = false;

@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 
@@ -103,6 +104,40 @@ TEST_CASE("The exchange form carries an assembly: parts, placed nodes, colours a
     bad.assembly.layers.back().faces = {0, 5};
     CHECK_THAT(error_of(write_model_exchange(bad)),
                Catch::Contains("assembly.layers[1].faces[1]: index 5 out of range"));
+}
+
+TEST_CASE("The streamed form is the written form, its size known beforehand", "[model][exchange]") {
+    // A surface of 1.2 MB of points: an array larger than a piece goes out
+    // whole, the small members around it in pieces.
+    Model m = full_model();
+    BSplineSurface& s = m.surfaces[0];
+    s.size_u = s.size_v = 224;
+    s.knots_u = s.knots_v = {};
+    for (int k = 0; k < 224 + s.degree_u + 1; ++k)
+        s.knots_u.push_back(std::clamp(k - s.degree_u, 0, 224 - s.degree_u));
+    s.knots_v = s.knots_u;
+    s.points.assign(224 * 224, Vec3{1, 2, 3});
+    s.weights.clear();
+    const std::string bytes = write_model_exchange(m);
+    REQUIRE(bytes.size() > (std::size_t(1) << 20));
+    CHECK(model_exchange_size(m) == bytes.size());
+    std::string streamed;
+    int pieces = 0;
+    CHECK(write_model_exchange(m, [&](const char* p, std::size_t n) {
+        streamed.append(p, n);
+        ++pieces;
+        return true;
+    }));
+    CHECK(streamed == bytes);
+    CHECK(pieces >= 3);
+    CHECK(write_model_exchange(read_model_exchange(bytes, "x.step")) == bytes);
+    // A sink that refuses: no more pieces, and false.
+    int offered = 0;
+    CHECK_FALSE(write_model_exchange(m, [&](const char*, std::size_t) {
+        ++offered;
+        return false;
+    }));
+    CHECK(offered == 1);
 }
 
 TEST_CASE("Every truncation and every flipped byte of an answer is refused or read whole",

@@ -12,9 +12,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <dlfcn.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -37,6 +40,27 @@ bool maps_opencascade() {
     while (std::getline(maps, line))
         if (line.find("libTK") != std::string::npos) return true;
     return false;
+}
+
+// What a shell command prints on stdout; it must succeed.
+std::string output_of(const std::string& command) {
+    std::FILE* p = popen(command.c_str(), "r");
+    REQUIRE(p);
+    std::string out;
+    char buf[4096];
+    while (size_t k = std::fread(buf, 1, sizeof buf, p)) out.append(buf, k);
+    REQUIRE(pclose(p) == 0);
+    return out;
+}
+
+// The dynamic symbols of an ELF file that nm lists with `which`: names without versions.
+std::set<std::string> dynamic_symbols(const std::string& file, const char* which) {
+    std::istringstream lines(output_of("nm -D " + std::string(which) + " " + test::quoted(file)));
+    std::set<std::string> names;
+    for (std::string line; std::getline(lines, line);)
+        if (const size_t space = line.rfind(' '); space != std::string::npos)
+            names.insert(line.substr(space + 1, line.find('@', space) - space - 1));
+    return names;
 }
 
 std::filesystem::path corpus(const std::string& name) {
@@ -164,4 +188,36 @@ TEST_CASE("An InputError of the reader reaches the caller as it was raised",
         CHECK(e.file() == f.string());
         CHECK_THAT(e.message(), !Catch::Contains("crashed") && !Catch::Contains("malformed"));
     }
+}
+
+TEST_CASE("Every allocation function the reader's libraries call is the reader's own, which "
+          "watches it for a memory blow-up",
+          "[model][step_iges][heavy][native-allocator]") {
+    // The reader is beside the library (step_iges_server.cpp).
+    Dl_info info{};
+    REQUIRE(dladdr(reinterpret_cast<void*>(&read_model_exchange), &info));
+    const auto reader = std::filesystem::path(info.dli_fname).parent_path() / "seamless-step-iges";
+    const std::set<std::string> own = dynamic_symbols(reader, "--defined-only");
+    const std::set<std::string> allocators = {"malloc",         "calloc",        "realloc",
+                                              "posix_memalign", "aligned_alloc", "memalign",
+                                              "valloc",         "pvalloc"};
+    // ldd: "libTKernel.so.7 => /usr/lib/.../libTKernel.so.7 (0x...)", each library it loads.
+    std::istringstream libraries(output_of("ldd " + test::quoted(reader)));
+    int opencascade = 0;
+    std::set<std::string> called;
+    for (std::string line; std::getline(libraries, line);) {
+        const size_t arrow = line.find("=> /");
+        if (arrow == std::string::npos || line.find("/libc.so") != std::string::npos) continue;
+        const std::string library = line.substr(arrow + 3, line.find(" (", arrow) - arrow - 3);
+        opencascade += library.find("libTK") != std::string::npos;
+        for (const std::string& f : dynamic_symbols(library, "--undefined-only"))
+            if (allocators.count(f)) {
+                INFO(library << " calls " << f);
+                CHECK(own.count(f) == 1);
+                called.insert(f);
+            }
+    }
+    CHECK(opencascade > 10);
+    CHECK(called.count("malloc") == 1);
+    CHECK(called.count("posix_memalign") == 1); // TKernel's aligned allocations
 }

@@ -62,12 +62,16 @@ void* watched(void* p) {
 }
 } // namespace
 
-// glibc's allocator under this executable's malloc, calloc and realloc, which
-// every library's calls resolve to (ASan has its own allocator: not there).
+// glibc's allocator under this executable's allocation functions, which
+// every library's calls resolve to (ASan has its own allocator: not there):
+// those that OpenCASCADE and the libraries it loads call (nm -D: malloc,
+// calloc and realloc everywhere, posix_memalign in TKernel's aligned
+// allocations, aligned_alloc in libstdc++'s aligned new, memalign in TBB's).
 extern "C" {
 void* __libc_malloc(size_t size);
 void* __libc_calloc(size_t n, size_t size);
 void* __libc_realloc(void* p, size_t size);
+void* __libc_memalign(size_t alignment, size_t size);
 
 void* malloc(size_t size) noexcept {
     return watched(__libc_malloc(size));
@@ -78,6 +82,20 @@ void* calloc(size_t n, size_t size) noexcept {
 void* realloc(void* p, size_t size) noexcept {
     void* q = __libc_realloc(p, size);
     return size == 0 ? q : watched(q); // realloc(p, 0) frees p
+}
+void* memalign(size_t alignment, size_t size) noexcept {
+    return watched(__libc_memalign(alignment, size));
+}
+void* aligned_alloc(size_t alignment, size_t size) noexcept { // glibc 2.36's is memalign's
+    return watched(__libc_memalign(alignment, size));
+}
+int posix_memalign(void** p, size_t alignment, size_t size) noexcept {
+    if (alignment == 0 || alignment % sizeof(void*) != 0 || (alignment & (alignment - 1)) != 0)
+        return EINVAL;
+    void* q = watched(__libc_memalign(alignment, size));
+    if (!q) return ENOMEM;
+    *p = q;
+    return 0;
 }
 }
 #endif
@@ -148,9 +166,9 @@ bool write_all(int fd, const void* data, size_t size) {
 }
 
 // The worker: reads `file` and answers on `answer`; never returns. The model
-// goes out as its tag, its size and its bytes, not as one string: a copy of a
-// large model (26 MB for 11752) costs as much as the pipe
-// (docs/results/step_iges_boundary.md).
+// goes out as its tag, its size and its bytes, streamed from the model
+// (write_model_exchange's sink): building the whole form first cost a copy of
+// it in fresh pages (26 MB for 11752; docs/results/step_iges_boundary.md).
 [[noreturn]] void work(int answer, const seamless::ModelLoadOptions& options, const char* file) {
     sigset_t none;
     sigemptyset(&none);
@@ -158,24 +176,28 @@ bool write_all(int fd, const void* data, size_t size) {
     signal(SIGPIPE, SIG_DFL);
     prctl(PR_SET_PDEATHSIG, SIGKILL); // the server's end is the worker's
     limit_self(options.reader_memory_limit);
-    std::string model, error;
+    std::string error;
+    bool sent = false;
     try {
-        model = seamless::write_model_exchange(
-            seamless::step_iges::read_step_iges_in_process(file, options));
+        // Never freed: the worker's _exit drops its heap at once.
+        const auto* model =
+            new seamless::Model(seamless::step_iges::read_step_iges_in_process(file, options));
+        // Whatever the read made of a failed allocation (an error, or a model
+        // without what it could not hold), it ran out of memory.
+        if (allocation_failed.load()) _exit(proc::kOutOfMemory);
+        char head[1 + sizeof(std::uint64_t)] = {proc::kModelAnswer};
+        const std::uint64_t size = seamless::model_exchange_size(*model);
+        std::memcpy(head + 1, &size, sizeof size);
+        sent = write_all(answer, head, sizeof head) &&
+               seamless::write_model_exchange(
+                   *model, [&](const char* p, size_t n) { return write_all(answer, p, n); });
     } catch (const seamless::InputError& e) {
         error = proc::encode_error(e);
     } catch (const std::bad_alloc&) {
         _exit(proc::kOutOfMemory);
     }
-    // Whatever the read made of a failed allocation (an error, or a model
-    // without what it could not hold), it ran out of memory.
-    if (allocation_failed.load()) _exit(proc::kOutOfMemory);
-    char head[1 + sizeof(std::uint64_t)] = {proc::kModelAnswer};
-    const std::uint64_t size = model.size();
-    std::memcpy(head + 1, &size, sizeof size);
-    const bool sent = error.empty() ? write_all(answer, head, sizeof head) &&
-                                          write_all(answer, model.data(), model.size())
-                                    : write_all(answer, error.data(), error.size());
+    if (allocation_failed.load()) _exit(proc::kOutOfMemory); // and a read that ended in an error
+    if (!error.empty()) sent = write_all(answer, error.data(), error.size());
     // _exit: OpenCASCADE's global tables need no tearing down.
     _exit(sent ? 0 : 1);
 }
