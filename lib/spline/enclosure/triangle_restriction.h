@@ -10,8 +10,9 @@
 // and equals the polynomial on the diagonal), so
 //   b_ijk = sum_{a+b+c=p} C(i,a) C(j,b) C(k,c) / C(n,p)
 //             f(s_0^a s_1^b s_2^c; t_0^(i-a) t_1^(j-b) t_2^(k-c)),
-// each f by de Casteljau's algorithm with the corners' parameters as its
-// steps (s, t: the patch's local parameters). Homogeneous coordinates, so a
+// computed by de Casteljau's algorithm: the patch over the corners' (s, t)
+// bounding box, then in each direction one pyramid at the third corner's
+// place between the other two (the .cpp). Homogeneous coordinates, so a
 // rational patch is the quotient of two such polynomials.
 #pragma once
 
@@ -27,7 +28,9 @@ struct TriangularNet {
     int n = 0;
     std::array<HPoint, kMaxOrder*(kMaxOrder + 1) / 2> b{};
     // Every homogeneous coordinate of every coefficient is within this of
-    // the exact one (de Casteljau's and the sums' rounding; see the .cpp).
+    // the exact one over a triangle whose corners are within 16 u max |s|,
+    // |t| of the given ones (u = 2^-53; the split parameters are rounded),
+    // from de Casteljau's and the sums' rounding (the .cpp).
     double error = 0;
 
     static int index(int n, int i, int j) { return i * (2 * n + 3 - i) / 2 + j; }

@@ -58,14 +58,18 @@ TEST_CASE("a patch restricted to a triangle is the triangular Bezier patch of it
           "[heavy]") {
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> in(0, 1), out(-0.2, 1.2), b(0, 1);
-    for (auto [p, q] : {std::pair{1, 1}, {2, 1}, {2, 2}, {3, 3}, {1, 3}, {5, 2}})
+    for (auto [p, q] : {std::pair{1, 1}, {2, 1}, {2, 2}, {3, 3}, {1, 3}, {5, 2}, {9, 9}, {2, 9}})
         for (bool rational : {false, true})
             for (int round = 0; round < 20; ++round) {
                 const BezierPatch patch = random_patch(rng, p, q, rational);
                 std::array<std::array<double, 2>, 3> st;
-                // Inside the square and, every other round, partly outside it.
+                // Inside the square and, every other round, partly outside it;
+                // some rounds with corners sharing a parameter value (the
+                // restriction orders the corners along each parameter).
                 for (auto& x : st)
                     x = round % 2 ? std::array{out(rng), out(rng)} : std::array{in(rng), in(rng)};
+                if (round % 5 == 2) st[1][0] = st[0][0];
+                if (round % 5 == 4) st[2][1] = st[1][1] = st[0][1];
                 TriangularNet net;
                 restrict_to_triangle(patch, st, net);
                 REQUIRE(net.n == p + q);
