@@ -92,6 +92,34 @@ void pyramid(const HPoint* pts, int stride, int m, double gamma, HPoint* out) {
     }
 }
 
+// The gathering of restrict_to_triangle for degrees (p, q): for the
+// u-blossom ab and the v-blossom de (each in the loop order (a, b), (d, e)),
+// the coefficient b_ijk they add to and their weight C(i,a) C(j,b) C(k,c) /
+// C(n,p) (header). Kept per thread for the last degrees asked.
+struct Gather {
+    int p = -1, q = -1;
+    std::array<int, K*(K + 1) / 2 * K*(K + 1) / 2> place;
+    std::array<double, K*(K + 1) / 2 * K*(K + 1) / 2> weight;
+};
+
+const Gather& gather(int p, int q) {
+    static thread_local Gather g;
+    if (g.p == p && g.q == q) return g;
+    g.p = p, g.q = q;
+    const int n = p + q;
+    const double cnp = binomial(n, p);
+    int at = 0;
+    for (int a = 0; a <= p; ++a)
+        for (int b = 0; a + b <= p; ++b)
+            for (int d = 0; d <= q; ++d)
+                for (int e = 0; d + e <= q; ++e, ++at) {
+                    const int c = p - a - b, f = q - d - e, i = a + d, j = b + e, k = c + f;
+                    g.place[at] = TriangularNet::index(n, i, j);
+                    g.weight[at] = binomial(i, a) * binomial(j, b) * binomial(k, c) / cnp;
+                }
+    return g;
+}
+
 } // namespace
 
 // The blossom values f(s-multiset; t-multiset) over the triangle's corners:
@@ -138,31 +166,33 @@ void restrict_to_triangle(const BezierPatch& patch, const std::array<std::array<
     std::fill(out.b.begin(), out.b.begin() + TriangularNet::index(n, n, 0) + 1, HPoint{0, 0, 0, 0});
     // b_ijk gathers the v-blossoms of every u-blossom (a, b, c) at
     // t_0^(i-a) t_1^(j-b) t_2^(k-c) with its weight (header).
-    const double cnp = binomial(n, p);
-    int terms = 0;
-    for (int a = 0; a <= p; ++a)
-        for (int b = 0; a + b <= p; ++b) {
-            const int c = p - a - b;
-            const int eu[3] = {a, b, c};
+    const Gather& g = gather(p, q);
+    std::array<int, K*(K + 1) / 2> at_v; // (d, e) to its place in V
+    for (int d = 0, de = 0; d <= q; ++d)
+        for (int e = 0; d + e <= q; ++e, ++de) {
+            const int ev[3] = {d, e, q - d - e};
+            at_v[de] = ot.at(q, ev);
+        }
+    const int sv = (q + 1) * (q + 2) / 2;
+    for (int a = 0, ab = 0; a <= p; ++a)
+        for (int b = 0; a + b <= p; ++b, ++ab) {
+            const int eu[3] = {a, b, p - a - b};
             const int at_u = os.at(p, eu);
             for (int l = 0; l <= q; ++l) row[l] = U[l * su + at_u];
             pyramid(row.data(), 1, q, ot.gamma, V.data());
-            for (int d = 0; d <= q; ++d)
-                for (int e = 0; d + e <= q; ++e) {
-                    const int f = q - d - e, i = a + d, j = b + e, k = c + f;
-                    const int ev[3] = {d, e, f};
-                    const double w = binomial(i, a) * binomial(j, b) * binomial(k, c) / cnp;
-                    out.at(i, j) = out.at(i, j) + w * V[ot.at(q, ev)];
-                }
-            ++terms;
+            const int* place = &g.place[ab * sv];
+            const double* weight = &g.weight[ab * sv];
+            for (int de = 0; de < sv; ++de)
+                out.b[place[de]] = out.b[place[de]] + weight[de] * V[at_v[de]];
         }
+    const int terms = su;
     double M = 0;
     for (int i = 0; i <= p; ++i)
         for (int j = 0; j <= q; ++j)
             for (int c = 0; c < 4; ++c) M = std::max(M, std::abs(patch.at(i, j)[c]));
-    double g = 1;
-    for (int k = 0; k < 3; ++k) g = std::max({g, step_weight(s[k]), step_weight(t[k])});
-    const double grow = std::pow(g, n) * growth * (1 + 1e-10);
+    double wide = 1;
+    for (int k = 0; k < 3; ++k) wide = std::max({wide, step_weight(s[k]), step_weight(t[k])});
+    const double grow = std::pow(wide, n) * growth * (1 + 1e-10);
     out.error = ((5.1 * 3 * n + terms + 2) * kU * M * grow + underflow_allowance(48 * n * grow)) *
                 (1 + 1e-10);
 }

@@ -32,7 +32,13 @@ std::vector<double> distinct_knots(const std::vector<double>& U, double lo, doub
 // 1.14). Rounding: every step is a mean with positive weights of sum 1, so
 // e_a and w_a err by at most the net's error and 8u of their terms'
 // magnitudes at the product, and 4u of them per elevation.
-double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj) {
+//
+// The hull at every degree bounds |E / W| (each elevation takes means, so it
+// only tightens): where the hull at degree n + 1 or halfway up is already at
+// most `cutoff`, that one is returned and the rest of the elevation is
+// skipped. Each check counts the rounding of the full elevation (more than
+// its own).
+double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj, double cutoff) {
     const int n = net.n;
     const int top = std::min(2 * (n + 1), TriangularNet::kMaxOrder - 1);
     double Mx = 0, Mw = 0, ML = 0;
@@ -62,6 +68,15 @@ double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj) {
                 to[TriangularNet::index(m, i, j)] = sum;
             }
     };
+    auto hull = [&](int d, const HPoint* c) {
+        double worst = 0;
+        for (int a = 0; a <= TriangularNet::index(d, d, 0); ++a) {
+            const double low = c[a].w - werr;
+            if (!(low > 0)) return kInf;
+            worst = std::max(worst, (norm(c[a].xyz()) + 1.8 * err) / low);
+        }
+        return worst * (1 + 1e-12);
+    };
     // The product: from the net's X and W to (e, w) at degree n + 1, the
     // mesh value of each term by the corner its index grew at.
     {
@@ -82,17 +97,16 @@ double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj) {
                 buf[0][TriangularNet::index(m, i, j)] = sum;
             }
     }
+    const int halfway = (n + 1 + top) / 2;
     int cur = 0;
-    for (int d = n + 1; d < top; ++d, cur ^= 1) raise(d, buf[cur].data(), buf[cur ^ 1].data());
-    double worst = 0;
-    for (int i = 0; i <= top; ++i)
-        for (int j = 0; i + j <= top; ++j) {
-            const HPoint& c = buf[cur][TriangularNet::index(top, i, j)];
-            const double low = c.w - werr;
-            if (!(low > 0)) return kInf;
-            worst = std::max(worst, (norm(c.xyz()) + 1.8 * err) / low);
+    for (int d = n + 1; d < top; ++d, cur ^= 1) {
+        if (d == n + 1 || d == halfway) {
+            const double early = hull(d, buf[cur].data());
+            if (early <= cutoff) return early;
         }
-    return worst * (1 + 1e-12);
+        raise(d, buf[cur].data(), buf[cur ^ 1].data());
+    }
+    return hull(top, buf[cur].data());
 }
 
 // Bounds of |S_ss|, |S_st|, |S_tt| over b's local [0,1]^2: the Bernstein
@@ -181,6 +195,77 @@ BezierPatch continued(const BezierPatch& b, double s0, double s1, double t0, dou
     return cur;
 }
 
+// Bounds A, B, C of P's second derivatives S_uu, S_uv, S_vv over the
+// patch continued to local [s0, s1] x [t0, t1] ((u,v) units), or infinite.
+std::array<double, 3> continued_curvature(const BezierPatch& patch, double s0, double s1, double t0,
+                                          double t1) {
+    double error = 0;
+    const BezierPatch c = continued(patch, s0, s1, t0, t1, error);
+    double wmin = kInf, M = 0;
+    for (int i = 0; i <= c.p; ++i)
+        for (int j = 0; j <= c.q; ++j) {
+            wmin = std::min(wmin, c.at(i, j).w);
+            for (int k = 0; k < 3; ++k) M = std::max(M, std::abs(c.at(i, j)[k]));
+        }
+    if (!(wmin > 2 * error)) return {kInf, kInf, kInf};
+    // The rounding of c's net, through second differences and the quotient.
+    const double slack =
+        16.0 * (c.p + c.q) * (c.p + c.q) * error * (1 + M / (wmin - error)) / (wmin - error);
+    const auto d = second_derivative_ranges(c);
+    const double wu = (s1 - s0) * (patch.u1 - patch.u0), wv = (t1 - t0) * (patch.v1 - patch.v0);
+    return {(d[0] + slack) / (wu * wu), (d[1] + slack) / (wu * wv), (d[2] + slack) / (wv * wv)};
+}
+
+// An overhang rounded up to a power of two (0 stays 0).
+double rounded_up(double overhang) {
+    if (!(overhang > 0)) return 0;
+    int e = 0;
+    const double m = std::frexp(overhang, &e); // overhang = m 2^e, m in [0.5, 1)
+    return std::ldexp(m == 0.5 ? 0.5 : 1.0, e);
+}
+
+// Beyond an open side: P's distance to the tangent plane there (header),
+// from the second derivatives over the patch continued to the piece (local
+// corners st, overhang hu, hv). The pieces along a side reach about as far
+// past it: the derivatives are taken over the overhangs rounded up to powers
+// of two and kept per thread for the next piece on the same patch with the
+// same rounded box (a bound over a larger box holds over a smaller one; the
+// box depends on the piece alone, so the bound does not depend on which
+// pieces came before).
+double beyond_side(const BezierPatch& patch, const std::array<std::array<double, 2>, 3>& st,
+                   double hu, double hv) {
+    double s0 = 0, s1 = 1, t0 = 0, t1 = 1;
+    for (const auto& x : st)
+        s0 = std::min(s0, x[0]), s1 = std::max(s1, x[0]), t0 = std::min(t0, x[1]),
+        t1 = std::max(t1, x[1]);
+    s0 = -rounded_up(-s0), s1 = 1 + rounded_up(s1 - 1);
+    t0 = -rounded_up(-t0), t1 = 1 + rounded_up(t1 - 1);
+    struct Kept {
+        BezierPatch patch;
+        double s0 = 0, s1 = 0, t0 = 0, t1 = 0;
+        std::array<double, 3> d{};
+        bool valid = false;
+    };
+    static thread_local Kept kept;
+    const bool same = kept.valid && kept.s0 == s0 && kept.s1 == s1 && kept.t0 == t0 &&
+                      kept.t1 == t1 && kept.patch.p == patch.p && kept.patch.q == patch.q &&
+                      kept.patch.u0 == patch.u0 && kept.patch.u1 == patch.u1 &&
+                      kept.patch.v0 == patch.v0 && kept.patch.v1 == patch.v1 &&
+                      std::equal(patch.cp.begin(), patch.cp.end(), kept.patch.cp.begin(),
+                                 [](const HPoint& a, const HPoint& b) {
+                                     return a.x == b.x && a.y == b.y && a.z == b.z && a.w == b.w;
+                                 });
+    if (!same) {
+        kept.patch = patch;
+        kept.s0 = s0, kept.s1 = s1, kept.t0 = t0, kept.t1 = t1;
+        kept.d = continued_curvature(patch, s0, s1, t0, t1);
+        kept.valid = true;
+    }
+    const auto& [A, B, C] = kept.d;
+    if (!(A < kInf && B < kInf && C < kInf)) return kInf;
+    return (A * hu * hu + 2 * B * hu * hv + C * hv * hv) / 2 * (1 + 1e-12);
+}
+
 } // namespace
 
 TriangleBound::TriangleBound(const BSplineSurface& s, bool closed_u, bool closed_v)
@@ -239,8 +324,8 @@ void TriangleBound::cuts(const Axis& a, double lo, double hi, std::vector<double
 }
 
 double TriangleBound::piece_bound(const TrianglePiece& piece, const BezierPatch& patch,
-                                  double shift_u, double shift_v,
-                                  const std::array<Vec3, 3>& Q) const {
+                                  double shift_u, double shift_v, const std::array<Vec3, 3>& Q,
+                                  double cutoff) const {
     std::array<std::array<double, 2>, 3> st;
     std::array<Vec3, 3> L;
     double hu = 0, hv = 0; // overhang beyond an open side
@@ -252,47 +337,32 @@ double TriangleBound::piece_bound(const TrianglePiece& piece, const BezierPatch&
         if (!u_.closed) hu = std::max({hu, u_.lo() - c.uv[0], c.uv[0] - u_.hi()});
         if (!v_.closed) hv = std::max({hv, v_.lo() - c.uv[1], c.uv[1] - v_.hi()});
     }
-    TriangularNet net;
+    const double side = hu == 0 && hv == 0 ? 0 : beyond_side(patch, st, hu, hv);
+    if (!(side < kInf)) return kInf;
+    static thread_local TriangularNet net; // 7 KB: not cleared per piece
     restrict_to_triangle(patch, st, net);
-    const double hull = hull_bound(net, L);
-    if (hu == 0 && hv == 0) return hull;
-    // Beyond an open side: P against the tangent plane (header), the second
-    // derivatives over the patch continued to the piece.
-    double s0 = 0, s1 = 1, t0 = 0, t1 = 1;
-    for (const auto& x : st)
-        s0 = std::min(s0, x[0]), s1 = std::max(s1, x[0]), t0 = std::min(t0, x[1]),
-        t1 = std::max(t1, x[1]);
-    double error = 0;
-    const BezierPatch c = continued(patch, s0, s1, t0, t1, error);
-    double wmin = kInf, M = 0;
-    for (int i = 0; i <= c.p; ++i)
-        for (int j = 0; j <= c.q; ++j) {
-            wmin = std::min(wmin, c.at(i, j).w);
-            for (int k = 0; k < 3; ++k) M = std::max(M, std::abs(c.at(i, j)[k]));
-        }
-    if (!(wmin > 2 * error)) return kInf;
-    // The rounding of c's net, through second differences and the quotient.
-    const double slack =
-        16.0 * (c.p + c.q) * (c.p + c.q) * error * (1 + M / (wmin - error)) / (wmin - error);
-    const auto d = second_derivative_ranges(c);
-    const double wu = (s1 - s0) * (patch.u1 - patch.u0), wv = (t1 - t0) * (patch.v1 - patch.v0);
-    const double A = (d[0] + slack) / (wu * wu), B = (d[1] + slack) / (wu * wv),
-                 C = (d[2] + slack) / (wv * wv);
-    return hull + (A * hu * hu + 2 * B * hu * hv + C * hv * hv) / 2 * (1 + 1e-12);
+    return hull_bound(net, L, cutoff - side) + side;
 }
 
-double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q) const {
+double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q,
+                                 double cutoff) const {
     double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf}, far = 0, qmax = 0;
     for (const UV& x : uv)
         for (int a = 0; a < 2; ++a)
             lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]),
             far = std::max(far, std::abs(x[a]));
     for (const Vec3& q : Q) qmax = std::max({qmax, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+    struct Placed {
+        int patch;
+        double shift_u, shift_v;
+    };
     thread_local std::vector<double> cu, cv;
     thread_local std::vector<TrianglePiece> pieces;
+    thread_local std::vector<Placed> placed;
     cuts(u_, lo[0], hi[0], cu);
     cuts(v_, lo[1], hi[1], cv);
     pieces.clear();
+    placed.clear();
     cut_triangle(uv, cu, cv, pieces);
     // The cell's middle names its patch and period.
     auto middle = [&](int axis, int cell, const std::vector<double>& c) {
@@ -301,23 +371,36 @@ double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<V
         return (a + b) / 2;
     };
     const int nv = static_cast<int>(v_.at.size()) - 1;
-    double worst = 0, gradient = 0;
+    double gradient = 0, local = 0;
     for (const TrianglePiece& piece : pieces) {
-        double su = 0, sv = 0;
-        const int iu = span_of(u_, middle(0, piece.cell_u, cu), su);
-        const int iv = span_of(v_, middle(1, piece.cell_v, cv), sv);
-        const int i = iu * nv + iv;
-        gradient = std::max(gradient, gradient_[i]);
-        worst = std::max(worst, piece_bound(piece, patches_[i], su, sv, Q));
-        if (!(worst < kInf)) return kInf;
+        Placed at{0, 0, 0};
+        const int iu = span_of(u_, middle(0, piece.cell_u, cu), at.shift_u);
+        const int iv = span_of(v_, middle(1, piece.cell_v, cv), at.shift_v);
+        at.patch = iu * nv + iv;
+        placed.push_back(at);
+        gradient = std::max(gradient, gradient_[at.patch]);
+        const BezierPatch& b = patches_[at.patch];
+        for (const PieceCorner& c : piece.corner)
+            local = std::max(local, std::abs(c.uv[0] - at.shift_u - b.u0) +
+                                        std::abs(c.uv[1] - at.shift_v - b.v0));
     }
     // The pieces cover T's simplex up to a few ulps of lambda, and their
     // (u,v) corners and local parameters are rounded within a few ulps of
-    // the parameters' magnitude, where a patch's continuation and its
+    // the parameters' magnitude (the restriction's moved corners among
+    // them: triangle_restriction.h), where a patch's continuation and its
     // neighbour differ by less than twice the gradient times the distance;
     // the mesh values at the pieces' corners are rounded sums of Q.
-    const double r_uv = 64 * kU * (far + (hi[0] - lo[0]) + (hi[1] - lo[1]));
+    const double r_uv = 64 * kU * (far + (hi[0] - lo[0]) + (hi[1] - lo[1]) + local);
     const double slack = 4 * gradient * r_uv + 64 * kU * qmax;
+    // A piece whose bound is at most this keeps the whole at most cutoff.
+    const double piece_cutoff = cutoff / (1 + 4e-12) - slack;
+    double worst = 0;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const Placed& at = placed[k];
+        worst = std::max(worst, piece_bound(pieces[k], patches_[at.patch], at.shift_u, at.shift_v,
+                                            Q, piece_cutoff));
+        if (!(worst < kInf)) return kInf;
+    }
     return (worst + slack) * (1 + 1e-12);
 }
 
