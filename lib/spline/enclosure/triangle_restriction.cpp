@@ -40,9 +40,9 @@ double step_weight(double x) {
 struct CornerOrder {
     int lo = 0, hi = 0, mid = 0;
     double gamma = 0;
-    explicit CornerOrder(const double (&x)[3]) {
-        lo = static_cast<int>(std::min_element(x, x + 3) - x);
-        hi = static_cast<int>(std::max_element(x, x + 3) - x);
+    explicit CornerOrder(const std::array<double, 3>& x) {
+        lo = static_cast<int>(std::min_element(x.begin(), x.end()) - x.begin());
+        hi = static_cast<int>(std::max_element(x.begin(), x.end()) - x.begin());
         if (lo == hi) hi = (lo + 1) % 3; // all three equal
         mid = 3 - lo - hi;
         gamma = x[hi] > x[lo] ? (x[mid] - x[lo]) / (x[hi] - x[lo]) : 0;
@@ -124,9 +124,10 @@ const Gather& gather(int p, int q) {
 
 // The blossom values f(s-multiset; t-multiset) over the triangle's corners:
 // the patch restricted to the corners' (s, t) bounding box (restrict_curve
-// on its columns, then its rows), then in each direction one pyramid at the
-// third corner (every corner value is an affine combination of the smallest
-// and largest: the blossom is affine in each argument).
+// on its columns, then its rows: restrict_to_box), then in each direction
+// one pyramid at the third corner (every corner value is an affine
+// combination of the smallest and largest: the blossom is affine in each
+// argument; box_to_triangle).
 //
 // Rounding. Let M bound every homogeneous coordinate of the control points
 // and g >= |1 - x| + |x| for every corner coordinate x (g = 1 inside
@@ -135,33 +136,50 @@ const Gather& gather(int p, int q) {
 // times that (u = 2^-53) and passes earlier errors on with that growth, so
 // the 3 n steps of a value (2 p for the box and p for the pyramid in s, q
 // alike) err by at most 5.1 (3 n) u g^n M G, G the steps' growths
-// multiplied along one chain (1 inside [0,1]^2). The sum over the T terms
-// with positive weights of sum 1 (each weight within u of its value) adds (T
-// + 2) u g^n G M. Gradual underflow: underflow_allowance (interval.h). The
-// rounded split and pyramid parameters make the values those of the
-// blossom at arguments a few ulps off the corners' (a' = b fl(a / b) within u
-// |a|, b' within 6.2 u max(|a|, |b|) likewise, the third corner within that
-// and 3.1 u |b - a| more): the coefficients over that moved triangle, its
-// corners within 16 u max |s|, |t| (header).
-void restrict_to_triangle(const BezierPatch& patch, const std::array<std::array<double, 2>, 3>& st,
-                          TriangularNet& out) {
+// multiplied along one chain (1 inside [0,1]^2); the box's values after 2 n
+// steps. The sum over the T terms with positive weights of sum 1 (each
+// weight within u of its value) adds (T + 2) u g^n G M. Gradual underflow:
+// underflow_allowance (interval.h). The rounded split and pyramid
+// parameters make the values those of the blossom at arguments a few ulps
+// off the corners' (a' = b fl(a / b) within u |a|, b' within 6.2 u max(|a|,
+// |b|) likewise, the third corner within that and 3.1 u |b - a| more): the
+// coefficients over that moved triangle or box, its corners within 16 u
+// max |s|, |t| (header).
+void restrict_to_box(const BezierPatch& patch, const std::array<std::array<double, 2>, 3>& st,
+                     BoxNet& out) {
     const int p = patch.p, q = patch.q, n = p + q;
-    const double s[3] = {st[0][0], st[1][0], st[2][0]}, t[3] = {st[0][1], st[1][1], st[2][1]};
-    const CornerOrder os(s), ot(t);
-    static thread_local std::array<HPoint, K * K> box;
+    out.p = p, out.q = q;
+    for (int k = 0; k < 3; ++k) out.s[k] = st[k][0], out.t[k] = st[k][1];
+    const CornerOrder os(out.s), ot(out.t);
+    out.s_lo = out.s[os.lo], out.s_hi = out.s[os.hi], out.t_lo = out.t[ot.lo],
+    out.t_hi = out.t[ot.hi];
+    HPoint* box = out.b.data();
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) box[i * K + j] = patch.at(i, j);
+    double growth_u = 1, growth_v = 1;
+    for (int j = 0; j <= q; ++j) growth_u = restrict_curve(&box[j], K, p, out.s_lo, out.s_hi);
+    for (int i = 0; i <= p; ++i) growth_v = restrict_curve(&box[i * K], 1, q, out.t_lo, out.t_hi);
+    out.M = 0;
+    for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j)
+            for (int c = 0; c < 4; ++c) out.M = std::max(out.M, std::abs(patch.at(i, j)[c]));
+    double wide = 1;
+    for (int k = 0; k < 3; ++k)
+        wide = std::max({wide, step_weight(out.s[k]), step_weight(out.t[k])});
+    out.grow = std::pow(wide, n) * growth_u * growth_v * (1 + 1e-10);
+    out.error = (5.1 * 2 * n * kU * out.M * out.grow + underflow_allowance(32 * n * out.grow)) *
+                (1 + 1e-10);
+}
+
+void box_to_triangle(const BoxNet& box, TriangularNet& out) {
+    const int p = box.p, q = box.q, n = p + q;
+    const CornerOrder os(box.s), ot(box.t);
     static thread_local std::array<HPoint, K*(K + 1) / 2 * K> U;
     std::array<HPoint, K*(K + 1) / 2> V;
     std::array<HPoint, K> row;
-    double growth = 1;
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) box[i * K + j] = patch.at(i, j);
-    for (int j = 0; j <= q; ++j) growth = restrict_curve(&box[j], K, p, s[os.lo], s[os.hi]);
-    const double growth_u = growth;
-    for (int i = 0; i <= p; ++i) growth = restrict_curve(&box[i * K], 1, q, t[ot.lo], t[ot.hi]);
-    growth *= growth_u;
     // U: column j's pyramid at (j * (p + 1) (p + 2) / 2).
     const int su = (p + 1) * (p + 2) / 2;
-    for (int j = 0; j <= q; ++j) pyramid(&box[j], K, p, os.gamma, &U[j * su]);
+    for (int j = 0; j <= q; ++j) pyramid(&box.b[j], K, p, os.gamma, &U[j * su]);
     out.n = n;
     std::fill(out.b.begin(), out.b.begin() + TriangularNet::index(n, n, 0) + 1, HPoint{0, 0, 0, 0});
     // b_ijk gathers the v-blossoms of every u-blossom (a, b, c) at
@@ -186,15 +204,16 @@ void restrict_to_triangle(const BezierPatch& patch, const std::array<std::array<
                 out.b[place[de]] = out.b[place[de]] + weight[de] * V[at_v[de]];
         }
     const int terms = su;
-    double M = 0;
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j)
-            for (int c = 0; c < 4; ++c) M = std::max(M, std::abs(patch.at(i, j)[c]));
-    double wide = 1;
-    for (int k = 0; k < 3; ++k) wide = std::max({wide, step_weight(s[k]), step_weight(t[k])});
-    const double grow = std::pow(wide, n) * growth * (1 + 1e-10);
-    out.error = ((5.1 * 3 * n + terms + 2) * kU * M * grow + underflow_allowance(48 * n * grow)) *
+    out.error = ((5.1 * 3 * n + terms + 2) * kU * box.M * box.grow +
+                 underflow_allowance(48 * n * box.grow)) *
                 (1 + 1e-10);
+}
+
+void restrict_to_triangle(const BezierPatch& patch, const std::array<std::array<double, 2>, 3>& st,
+                          TriangularNet& out) {
+    static thread_local BoxNet box;
+    restrict_to_box(patch, st, box);
+    box_to_triangle(box, out);
 }
 
 } // namespace seamless

@@ -43,4 +43,24 @@ struct TriangularNet {
 void restrict_to_triangle(const BezierPatch& patch, const std::array<std::array<double, 2>, 3>& st,
                           TriangularNet& out);
 
+// The same in two stages, for a caller that may stop after the first: the
+// patch over the bounding box [s_lo, s_hi] x [t_lo, t_hi] of the corners
+// (tensor-product coefficients of bidegree (p, q)), then from it the
+// triangle's.
+struct BoxNet {
+    static constexpr int K = BezierPatch::kMaxOrder;
+    int p = 0, q = 0;
+    std::array<double, 3> s{}, t{}; // the triangle's local corners
+    double s_lo = 0, s_hi = 0, t_lo = 0, t_hi = 0;
+    std::array<HPoint, K * K> b; // (i, j) at i * K + j
+    // As TriangularNet::error, for b over a box whose corners are within 16
+    // u max |s|, |t| of the given ones.
+    double error = 0;
+    double M = 0, grow = 1; // the rounding's scale (the .cpp)
+    const HPoint& at(int i, int j) const { return b[i * K + j]; }
+};
+void restrict_to_box(const BezierPatch& patch, const std::array<std::array<double, 2>, 3>& st,
+                     BoxNet& out);
+void box_to_triangle(const BoxNet& box, TriangularNet& out);
+
 } // namespace seamless

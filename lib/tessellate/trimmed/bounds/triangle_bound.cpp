@@ -3,6 +3,7 @@
 #include <seamless/interval/interval.h>
 #include <seamless/spline/enclosure/triangle_restriction.h>
 #include <seamless/spline/knot_insertion.h>
+#include <seamless/tessellate/trimmed/bounds/box_hull.h>
 #include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 
 #include <algorithm>
@@ -339,8 +340,16 @@ double TriangleBound::piece_bound(const TrianglePiece& piece, const BezierPatch&
     }
     const double side = hu == 0 && hv == 0 ? 0 : beyond_side(patch, st, hu, hv);
     if (!(side < kInf)) return kInf;
-    static thread_local TriangularNet net; // 7 KB: not cleared per piece
-    restrict_to_triangle(patch, st, net);
+    // The box stage first: above degree 4, where the triangle's stage costs
+    // most, the box's looser hull may already be below the cutoff.
+    static thread_local BoxNet box; // 3 KB: not cleared per piece
+    restrict_to_box(patch, st, box);
+    if (cutoff - side > 0 && patch.p + patch.q > 4) {
+        const double early = box_hull_bound(box, L);
+        if (early <= cutoff - side) return early + side;
+    }
+    static thread_local TriangularNet net; // 7 KB
+    box_to_triangle(box, net);
     return hull_bound(net, L, cutoff - side) + side;
 }
 
