@@ -58,14 +58,18 @@ TEST_CASE("a patch restricted to a triangle is the triangular Bezier patch of it
           "[heavy]") {
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> in(0, 1), out(-0.2, 1.2), b(0, 1);
-    for (auto [p, q] : {std::pair{1, 1}, {2, 1}, {2, 2}, {3, 3}, {1, 3}, {5, 2}})
+    for (auto [p, q] : {std::pair{1, 1}, {2, 1}, {2, 2}, {3, 3}, {1, 3}, {5, 2}, {9, 9}, {2, 9}})
         for (bool rational : {false, true})
             for (int round = 0; round < 20; ++round) {
                 const BezierPatch patch = random_patch(rng, p, q, rational);
                 std::array<std::array<double, 2>, 3> st;
-                // Inside the square and, every other round, partly outside it.
+                // Inside the square and, every other round, partly outside it;
+                // some rounds with corners sharing a parameter value (the
+                // restriction orders the corners along each parameter).
                 for (auto& x : st)
                     x = round % 2 ? std::array{out(rng), out(rng)} : std::array{in(rng), in(rng)};
+                if (round % 5 == 2) st[1][0] = st[0][0];
+                if (round % 5 == 4) st[2][1] = st[1][1] = st[0][1];
                 TriangularNet net;
                 restrict_to_triangle(patch, st, net);
                 REQUIRE(net.n == p + q);
@@ -106,4 +110,30 @@ TEST_CASE("the restriction's error bound holds against long double de Casteljau"
     const double lambda[3] = {1, 0, 0};
     const auto a = triangular_at(net, lambda), e = tensor_at(patch, 0.1L, 0.2L);
     for (int k = 0; k < 4; ++k) CHECK(std::abs(double(a[k] - e[k])) <= net.error);
+}
+
+TEST_CASE("the box stage of the restriction is the patch over the corners' bounding box") {
+    std::mt19937_64 rng(41);
+    std::uniform_real_distribution<double> out(-0.2, 1.2), b(0, 1);
+    for (auto [p, q] : {std::pair{1, 1}, {3, 2}, {9, 9}})
+        for (int round = 0; round < 10; ++round) {
+            const BezierPatch patch = random_patch(rng, p, q, round % 2 == 1);
+            std::array<std::array<double, 2>, 3> st;
+            for (auto& x : st) x = {out(rng), out(rng)};
+            BoxNet box;
+            restrict_to_box(patch, st, box);
+            CHECK(box.s_lo == std::min({st[0][0], st[1][0], st[2][0]}));
+            CHECK(box.t_hi == std::max({st[0][1], st[1][1], st[2][1]}));
+            BezierPatch over = patch;
+            for (int i = 0; i <= p; ++i)
+                for (int j = 0; j <= q; ++j) over.at(i, j) = box.at(i, j);
+            for (int m = 0; m < 10; ++m) {
+                const double x = b(rng), y = b(rng);
+                const auto a = tensor_at(over, x, y);
+                const auto e = tensor_at(patch, box.s_lo + x * (box.s_hi - box.s_lo),
+                                         box.t_lo + y * (box.t_hi - box.t_lo));
+                for (int k = 0; k < 4; ++k)
+                    CHECK(std::abs(double(a[k] - e[k])) <= box.error + 1e-15);
+            }
+        }
 }

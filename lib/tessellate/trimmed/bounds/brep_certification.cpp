@@ -36,9 +36,11 @@ std::vector<UV> side_points(const Model& model, const std::vector<EdgePolyline>&
 }
 
 // The largest bound over the triangles [begin, end) of one surface: pole
-// fans geometrically (pole_fan.h), the others by TriangleBound.
+// fans geometrically (pole_fan.h), the others by TriangleBound, which
+// needs the full bound only of a triangle that may exceed `floor` (a bound
+// already found elsewhere) and the run's largest so far.
 double run_of_surface(const Model& model, const std::vector<EdgePolyline>& lines,
-                      const TriangleMesh& mesh, int begin, int end) {
+                      const TriangleMesh& mesh, int begin, int end, double floor) {
     const int surface = mesh.triangle_surface[begin];
     const FaceSurface face(model.surfaces[surface]);
     const TriangleBound bound(face.surface(), face.closed_u(), face.closed_v());
@@ -55,8 +57,32 @@ double run_of_surface(const Model& model, const std::vector<EdgePolyline>& lines
     double b =
         pole_fan_bounds(bound, face.surface(), run, side_points(model, lines, surface), handled);
     for (size_t k = 0; k < run.size(); ++k)
-        if (!handled[k]) b = worst(b, bound(run[k].uv, run[k].Q));
+        if (!handled[k]) b = worst(b, bound(run[k].uv, run[k].Q, std::max(b, floor)));
     return b;
+}
+
+// The largest bound over the segments of one edge's polyline (0 for a
+// degenerate edge), `floor` as in run_of_surface.
+double edge_bound(const Model& model, const EdgePolyline& line, int e, double floor) {
+    const BRepEdge& edge = model.brep.edges[e];
+    if (edge.degenerate() || line.t.size() < 2) return 0;
+    const ChordBound bound(model.brep.curves[edge.curve]);
+    double b = 0;
+    for (size_t k = 0; k + 1 < line.t.size(); ++k)
+        b = worst(b, bound(line.t[k], line.t[k + 1], line.points[k], line.points[k + 1],
+                           std::max(b, floor)));
+    return b;
+}
+
+// The total degree of a work item's Bezier pieces (a run's surface, an
+// edge's curve extruded: chord_bound.h), the measure of its cost per piece.
+int total_degree(const Model& model, const TriangleMesh& mesh, int first_triangle, int edge) {
+    if (edge < 0) {
+        const BSplineSurface& s = model.surfaces[mesh.triangle_surface[first_triangle]];
+        return s.degree_u + s.degree_v;
+    }
+    const BRepEdge& e = model.brep.edges[edge];
+    return e.degenerate() ? 0 : model.brep.curves[e.curve].degree + 1;
 }
 
 } // namespace
@@ -69,32 +95,38 @@ BRepBound certify_brep(const Model& model, const std::vector<EdgePolyline>& line
     for (int t = 1; t < mesh.triangle_count(); ++t)
         if (mesh.triangle_surface[t] != mesh.triangle_surface[t - 1]) first.push_back(t);
     first.push_back(mesh.triangle_count());
-    const int runs = static_cast<int>(first.size()) - 1;
+    const int runs = mesh.triangle_count() > 0 ? static_cast<int>(first.size()) - 1 : 0;
     const int edges = static_cast<int>(lines.size());
     // Per item slots, reduced in order: the same maximum on any thread count.
-    std::vector<double> run_bound(std::max(runs, 0), 0.0), edge_bound(edges, 0.0);
-    parallel_chunks(runs + edges, threads, [&](int begin, int end) {
-        for (int i = begin; i < end; ++i) {
-            if (i < runs) {
-                if (first[i] == first[i + 1]) continue;
-                run_bound[i] = run_of_surface(model, lines, mesh, first[i], first[i + 1]);
-            } else {
-                const int e = i - runs;
-                const BRepEdge& edge = model.brep.edges[e];
-                const EdgePolyline& line = lines[e];
-                if (edge.degenerate() || line.t.size() < 2) continue;
-                const ChordBound bound(model.brep.curves[edge.curve]);
-                double b = 0;
-                for (size_t k = 0; k + 1 < line.t.size(); ++k)
-                    b = worst(b,
-                              bound(line.t[k], line.t[k + 1], line.points[k], line.points[k + 1]));
-                edge_bound[e] = b;
-            }
-        }
-    });
+    std::vector<double> bounds(runs + edges, 0.0);
+    std::vector<int> degree(runs + edges);
+    for (int i = 0; i < runs + edges; ++i)
+        degree[i] = total_degree(model, mesh, i < runs ? first[i] : 0, i < runs ? -1 : i - runs);
+    // In waves of rising degree: the cheap items' largest bounds are the
+    // floor below which the costlier ones need no full bound. Each wave
+    // sees only the earlier waves' results, so every figure is the same on
+    // any thread count.
     BRepBound r;
-    for (double b : run_bound) r.triangles = std::max(r.triangles, b);
-    for (double b : edge_bound) r.chords = std::max(r.chords, b);
+    int below = -1;
+    for (int limit : {4, 8, std::numeric_limits<int>::max()}) {
+        std::vector<int> wave;
+        for (int i = 0; i < runs + edges; ++i)
+            if (degree[i] > below && degree[i] <= limit) wave.push_back(i);
+        below = limit;
+        const BRepBound floor = r;
+        parallel_chunks(static_cast<int>(wave.size()), threads, [&](int begin, int end) {
+            for (int k = begin; k < end; ++k) {
+                const int i = wave[k];
+                bounds[i] = i < runs ? run_of_surface(model, lines, mesh, first[i], first[i + 1],
+                                                      floor.triangles)
+                                     : edge_bound(model, lines[i - runs], i - runs, floor.chords);
+            }
+        });
+        for (int i : wave) {
+            double& figure = i < runs ? r.triangles : r.chords;
+            figure = worst(figure, bounds[i]);
+        }
+    }
     return r;
 }
 

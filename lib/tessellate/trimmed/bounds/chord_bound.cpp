@@ -26,11 +26,11 @@ BSplineSurface extruded(const BSplineCurve& c) {
 
 ChordBound::ChordBound(const BSplineCurve& c) : surface_(extruded(c)), bound_(surface_) {}
 
-double ChordBound::operator()(double ta, double tb, Vec3 Pa, Vec3 Pb) const {
+double ChordBound::operator()(double ta, double tb, Vec3 Pa, Vec3 Pb, double cutoff) const {
     // The third corner a millionth of h above the first: its sides add a
     // factor 1 + 1e-12 to h^2 / 4, and the chord is the interpolant along s = 0.
     const double h = std::abs(tb - ta);
-    return bound_({UV{ta, 0}, UV{tb, 0}, UV{ta, 1e-6 * h}}, {Pa, Pb, Pa});
+    return bound_({UV{ta, 0}, UV{tb, 0}, UV{ta, 1e-6 * h}}, {Pa, Pb, Pa}, cutoff);
 }
 
 } // namespace seamless

@@ -19,7 +19,8 @@ class ChordBound {
     ChordBound(const ChordBound&) = delete; // bound_ refers to surface_
     ChordBound& operator=(const ChordBound&) = delete;
 
-    double operator()(double ta, double tb, Vec3 Pa, Vec3 Pb) const;
+    // cutoff: as TriangleBound's.
+    double operator()(double ta, double tb, Vec3 Pa, Vec3 Pb, double cutoff = 0) const;
 
   private:
     BSplineSurface surface_;

@@ -33,11 +33,12 @@ std::vector<FanTriangle> fan(const Side& side, std::span<const RunTriangle> run,
                              std::span<const UV> side_points, double& offset) {
     const int al = side.along(), ac = side.across;
     std::vector<FanTriangle> out;
+    double off_side = 0; // the pole corners' distance to the side
     for (int k = 0; k < static_cast<int>(run.size()); ++k) {
         const auto& uv = run[k].uv;
         int on = 0, pole = 0;
         for (int c = 0; c < 3; ++c)
-            if (uv[c][ac] == side.at) ++on, pole = c;
+            if (std::abs(uv[c][ac] - side.at) <= side.near) ++on, pole = c;
         if (on == 0) continue;
         if (on > 1) return {};
         FanTriangle f{k, pole, (pole + 1) % 3, (pole + 2) % 3};
@@ -46,6 +47,7 @@ std::vector<FanTriangle> fan(const Side& side, std::span<const RunTriangle> run,
             !((uv[f.r][ac] - side.at) * side.inward > 0))
             return {};
         if (!out.empty() && run[out[0].k].id[out[0].pole] != run[k].id[pole]) return {};
+        off_side = std::max(off_side, std::abs(uv[pole][ac] - side.at));
         out.push_back(f);
     }
     if (out.empty()) return {};
@@ -65,11 +67,12 @@ std::vector<FanTriangle> fan(const Side& side, std::span<const RunTriangle> run,
             from = std::min(from, x[al]), to = std::max(to, x[al]);
     for (const FanTriangle& f : out)
         from = std::min(from, run[f.k].uv[f.pole][al]), to = std::max(to, run[f.k].uv[f.pole][al]);
-    // A file's seam or meridian a few ulps off the vertical: the trapezoids
-    // then miss, or add, a sliver of that width (pole_fan_bounds adds the
-    // surface's change across it).
+    // A file's seam or meridian a few ulps off the vertical, or its pole
+    // corners a few ulps off the side: the trapezoids then miss, or add, a
+    // sliver of that width (pole_fan_bounds adds the surface's change
+    // across it).
     if (!(std::abs(from - lo) <= side.near && std::abs(to - hi) <= side.near)) return {};
-    offset = std::max(std::abs(from - lo), std::abs(to - hi));
+    offset = std::max({std::abs(from - lo), std::abs(to - hi), off_side});
     return out;
 }
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Triangles at a pole or apex, certified geometrically. Where a side of the
 // (u,v) domain collapses to one point (a degenerate edge: all of it is one
-// mesh vertex P), the triangles with a corner x_a on that side are wide in
-// u and S(x) drifts along the ring away from L(x): the parametric bound of
-// triangle_bound.h counts that drift. Such a
-// triangle (x_a, y_l, y_r), y_l before y_r along the side, is paired
-// instead with the trapezoid Z between the side and its far edge y_l y_r
-// with vertical ends: the rectangle [y_l, y_r] x [side, nearer y] by the map
+// mesh vertex P), the triangles with a corner x_a on that side (to a
+// rounding of the domain's extent) are wide in u and S(x) drifts along the
+// ring away from L(x): the parametric bound of triangle_bound.h counts that
+// drift. Such a triangle (x_a, y_l, y_r), y_l before y_r along the side, is
+// paired instead with the trapezoid Z between the side and its far edge
+// y_l y_r with vertical ends: the rectangle [y_l, y_r] x [side, nearer y] by the map
 // bilinear over it (P along the side, the mesh edges P Q_l and P Q_r on its
 // ends: every point at its own height on the ring, no drift;
 // TriangleBound::bilinear_box), and the triangle left above it affinely.

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <seamless/base/check.h>
-#include <seamless/interval/interval.h>
 #include <seamless/spline/enclosure/triangle_restriction.h>
 #include <seamless/spline/knot_insertion.h>
+#include <seamless/tessellate/trimmed/bounds/beyond_side.h>
+#include <seamless/tessellate/trimmed/bounds/box_hull.h>
 #include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 
 #include <algorithm>
@@ -32,7 +33,13 @@ std::vector<double> distinct_knots(const std::vector<double>& U, double lo, doub
 // 1.14). Rounding: every step is a mean with positive weights of sum 1, so
 // e_a and w_a err by at most the net's error and 8u of their terms'
 // magnitudes at the product, and 4u of them per elevation.
-double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj) {
+//
+// The hull at every degree bounds |E / W| (each elevation takes means, so it
+// only tightens): where the hull at degree n + 1 or halfway up is already at
+// most `cutoff`, that one is returned and the rest of the elevation is
+// skipped. Each check counts the rounding of the full elevation (more than
+// its own).
+double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj, double cutoff) {
     const int n = net.n;
     const int top = std::min(2 * (n + 1), TriangularNet::kMaxOrder - 1);
     double Mx = 0, Mw = 0, ML = 0;
@@ -62,6 +69,15 @@ double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj) {
                 to[TriangularNet::index(m, i, j)] = sum;
             }
     };
+    auto hull = [&](int d, const HPoint* c) {
+        double worst = 0;
+        for (int a = 0; a <= TriangularNet::index(d, d, 0); ++a) {
+            const double low = c[a].w - werr;
+            if (!(low > 0)) return kInf;
+            worst = std::max(worst, (norm(c[a].xyz()) + 1.8 * err) / low);
+        }
+        return worst * (1 + 1e-12);
+    };
     // The product: from the net's X and W to (e, w) at degree n + 1, the
     // mesh value of each term by the corner its index grew at.
     {
@@ -82,103 +98,16 @@ double hull_bound(const TriangularNet& net, const std::array<Vec3, 3>& Lj) {
                 buf[0][TriangularNet::index(m, i, j)] = sum;
             }
     }
+    const int halfway = (n + 1 + top) / 2;
     int cur = 0;
-    for (int d = n + 1; d < top; ++d, cur ^= 1) raise(d, buf[cur].data(), buf[cur ^ 1].data());
-    double worst = 0;
-    for (int i = 0; i <= top; ++i)
-        for (int j = 0; i + j <= top; ++j) {
-            const HPoint& c = buf[cur][TriangularNet::index(top, i, j)];
-            const double low = c.w - werr;
-            if (!(low > 0)) return kInf;
-            worst = std::max(worst, (norm(c.xyz()) + 1.8 * err) / low);
+    for (int d = n + 1; d < top; ++d, cur ^= 1) {
+        if (d == n + 1 || d == halfway) {
+            const double early = hull(d, buf[cur].data());
+            if (early <= cutoff) return early;
         }
-    return worst * (1 + 1e-12);
-}
-
-// Bounds of |S_ss|, |S_st|, |S_tt| over b's local [0,1]^2: the Bernstein
-// coefficients of X and W and of their partial derivatives (differences of
-// the net, in interval arithmetic) enclose them over the square, and the
-// quotient rule runs on those enclosures.
-std::array<double, 3> second_derivative_ranges(const BezierPatch& b) {
-    const int p = b.p, q = b.q;
-    enum { kX, kXs, kXt, kXss, kXst, kXtt, kTerms };
-    Interval r[kTerms][4];
-    bool seen[kTerms] = {};
-    auto add = [&](int term, const Interval(&v)[4]) {
-        for (int c = 0; c < 4; ++c) r[term][c] = seen[term] ? hull(r[term][c], v[c]) : v[c];
-        seen[term] = true;
-    };
-    auto X = [&](int i, int j, int c) { return Interval(b.at(i, j)[c]); };
-    for (int i = 0; i <= p; ++i)
-        for (int j = 0; j <= q; ++j) {
-            Interval v[4];
-            for (int c = 0; c < 4; ++c) v[c] = X(i, j, c);
-            add(kX, v);
-            if (i < p) {
-                for (int c = 0; c < 4; ++c) v[c] = double(p) * (X(i + 1, j, c) - X(i, j, c));
-                add(kXs, v);
-            }
-            if (j < q) {
-                for (int c = 0; c < 4; ++c) v[c] = double(q) * (X(i, j + 1, c) - X(i, j, c));
-                add(kXt, v);
-            }
-            if (i + 1 < p) {
-                for (int c = 0; c < 4; ++c)
-                    v[c] =
-                        double(p * (p - 1)) * (X(i + 2, j, c) - 2.0 * X(i + 1, j, c) + X(i, j, c));
-                add(kXss, v);
-            }
-            if (i < p && j < q) {
-                for (int c = 0; c < 4; ++c)
-                    v[c] = double(p * q) *
-                           (X(i + 1, j + 1, c) - X(i + 1, j, c) - X(i, j + 1, c) + X(i, j, c));
-                add(kXst, v);
-            }
-            if (j + 1 < q) {
-                for (int c = 0; c < 4; ++c)
-                    v[c] =
-                        double(q * (q - 1)) * (X(i, j + 2, c) - 2.0 * X(i, j + 1, c) + X(i, j, c));
-                add(kXtt, v);
-            }
-        }
-    for (int t = 0; t < kTerms; ++t)
-        if (!seen[t])
-            for (int c = 0; c < 4; ++c) r[t][c] = Interval(0); // degree too low: zero
-    const Interval W = r[kX][3], Ws = r[kXs][3], Wt = r[kXt][3];
-    const Interval Wss = r[kXss][3], Wst = r[kXst][3], Wtt = r[kXtt][3];
-    if (!(W.lo() > 0)) return {kInf, kInf, kInf};
-    double ss = 0, st = 0, tt = 0;
-    for (int c = 0; c < 3; ++c) {
-        const Interval S = r[kX][c] / W;
-        const Interval Ss = (r[kXs][c] - S * Ws) / W, St = (r[kXt][c] - S * Wt) / W;
-        const Interval Sss = (r[kXss][c] - 2.0 * Ss * Ws - S * Wss) / W;
-        const Interval Sst = (r[kXst][c] - Ss * Wt - St * Ws - S * Wst) / W;
-        const Interval Stt = (r[kXtt][c] - 2.0 * St * Wt - S * Wtt) / W;
-        ss += sqr(Sss).hi(), st += sqr(Sst).hi(), tt += sqr(Stt).hi();
+        raise(d, buf[cur].data(), buf[cur ^ 1].data());
     }
-    // The sums of three squares rounded up by a few ulps, then their roots.
-    const double up = 1 + 8 * kU;
-    return {std::sqrt(ss * up) * up, std::sqrt(st * up) * up, std::sqrt(tt * up) * up};
-}
-
-// `b` continued over local s in [s0, s1] (s0 <= 0, s1 >= 1), t alike, by de
-// Casteljau's algorithm with steps outside [0,1]; `error` bounds the
-// rounding of its homogeneous coordinates (as triangle_restriction.cpp).
-BezierPatch continued(const BezierPatch& b, double s0, double s1, double t0, double t1,
-                      double& error) {
-    BezierPatch cur = b, lo, hi;
-    if (s1 > 1) split_u(cur, s1, lo, hi), cur = lo;
-    if (s0 < 0) split_u(cur, s0 / std::max(s1, 1.0), lo, hi), cur = hi;
-    if (t1 > 1) split_v(cur, t1, lo, hi), cur = lo;
-    if (t0 < 0) split_v(cur, t0 / std::max(t1, 1.0), lo, hi), cur = hi;
-    double M = 0;
-    for (int i = 0; i <= b.p; ++i)
-        for (int j = 0; j <= b.q; ++j)
-            for (int c = 0; c < 4; ++c) M = std::max(M, std::abs(b.at(i, j)[c]));
-    const double g = std::max(1.0, s1 - s0) * std::max(1.0, t1 - t0) * 3;
-    error = 6.0 * (b.p + b.q + 2) * kU * M * std::pow(g, b.p + b.q) +
-            underflow_allowance(64 * (b.p + b.q));
-    return cur;
+    return hull(top, buf[cur].data());
 }
 
 } // namespace
@@ -239,8 +168,8 @@ void TriangleBound::cuts(const Axis& a, double lo, double hi, std::vector<double
 }
 
 double TriangleBound::piece_bound(const TrianglePiece& piece, const BezierPatch& patch,
-                                  double shift_u, double shift_v,
-                                  const std::array<Vec3, 3>& Q) const {
+                                  double shift_u, double shift_v, const std::array<Vec3, 3>& Q,
+                                  double cutoff) const {
     std::array<std::array<double, 2>, 3> st;
     std::array<Vec3, 3> L;
     double hu = 0, hv = 0; // overhang beyond an open side
@@ -252,47 +181,40 @@ double TriangleBound::piece_bound(const TrianglePiece& piece, const BezierPatch&
         if (!u_.closed) hu = std::max({hu, u_.lo() - c.uv[0], c.uv[0] - u_.hi()});
         if (!v_.closed) hv = std::max({hv, v_.lo() - c.uv[1], c.uv[1] - v_.hi()});
     }
-    TriangularNet net;
-    restrict_to_triangle(patch, st, net);
-    const double hull = hull_bound(net, L);
-    if (hu == 0 && hv == 0) return hull;
-    // Beyond an open side: P against the tangent plane (header), the second
-    // derivatives over the patch continued to the piece.
-    double s0 = 0, s1 = 1, t0 = 0, t1 = 1;
-    for (const auto& x : st)
-        s0 = std::min(s0, x[0]), s1 = std::max(s1, x[0]), t0 = std::min(t0, x[1]),
-        t1 = std::max(t1, x[1]);
-    double error = 0;
-    const BezierPatch c = continued(patch, s0, s1, t0, t1, error);
-    double wmin = kInf, M = 0;
-    for (int i = 0; i <= c.p; ++i)
-        for (int j = 0; j <= c.q; ++j) {
-            wmin = std::min(wmin, c.at(i, j).w);
-            for (int k = 0; k < 3; ++k) M = std::max(M, std::abs(c.at(i, j)[k]));
-        }
-    if (!(wmin > 2 * error)) return kInf;
-    // The rounding of c's net, through second differences and the quotient.
-    const double slack =
-        16.0 * (c.p + c.q) * (c.p + c.q) * error * (1 + M / (wmin - error)) / (wmin - error);
-    const auto d = second_derivative_ranges(c);
-    const double wu = (s1 - s0) * (patch.u1 - patch.u0), wv = (t1 - t0) * (patch.v1 - patch.v0);
-    const double A = (d[0] + slack) / (wu * wu), B = (d[1] + slack) / (wu * wv),
-                 C = (d[2] + slack) / (wv * wv);
-    return hull + (A * hu * hu + 2 * B * hu * hv + C * hv * hv) / 2 * (1 + 1e-12);
+    const double side = hu == 0 && hv == 0 ? 0 : beyond_side(patch, st, hu, hv);
+    if (!(side < kInf)) return kInf;
+    // The box stage first: above degree 4, where the triangle's stage costs
+    // most, the box's looser hull may already be below the cutoff.
+    static thread_local BoxNet box; // 3 KB: not cleared per piece
+    restrict_to_box(patch, st, box);
+    if (cutoff - side > 0 && patch.p + patch.q > 4) {
+        const double early = box_hull_bound(box, L);
+        if (early <= cutoff - side) return early + side;
+    }
+    static thread_local TriangularNet net; // 7 KB
+    box_to_triangle(box, net);
+    return hull_bound(net, L, cutoff - side) + side;
 }
 
-double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q) const {
+double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q,
+                                 double cutoff) const {
     double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf}, far = 0, qmax = 0;
     for (const UV& x : uv)
         for (int a = 0; a < 2; ++a)
             lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]),
             far = std::max(far, std::abs(x[a]));
     for (const Vec3& q : Q) qmax = std::max({qmax, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+    struct Placed {
+        int patch;
+        double shift_u, shift_v;
+    };
     thread_local std::vector<double> cu, cv;
     thread_local std::vector<TrianglePiece> pieces;
+    thread_local std::vector<Placed> placed;
     cuts(u_, lo[0], hi[0], cu);
     cuts(v_, lo[1], hi[1], cv);
     pieces.clear();
+    placed.clear();
     cut_triangle(uv, cu, cv, pieces);
     // The cell's middle names its patch and period.
     auto middle = [&](int axis, int cell, const std::vector<double>& c) {
@@ -301,23 +223,36 @@ double TriangleBound::operator()(const std::array<UV, 3>& uv, const std::array<V
         return (a + b) / 2;
     };
     const int nv = static_cast<int>(v_.at.size()) - 1;
-    double worst = 0, gradient = 0;
+    double gradient = 0, local = 0;
     for (const TrianglePiece& piece : pieces) {
-        double su = 0, sv = 0;
-        const int iu = span_of(u_, middle(0, piece.cell_u, cu), su);
-        const int iv = span_of(v_, middle(1, piece.cell_v, cv), sv);
-        const int i = iu * nv + iv;
-        gradient = std::max(gradient, gradient_[i]);
-        worst = std::max(worst, piece_bound(piece, patches_[i], su, sv, Q));
-        if (!(worst < kInf)) return kInf;
+        Placed at{0, 0, 0};
+        const int iu = span_of(u_, middle(0, piece.cell_u, cu), at.shift_u);
+        const int iv = span_of(v_, middle(1, piece.cell_v, cv), at.shift_v);
+        at.patch = iu * nv + iv;
+        placed.push_back(at);
+        gradient = std::max(gradient, gradient_[at.patch]);
+        const BezierPatch& b = patches_[at.patch];
+        for (const PieceCorner& c : piece.corner)
+            local = std::max(local, std::abs(c.uv[0] - at.shift_u - b.u0) +
+                                        std::abs(c.uv[1] - at.shift_v - b.v0));
     }
     // The pieces cover T's simplex up to a few ulps of lambda, and their
     // (u,v) corners and local parameters are rounded within a few ulps of
-    // the parameters' magnitude, where a patch's continuation and its
+    // the parameters' magnitude (the restriction's moved corners among
+    // them: triangle_restriction.h), where a patch's continuation and its
     // neighbour differ by less than twice the gradient times the distance;
     // the mesh values at the pieces' corners are rounded sums of Q.
-    const double r_uv = 64 * kU * (far + (hi[0] - lo[0]) + (hi[1] - lo[1]));
+    const double r_uv = 64 * kU * (far + (hi[0] - lo[0]) + (hi[1] - lo[1]) + local);
     const double slack = 4 * gradient * r_uv + 64 * kU * qmax;
+    // A piece whose bound is at most this keeps the whole at most cutoff.
+    const double piece_cutoff = cutoff / (1 + 4e-12) - slack;
+    double worst = 0;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const Placed& at = placed[k];
+        worst = std::max(worst, piece_bound(pieces[k], patches_[at.patch], at.shift_u, at.shift_v,
+                                            Q, piece_cutoff));
+        if (!(worst < kInf)) return kInf;
+    }
     return (worst + slack) * (1 + 1e-12);
 }
 

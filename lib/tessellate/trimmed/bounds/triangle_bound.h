@@ -50,8 +50,13 @@ class TriangleBound {
 
     // The bound for the triangle with (u,v) corners uv and mesh corners Q;
     // +infinity where it cannot be certified (a weight not positive on the
-    // continuation beyond an open side).
-    double operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q) const;
+    // continuation beyond an open side). For a caller that keeps the largest
+    // bound (brep_certification.h), `cutoff`: where a piece's hull before
+    // the full degree elevation (hull_bound in the .cpp) already keeps the
+    // triangle's bound at most cutoff, that looser one stands, still a
+    // bound and still at most cutoff; elsewhere the bound is the full one.
+    double operator()(const std::array<UV, 3>& uv, const std::array<Vec3, 3>& Q,
+                      double cutoff = 0) const;
 
     // The bound over the (u,v) rectangle box = {u0, u1, v0, v1} inside the
     // domain, for the map onto the mesh bilinear over it with the values M
@@ -75,7 +80,7 @@ class TriangleBound {
     void cuts(const Axis& a, double lo, double hi, std::vector<double>& out) const;
     // The bound over one piece, on `patch` shifted by whole periods.
     double piece_bound(const TrianglePiece& piece, const BezierPatch& patch, double shift_u,
-                       double shift_v, const std::array<Vec3, 3>& Q) const;
+                       double shift_v, const std::array<Vec3, 3>& Q, double cutoff) const;
 
     std::vector<BezierPatch> patches_; // bezier_patches order: u spans outer, v spans inner
     std::vector<double> gradient_;     // per patch: a bound of |S_u|, |S_v| (rounding terms)
