@@ -34,11 +34,17 @@ void add_check(CLI::App& app, Action& action) {
     cmd->add_flag("--json", *as_json, "print the whole report as JSON");
     cmd->add_flag("--closed", opts->require_closed, "also fail unless every component is closed");
     cmd->add_option("--gap", opts->gap, gap_help.str())->check(finite_number(Bound::positive));
+    auto whole = std::make_shared<bool>(false);
+    cmd->add_flag("--union", *whole,
+                  "judge the mesh whole, as one union: without this, a mesh with solid ids "
+                  "(else part ids) is judged solid by solid and solids touching are contacts, "
+                  "not defects");
     cmd->add_flag("--no-weld", *no_weld,
                   "do not weld bit-identical vertices; judge the file's own indices");
-    cmd->callback([&action, mesh_path, as_json, opts, no_weld] {
-        action = [mesh_path, as_json, opts, no_weld] {
+    cmd->callback([&action, mesh_path, as_json, opts, no_weld, whole] {
+        action = [mesh_path, as_json, opts, no_weld, whole] {
             opts->weld = !*no_weld;
+            opts->by_solid = !*whole;
             const TriangleMesh mesh = read_mesh(*mesh_path);
             const CheckReport report = check_mesh(mesh, *opts);
             const bool passed = check_passed(report, *opts);

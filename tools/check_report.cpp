@@ -113,6 +113,27 @@ void print_edge_defects(std::ostream& os, const CheckReport& r, size_t max,
         max);
 }
 
+// The solids (or parts) judged apart and the pairs of them that touch.
+void print_bodies(std::ostream& os, const CheckReport& r, size_t max) {
+    if (r.bodies == CheckBodies::whole) return;
+    const std::string kind = r.bodies == CheckBodies::solids ? "solid" : "part";
+    os << "judged apart: " << r.body_count << " " << kind << (r.body_count == 1 ? "" : "s")
+       << " (--union judges the mesh whole)";
+    if (r.body_vertex_copies)
+        os << ", " << r.body_vertex_copies << " vertices they share judged in each";
+    os << "\n";
+    os << "contacts between " << kind << "s (not a defect): " << r.contacts.size()
+       << " triangle pairs\n";
+    print_list(
+        os, ("  " + kind + "s in contact").c_str(), r.body_contacts,
+        [&](const BodyContact& c) {
+            return kind + "s " + std::to_string(c.body0) + " and " + std::to_string(c.body1) +
+                   ": " + std::to_string(c.triangle_pairs) + " triangle pairs, at " +
+                   point(c.location);
+        },
+        max);
+}
+
 // Triangle defects and overlaps, then the shells with their measures.
 void print_triangles_and_shells(std::ostream& os, const CheckReport& r, size_t max,
                                 const TriangleMesh* mesh) {
@@ -130,13 +151,18 @@ void print_triangles_and_shells(std::ostream& os, const CheckReport& r, size_t m
     print_list(os, "self-intersections within a shell", r.self_intersections, pair, max);
     print_list(os, "overlaps between shells (not a defect)", r.overlaps, pair,
                std::min<size_t>(max, 5));
+    print_bodies(os, r, max);
+    const char* body = r.bodies == CheckBodies::parts ? "part" : "solid";
     for (size_t c = 0; c < r.components.size(); ++c) {
         const auto& C = r.components[c];
         if (c >= 20) {
             os << "... " << r.components.size() - 20 << " more shells\n";
             break;
         }
-        os << "shell " << c << ": " << C.triangles << " triangles, "
+        os << "shell " << c;
+        if (r.bodies != CheckBodies::whole && c < r.component_body.size())
+            os << " (" << body << " " << r.component_body[c] << ")";
+        os << ": " << C.triangles << " triangles, "
            << (C.closed ? "closed" : "open (" + std::to_string(C.border_edges) + " border edges)");
         if (C.euler) os << ", Euler characteristic " << *C.euler;
         if (C.genus) os << ", genus " << *C.genus;
@@ -157,7 +183,8 @@ void print_defect_faces(std::ostream& os, const CheckReport& r, size_t max,
                         (f.defects == 1 ? " defect or border loop" : " defects or border loops"));
     }
     print_list(
-        os, "faces with defects or border loops", lines, [](const std::string& s) { return s; }, max);
+        os, "faces with defects or border loops", lines, [](const std::string& s) { return s; },
+        max);
 }
 
 } // namespace

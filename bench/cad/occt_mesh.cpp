@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
-// occt_mesh FILE.step|.iges -o OUT.off: OpenCASCADE's side of the CAD
+// occt_mesh FILE.step|.iges -o OUT.ply: OpenCASCADE's side of the CAD
 // benchmark (issue 28, docs/results/cad.md). Reads the file with
 // STEPControl_Reader / IGESControl_Reader, meshes it with
 // BRepMesh_IncrementalMesh at a deflection and angle on 1 or N threads, and
-// writes what OpenCASCADE gives as its users get it from StlAPI_Writer or
-// RWGltf_CafWriter: every face's Poly_Triangulation with its location,
-// reversed faces flipped, nodes per face (the nodes of an edge two faces share
-// are not merged; they are bit-identical where OpenCASCADE put them so, and
-// `seamless check` welds those). Prints the figures as JSON on stdout.
+// writes (a PLY with face and solid ids) what OpenCASCADE gives as its users
+// get it from StlAPI_Writer or RWGltf_CafWriter: every face's
+// Poly_Triangulation with its location, reversed faces flipped, nodes per face
+// (the nodes of an edge two faces share are not merged; they are bit-identical
+// where OpenCASCADE put them so, and `seamless check` welds those). Prints the
+// figures as JSON on stdout.
 // Lengths stay in the file's unit, as seamless reads them (not converted to
 // millimetres), so both meshes are measured against the same B-rep.
 #include <seamless/base/triangle_mesh.h>
@@ -144,33 +145,47 @@ struct Collected {
     int faces = 0, unmeshed = 0;
 };
 
-// Every face occurrence (an assembly's instances each with its location).
+// One face occurrence's triangles, of solid `solid` (-1: none).
+void collect_face(const TopoDS_Face& f, int solid, Collected& c) {
+    ++c.faces;
+    TopLoc_Location loc;
+    const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(f, loc);
+    if (tri.IsNull() || tri->NbTriangles() == 0) {
+        ++c.unmeshed;
+        return;
+    }
+    const gp_Trsf tr = loc.Transformation();
+    const int base = c.mesh.vertex_count();
+    for (int i = 1; i <= tri->NbNodes(); ++i) {
+        gp_Pnt p = tri->Node(i);
+        if (!loc.IsIdentity()) p.Transform(tr);
+        c.mesh.positions.push_back({p.X(), p.Y(), p.Z()});
+    }
+    const bool reversed = f.Orientation() == TopAbs_REVERSED;
+    for (int t = 1; t <= tri->NbTriangles(); ++t) {
+        int i0, i1, i2;
+        tri->Triangle(t).Get(i0, i1, i2);
+        if (reversed) std::swap(i1, i2);
+        c.mesh.triangles.push_back({base + i0 - 1, base + i1 - 1, base + i2 - 1});
+        c.mesh.triangle_part.push_back(0);
+        c.mesh.triangle_face.push_back(c.faces - 1);
+        c.mesh.triangle_solid.push_back(solid);
+    }
+}
+
+// Every face occurrence (an assembly's instances each with its location),
+// solid by solid, then the faces in no solid; face and solid ids in that
+// order, so that `seamless check` judges each solid apart as it does
+// seamless's meshes (docs/check.md).
 Collected collect(const TopoDS_Shape& shape) {
     Collected c;
-    for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
-        const TopoDS_Face& f = TopoDS::Face(ex.Current());
-        ++c.faces;
-        TopLoc_Location loc;
-        const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(f, loc);
-        if (tri.IsNull() || tri->NbTriangles() == 0) {
-            ++c.unmeshed;
-            continue;
-        }
-        const gp_Trsf tr = loc.Transformation();
-        const int base = c.mesh.vertex_count();
-        for (int i = 1; i <= tri->NbNodes(); ++i) {
-            gp_Pnt p = tri->Node(i);
-            if (!loc.IsIdentity()) p.Transform(tr);
-            c.mesh.positions.push_back({p.X(), p.Y(), p.Z()});
-        }
-        const bool reversed = f.Orientation() == TopAbs_REVERSED;
-        for (int t = 1; t <= tri->NbTriangles(); ++t) {
-            int i0, i1, i2;
-            tri->Triangle(t).Get(i0, i1, i2);
-            if (reversed) std::swap(i1, i2);
-            c.mesh.triangles.push_back({base + i0 - 1, base + i1 - 1, base + i2 - 1});
-        }
-    }
+    c.mesh.part_names = {"shape"};
+    int solids = 0;
+    for (TopExp_Explorer s(shape, TopAbs_SOLID); s.More(); s.Next(), ++solids)
+        for (TopExp_Explorer ex(s.Current(), TopAbs_FACE); ex.More(); ex.Next())
+            collect_face(TopoDS::Face(ex.Current()), solids, c);
+    for (TopExp_Explorer ex(shape, TopAbs_FACE, TopAbs_SOLID); ex.More(); ex.Next())
+        collect_face(TopoDS::Face(ex.Current()), -1, c);
     return c;
 }
 

@@ -8,7 +8,8 @@ diagonal (OpenCASCADE's, BRepBndLib::AddOptimal) and angle 0.5 rad:
   - `seamless tessellate --tolerance D --angle 28.65 (degrees) --stats` on 1
     and 2 threads, and `occt_mesh --deflection D --angle 0.5` on 1 and 2
     threads (BRepMesh_IncrementalMesh; reading timed apart);
-  - `seamless check --closed --json` on both meshes;
+  - `seamless check --closed --json` on both meshes (PLY with solid ids: each
+    solid judged apart, solids in contact reported, not counted as defects);
   - `brep_deviation MODEL MESH` on both meshes: the same two-way measure
     against the B-rep (lib/mesh/deviation/brep_deviation.h);
 then writes docs/results/cad.md. Every run has a time limit; a file seamless
@@ -37,6 +38,9 @@ LEVELS = (1e-3, 1e-4)
 ANGLE_RAD = 0.5
 # `seamless tessellate --angle` takes degrees.
 ANGLE_DEG = math.degrees(ANGLE_RAD)
+# The meshes judged and measured: PLY, whose solid ids let `check` judge each
+# solid apart (docs/check.md), for both tools.
+MESH_EXT = "ply"
 
 
 def corpus_files():
@@ -159,7 +163,7 @@ class Bench:
 
     def tool_side(self, path, level, D, tool):
         """Both thread counts, the check and the deviation of one tool's mesh."""
-        mesh = self.out(path, level, tool, "off")
+        mesh = self.out(path, level, tool, MESH_EXT)
         if os.path.exists(mesh):
             os.remove(mesh)
         if tool == "occt":
@@ -245,7 +249,8 @@ def remeasure(bench, args):
                 side = entry[tool]
                 if side["run1"].get("ok"):
                     print("==", row["name"], key, tool, flush=True)
-                    side["deviation"] = bench.measure(path, bench.out(path, float(key), tool, "off"))
+                    side["deviation"] = bench.measure(
+                        path, bench.out(path, float(key), tool, MESH_EXT))
     with open(results_path, "w") as f:
         json.dump(results, f, indent=1)
     import cad_report

@@ -34,6 +34,10 @@ struct TriangleMesh {
     // (mesh/io/placed_mesh.h) and by the readers of files that carry them.
     std::vector<int> triangle_face, triangle_part;
     std::vector<std::string> part_names;
+    // triangle_solid: #F index of the solid its face belongs to, one per
+    // solid as placed (instance after instance; -1: a face in no solid), so
+    // that `check` judges each solid apart (empty when absent).
+    std::vector<int> triangle_solid;
 
     int vertex_count() const { return static_cast<int>(positions.size()); }
     int triangle_count() const { return static_cast<int>(triangles.size()); }

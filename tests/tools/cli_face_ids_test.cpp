@@ -56,9 +56,10 @@ TEST_CASE("check names the faces of a broken OBJ and PLY written with face ids",
             CHECK_THAT(text, Catch::Contains("\no b123d_M6-1x12-countersunk-screw\ng face_0\n"));
             broken = edit_line(text, "f ", 4, 10, [](const std::string&) { return "# dropped"; });
         } else {
-            CHECK_THAT(text, Catch::Contains("property int part_id\nproperty int face_id\n"));
-            // Turn the first triangle: "3 a b c part face" -> "3 a c b part face".
-            broken = edit_line(text, "3 ", 6, 0, [](const std::string& l) {
+            CHECK_THAT(text, Catch::Contains("property int part_id\nproperty int face_id\n"
+                                             "property int solid_id\n"));
+            // Turn the first triangle: "3 a b c part face solid" -> "3 a c b part face solid".
+            broken = edit_line(text, "3 ", 7, 0, [](const std::string& l) {
                 std::istringstream s(l);
                 std::string n, a, b, c, rest;
                 s >> n >> a >> b >> c;

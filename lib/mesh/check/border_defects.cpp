@@ -40,7 +40,7 @@ class BorderDefectFinder {
   public:
     BorderDefectFinder(const WeldedMesh& mesh, const std::vector<EdgeUse>& border,
                        GapTolerance tolerance)
-        : P(mesh.positions), T(mesh.triangles), border_(border), tolerance_(tolerance),
+        : M(mesh), P(mesh.positions), T(mesh.triangles), border_(border), tolerance_(tolerance),
           nb_(static_cast<int>(border.size())) {}
 
     BorderDefects find() && {
@@ -69,20 +69,24 @@ class BorderDefectFinder {
         }
     }
 
-    // Border edges with bit-identical end positions (only without welding: after
-    // it, positions are vertices) are judged once, by the first of them; the
-    // others are cracks along it. k copies of a triangle cost O(k), not O(k^2).
+    // Border edges of one body with bit-identical end positions (only without
+    // welding: after it, positions are vertices) are judged once, by the first
+    // of them; the others are cracks along it. k copies of a triangle cost
+    // O(k), not O(k^2).
     void find_first_copies() {
         first_copy_.resize(nb_);
-        std::unordered_map<std::array<uint64_t, 6>, int, BitsHash> first;
+        std::unordered_map<std::array<uint64_t, 7>, int, BitsHash> first;
         for (int e = 0; e < nb_; ++e) {
-            std::array<uint64_t, 6> key;
+            std::array<uint64_t, 7> key;
             Vec3 a = P[border_[e].lo], b = P[border_[e].hi];
             std::memcpy(key.data(), &a, 24);
             std::memcpy(key.data() + 3, &b, 24);
             if (std::lexicographical_compare(key.begin() + 3, key.end(), key.begin(),
                                              key.begin() + 3))
                 std::swap_ranges(key.begin(), key.begin() + 3, key.begin() + 3);
+            key[6] = M.triangle_body.empty()
+                         ? 0
+                         : static_cast<uint64_t>(M.triangle_body[border_[e].triangle]);
             first_copy_[e] = first.try_emplace(key, e).first->second;
         }
     }
@@ -103,10 +107,10 @@ class BorderDefectFinder {
                                e);
         }
         // Two sides of one triangle are its shape, not a crack (a zero-area triangle
-        // is reported as degenerate).
+        // is reported as degenerate); borders of two bodies are judged apart.
         CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
-            if (border_[x.info()].triangle != border_[y.info()].triangle)
-                pairs_.push_back(std::minmax(x.info(), y.info()));
+            const int s = border_[x.info()].triangle, t = border_[y.info()].triangle;
+            if (s != t && M.same_body(s, t)) pairs_.push_back(std::minmax(x.info(), y.info()));
         });
         std::sort(pairs_.begin(), pairs_.end());
     }
@@ -264,6 +268,7 @@ class BorderDefectFinder {
         }
     }
 
+    const WeldedMesh& M;
     const std::vector<Vec3>& P;
     const std::vector<std::array<int, 3>>& T;
     const std::vector<EdgeUse>& border_;

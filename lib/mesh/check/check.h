@@ -5,7 +5,9 @@
 // defects: seam cracks, T-junctions, border loops (border_defects.h); degenerate,
 // duplicated and intersecting triangles (self_intersections.h); and per closed
 // shell Euler characteristic, genus, volume and outward orientation
-// (shell_measures.h). docs/check.md explains every item.
+// (shell_measures.h). A mesh with solid ids (or part ids) is judged solid by
+// solid: where solids touch is the model's geometry, reported as contacts, not
+// a defect of the mesh. docs/check.md explains every item.
 #pragma once
 
 #include <seamless/base/triangle_mesh.h>
@@ -16,6 +18,10 @@
 #include <vector>
 
 namespace seamless {
+
+// What a check judges apart: the mesh's solids (TriangleMesh::triangle_solid),
+// else its parts (triangle_part), else the whole mesh as one.
+enum class CheckBodies { whole, parts, solids };
 
 struct CheckOptions {
     // gap: absolute tolerance of cracks and T-junctions, model units; <= 0 means
@@ -32,6 +38,16 @@ struct CheckOptions {
     bool weld = true;
     // require_closed: every component (shell) must be closed for check_passed().
     bool require_closed = false;
+    // by_solid: judge each solid (else part) of a mesh with such ids apart;
+    // false judges the whole mesh as one union, touching solids included.
+    bool by_solid = true;
+};
+
+// Two bodies that touch or overlap: the triangle pairs between them.
+struct BodyContact {
+    int body0 = -1, body1 = -1; // ids (solid or part), body0 < body1
+    int triangle_pairs = 0;
+    Vec3 location; // of the first pair
 };
 
 struct CheckReport {
@@ -60,19 +76,31 @@ struct CheckReport {
     std::vector<TrianglePair> self_intersections; // within one shell
     std::vector<TrianglePair> overlaps;           // between shells (not a defect)
 
+    // Bodies judged apart: what they are, how many (-1, no solid or part,
+    // counts as one), vertices copied because bodies shared them (weld.h),
+    // intersecting triangle pairs of different bodies (not a defect), and
+    // those pairs counted per pair of bodies, ordered by the pair.
+    CheckBodies bodies = CheckBodies::whole;
+    int body_count = 1;
+    int body_vertex_copies = 0;
+    std::vector<TrianglePair> contacts;
+    std::vector<BodyContact> body_contacts;
+
     // One component, a shell: triangles connected through shared edges (manifold
     // or not, or border edges lying along each other from a shared vertex: the
     // sides of a T-junction or crack). Shells touching only at vertices stay
     // apart; such a vertex counts in each.
     std::vector<ComponentReport> components;
     std::vector<int> triangle_component; // #F shell index of each triangle
+    std::vector<int> component_body;     // per component, its body's id (-1 judged whole)
 };
 
 CheckReport check_mesh(const TriangleMesh& mesh, const CheckOptions& options = {});
 
 // Number of defects: crack edges, T-junctions, non-manifold edges and vertices,
 // degenerate and duplicated triangles, inconsistent orientation pairs and
-// self-intersections (shell contacts and overlaps between shells do not count).
+// self-intersections (shell contacts, overlaps between shells and contacts
+// between bodies do not count).
 int defect_count(const CheckReport& report);
 
 // No defects and, when options.require_closed, every component closed.

@@ -87,9 +87,27 @@ void add_triangle_defects(json& j, const CheckReport& r, int max_listed) {
     j["overlaps"] = list_json(r.overlaps, max_listed, pair_json);
 }
 
+const char* bodies_name(CheckBodies b) {
+    return b == CheckBodies::solids ? "solids" : b == CheckBodies::parts ? "parts" : "whole";
+}
+
+// The bodies judged apart and where they touch.
+void add_bodies(json& j, const CheckReport& r, int max_listed) {
+    j["bodies"] = bodies_name(r.bodies);
+    j["body_count"] = r.body_count;
+    j["body_vertex_copies"] = r.body_vertex_copies;
+    j["contacts"] = list_json(r.contacts, max_listed, pair_json);
+    j["body_contacts"] = list_json(r.body_contacts, max_listed, [&](const BodyContact& c) {
+        return json{{"bodies", {c.body0, c.body1}},
+                    {"triangle_pairs", c.triangle_pairs},
+                    {"location", point_json(c.location)}};
+    });
+}
+
 json components_json(const CheckReport& r) {
     json comps = json::array();
-    for (const auto& c : r.components) {
+    for (size_t k = 0; k < r.components.size(); ++k) {
+        const ComponentReport& c = r.components[k];
         json o{{"vertices", c.vertices},
                {"triangles", c.triangles},
                {"edges", c.edges},
@@ -99,6 +117,8 @@ json components_json(const CheckReport& r) {
         if (c.genus) o["genus"] = *c.genus;
         if (c.volume) o["volume"] = *c.volume;
         if (c.outward) o["outward"] = *c.outward;
+        if (r.bodies != CheckBodies::whole && k < r.component_body.size())
+            o["body"] = r.component_body[k];
         comps.push_back(o);
     }
     return comps;
@@ -124,6 +144,7 @@ std::string check_report_json(const CheckReport& r, int max_listed) {
     add_topology(j, r, max_listed);
     add_border_defects(j, r, max_listed);
     add_triangle_defects(j, r, max_listed);
+    add_bodies(j, r, max_listed);
     j["component_list"] = components_json(r);
     j["defects"] = defect_count(r);
     return j.dump(2);

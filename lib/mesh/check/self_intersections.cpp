@@ -149,16 +149,18 @@ Intersections find_intersections(const WeldedMesh& mesh, const std::vector<int>&
     for (const auto& d : degenerate) skip[d.triangle] = 1;
     for (const auto& d : duplicated) skip[d.t1] = 1;
     // Without welding, copies with their own vertices: bit-identical corner
-    // positions. Only the first takes part (with welding these are the duplicates).
+    // positions. Only the first of a body takes part (with welding these are
+    // the duplicates; a copy in another body is a contact).
     {
-        std::unordered_set<std::array<uint64_t, 9>, BitsHash> seen;
+        std::unordered_set<std::array<uint64_t, 10>, BitsHash> seen;
         for (int t = 0; t < nf; ++t) {
             if (skip[t]) continue;
             std::array<std::array<uint64_t, 3>, 3> c;
             for (int k = 0; k < 3; ++k) std::memcpy(c[k].data(), &P[T[t][k]], 24);
             std::sort(c.begin(), c.end());
-            std::array<uint64_t, 9> key;
+            std::array<uint64_t, 10> key;
             for (int k = 0; k < 9; ++k) key[k] = c[k / 3][k % 3];
+            key[9] = mesh.triangle_body.empty() ? 0 : static_cast<uint64_t>(mesh.triangle_body[t]);
             if (!seen.insert(key).second) skip[t] = 1;
         }
     }
@@ -188,14 +190,18 @@ Intersections find_intersections(const WeldedMesh& mesh, const std::vector<int>&
                     hit = triangles_intersect(P, pa, pb);
         if (!hit) return;
         const TrianglePair pr{a, b, centroid(P, T[a])};
-        (triangle_shell[a] == triangle_shell[b] ? out.self_intersections : out.overlaps)
-            .push_back(pr);
+        if (!mesh.same_body(a, b))
+            out.contacts.push_back(pr);
+        else
+            (triangle_shell[a] == triangle_shell[b] ? out.self_intersections : out.overlaps)
+                .push_back(pr);
     });
     auto by_index = [](const TrianglePair& x, const TrianglePair& y) {
         return std::tie(x.t0, x.t1) < std::tie(y.t0, y.t1);
     };
     std::sort(out.self_intersections.begin(), out.self_intersections.end(), by_index);
     std::sort(out.overlaps.begin(), out.overlaps.end(), by_index);
+    std::sort(out.contacts.begin(), out.contacts.end(), by_index);
     return out;
 }
 

@@ -2,8 +2,9 @@
 // Triangle defects for the watertightness check (docs/check.md, steps 7, 8 and
 // 10), the only part decided by CGAL's exact predicates: degenerate (zero-area)
 // triangles, duplicated triangles (hashed by their sorted vertex triple), and
-// intersecting triangle pairs, within one shell (self-intersections) or between
-// shells (overlaps).
+// intersecting triangle pairs, within one shell (self-intersections), between
+// shells of one body (overlaps) or between bodies (contacts: solids or parts
+// judged apart, weld.h).
 #pragma once
 
 #include <seamless/mesh/check/border_defects.h>
@@ -28,6 +29,7 @@ std::vector<TrianglePair> duplicated_triangles(const WeldedMesh& mesh);
 struct Intersections {
     std::vector<TrianglePair> self_intersections; // within one shell, sorted by (t0, t1)
     std::vector<TrianglePair> overlaps;           // between shells, sorted by (t0, t1)
+    std::vector<TrianglePair> contacts;           // between bodies, sorted by (t0, t1)
 };
 
 // Pairs of non-degenerate triangles whose boxes overlap and that intersect by

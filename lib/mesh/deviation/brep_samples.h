@@ -13,8 +13,8 @@
 namespace seamless {
 
 struct BRepSamplingOptions {
-    // Per face: between min_grid and max_grid cells in each direction of its
-    // (u,v) box, about `spacing` apart in 3D.
+    // Per face: cells of a grid over its (u,v) box about `spacing` apart in
+    // 3D, at least min_grid in each direction and at most max_grid^2 in all.
     int min_grid = 16, max_grid = 400;
     double spacing = 0; // model units; 0: min_grid
     // Per edge: between min_edge_samples and max_edge_samples points, `spacing` apart.

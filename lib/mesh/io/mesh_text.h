@@ -126,7 +126,8 @@ inline void add_polygon(TriangleMesh& mesh, const std::vector<long long>& face) 
 
 // The body that OFF and ASCII PLY share: one "x y z" line per vertex, then
 // one "3 a b c" line per triangle (0-based indices), with `face_ids` its
-// part and face id after it ("3 a b c part face").
+// part and face id after it ("3 a b c part face"), and its solid id when the
+// mesh has them (has_solid_ids).
 void append_points_and_triangles(std::string& out, const TriangleMesh& mesh, bool face_ids);
 
 // Whether `mesh` holds face ids to write: triangle_face and triangle_part
@@ -134,6 +135,11 @@ void append_points_and_triangles(std::string& out, const TriangleMesh& mesh, boo
 inline bool has_face_ids(const TriangleMesh& mesh) {
     return !mesh.triangles.empty() && mesh.triangle_face.size() == mesh.triangles.size() &&
            mesh.triangle_part.size() == mesh.triangles.size();
+}
+
+// Whether `mesh` also holds solid ids: triangle_solid for every triangle.
+inline bool has_solid_ids(const TriangleMesh& mesh) {
+    return !mesh.triangles.empty() && mesh.triangle_solid.size() == mesh.triangles.size();
 }
 
 // A name on one line of a text format: control characters become spaces,

@@ -70,6 +70,7 @@ void append_points_and_triangles(std::string& out, const TriangleMesh& mesh, boo
         append_point(out, p);
         out += '\n';
     }
+    const bool solid_ids = face_ids && has_solid_ids(mesh);
     for (size_t k = 0; k < mesh.triangles.size(); ++k) {
         const auto& t = mesh.triangles[k];
         out += '3';
@@ -77,6 +78,7 @@ void append_points_and_triangles(std::string& out, const TriangleMesh& mesh, boo
         if (face_ids)
             for (int id : {mesh.triangle_part[k], mesh.triangle_face[k]})
                 (out += ' ') += std::to_string(id);
+        if (solid_ids) (out += ' ') += std::to_string(mesh.triangle_solid[k]);
         out += '\n';
     }
 }

@@ -68,7 +68,11 @@ TriangleMesh with_face_ids(const TriangleMesh& mesh, const Model& model) {
     TriangleMesh out = mesh;
     out.part_names = {file_stem(model)};
     out.triangle_face = triangle_faces(mesh, model);
-    for (int f : out.triangle_face) out.triangle_part.push_back(f >= 0 ? 0 : -1);
+    const std::vector<int> solid_of = face_solids(model.brep);
+    for (int f : out.triangle_face) {
+        out.triangle_part.push_back(f >= 0 ? 0 : -1);
+        out.triangle_solid.push_back(f >= 0 ? solid_of[f] : -1);
+    }
     return out;
 }
 
@@ -97,6 +101,17 @@ class VertexCopies {
 };
 
 } // namespace
+
+std::vector<int> face_solids(const BRep& brep) {
+    std::vector<int> solid_of(brep.faces.size(), -1);
+    const int nf = static_cast<int>(brep.faces.size());
+    for (int s = static_cast<int>(brep.solids.size()) - 1; s >= 0; --s)
+        for (int shell : brep.solids[s].shells)
+            if (shell >= 0 && shell < static_cast<int>(brep.shells.size()))
+                for (int f : brep.shells[shell].faces)
+                    if (f >= 0 && f < nf) solid_of[f] = s;
+    return solid_of;
+}
 
 std::vector<int> face_of_surface(const Model& model) {
     std::vector<int> face_on(model.surfaces.size(), -1);
@@ -197,7 +212,9 @@ TriangleMesh placed_mesh(const TriangleMesh& mesh, const Model& model) {
     const std::vector<PartRange> ranges = part_ranges(a);
     const std::vector<AffineMap> world = world_placements(a);
     VertexCopies vertex(mesh, out);
-    int flat = 0; // the face copied, in flatten_assembly's order
+    const std::vector<int> solid_of = face_solids(model.brep);
+    int flat = 0;        // the face copied, in flatten_assembly's order
+    int first_solid = 0; // this copy's first solid, in that order
     for (size_t n = 0; n < a.nodes.size(); ++n) {
         const int p = a.nodes[n].part;
         if (p < 0) continue;
@@ -212,8 +229,11 @@ TriangleMesh placed_mesh(const TriangleMesh& mesh, const Model& model) {
                 out.triangle_face.push_back(flat);
                 out.triangle_surface.push_back(flat);
                 out.triangle_part.push_back(p);
+                out.triangle_solid.push_back(
+                    solid_of[f] >= 0 ? first_solid + solid_of[f] - ranges[p].first_solid : -1);
             }
         }
+        first_solid += ranges[p].solid_count;
     }
     SEAMLESS_CHECK(flat == static_cast<int>(sources.size()), "placed faces counted twice");
     // Surfaces no face lies on, once, as flatten_assembly copies them.
@@ -231,6 +251,7 @@ TriangleMesh placed_mesh(const TriangleMesh& mesh, const Model& model) {
         out.triangle_face.push_back(-1);
         out.triangle_surface.push_back(it->second);
         out.triangle_part.push_back(-1);
+        out.triangle_solid.push_back(-1);
     }
     return out;
 }

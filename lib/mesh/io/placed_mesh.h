@@ -18,6 +18,10 @@ namespace seamless {
 // faces lie on (a STEP/IGES B-rep has one surface per face).
 std::vector<int> face_of_surface(const Model& model);
 
+// Each face's solid in `brep`: the first solid whose shells hold it, -1
+// for a face in no solid.
+std::vector<int> face_solids(const BRep& brep);
+
 // Each triangle's face in `model`, by its surface (face_of_surface), -1
 // where that names no one face; empty when `mesh` does not give every
 // triangle's surface.
@@ -49,9 +53,11 @@ PlacedCounts placed_counts(const TriangleMesh& mesh, const Model& model);
 // triangle_surface is the same index and surface_names the copies' names
 // ("#55", "#55.2"), then the surfaces no face lies on, copied once (face and
 // part -1); triangle_part indexes part_names (the parts' names, a repeated
-// one made unique as "name.2"). A B-rep model without a tree: the mesh with
-// triangle_face from its surfaces and one part named after the file. A model
-// without faces: the mesh as it is.
+// one made unique as "name.2"); triangle_solid indexes the solids of
+// flatten_assembly(model) (face_solids; -1 for a face in no solid). A B-rep
+// model without a tree: the mesh with triangle_face from its surfaces, its
+// solids, and one part named after the file. A model without faces: the
+// mesh as it is.
 TriangleMesh placed_mesh(const TriangleMesh& mesh, const Model& model);
 
 } // namespace seamless

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // PLY: ascii, binary_little_endian and binary_big_endian; the vertex element's
 // x, y, z and the face element's vertex_indices (or vertex_index) list, and
-// its part_id and face_id (face ids, with the parts' names in "comment
-// part_name K NAME" lines); other elements and properties are skipped.
+// its part_id, face_id and solid_id (face ids, with the parts' names in
+// "comment part_name K NAME" lines); other elements and properties are skipped.
 #include <seamless/mesh/io/mesh_text.h>
 
 #include <cmath>
@@ -150,7 +150,7 @@ PlyHeader read_header(Tokens& in, const std::string& file, size_t size) {
 // Where an element keeps what a mesh needs: the x, y, z properties and the
 // vertex_indices (or vertex_index) list, or -1.
 struct PlyLayout {
-    int x = -1, y = -1, z = -1, faces = -1, part = -1, face = -1;
+    int x = -1, y = -1, z = -1, faces = -1, part = -1, face = -1, solid = -1;
 };
 
 PlyLayout layout_of(const PlyElement& e) {
@@ -164,6 +164,7 @@ PlyLayout layout_of(const PlyElement& e) {
             l.faces = static_cast<int>(k);
         if (!p.list && p.name == "part_id") l.part = static_cast<int>(k);
         if (!p.list && p.name == "face_id") l.face = static_cast<int>(k);
+        if (!p.list && p.name == "solid_id") l.solid = static_cast<int>(k);
     }
     return l;
 }
@@ -228,10 +229,11 @@ class PlyBody {
         }
         if (is_face && l.faces < 0)
             throw InputError(file_, "element face", "needs a vertex_indices list");
-        const bool ids = is_face && (l.part >= 0 || l.face >= 0);
+        const bool face_ids = is_face && (l.part >= 0 || l.face >= 0);
+        const bool ids = face_ids || (is_face && l.solid >= 0);
         for (long long i = 0; i < (e.properties.empty() ? 0 : e.count); ++i) {
             Vec3 p;
-            int ids_of[2] = {-1, -1}; // part, face
+            int ids_of[3] = {-1, -1, -1}; // part, face, solid
             const size_t before = mesh_.triangles.size();
             for (size_t k = 0; k < e.properties.size(); ++k) {
                 const auto& prop = e.properties[k];
@@ -245,16 +247,18 @@ class PlyBody {
                         if (kk == l.y) p.y = v;
                         if (kk == l.z) p.z = v;
                     }
-                    if (ids && (kk == l.part || kk == l.face))
-                        ids_of[kk == l.face] = face_id(v, e, i, prop);
+                    if (ids && (kk == l.part || kk == l.face || kk == l.solid))
+                        ids_of[kk == l.part ? 0 : kk == l.face ? 1 : 2] = face_id(v, e, i, prop);
                 }
             }
             if (is_vertex) mesh_.positions.push_back(p);
-            if (ids) add_polygon_ids(mesh_, before, ids_of[0], ids_of[1]);
+            if (face_ids) add_polygon_ids(mesh_, before, ids_of[0], ids_of[1]);
+            if (is_face && l.solid >= 0)
+                mesh_.triangle_solid.resize(mesh_.triangles.size(), ids_of[2]);
         }
     }
 
-    // A part_id or face_id: an integer from -1 (none) to 2^31 - 1.
+    // A part_id, face_id or solid_id: an integer from -1 (none) to 2^31 - 1.
     int face_id(double v, const PlyElement& e, long long i, const PlyProperty& prop) const {
         if (!(v >= -1 && v <= 2147483647.0) || v != std::floor(v))
             throw InputError(file_, e.name + " " + std::to_string(i),
@@ -314,6 +318,7 @@ std::string format_ply(const TriangleMesh& mesh) {
            "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
            std::to_string(mesh.triangle_count()) + "\nproperty list uchar int vertex_indices\n";
     if (ids) out += "property int part_id\nproperty int face_id\n";
+    if (ids && has_solid_ids(mesh)) out += "property int solid_id\n";
     out += "end_header\n";
     append_points_and_triangles(out, mesh, ids);
     return out;
