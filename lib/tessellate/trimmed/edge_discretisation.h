@@ -59,7 +59,7 @@ double angle_between(Vec3 a, Vec3 b);
 
 // The angle limit, tested as angle_between(a, b) > angle is, to the same
 // verdict: the cosine settles all but the near-equal cases without atan2
-// (a quarter of a face's refinement judged its triangles' normals).
+// (every judged triangle tests six pairs of normals).
 class AngleLimit {
   public:
     explicit AngleLimit(double angle);
