@@ -3,7 +3,7 @@
 // extracted when a point in its knot span is first evaluated. A trimmed
 // face samples its surface hundreds of thousands of times over the few
 // spans its loops cover, and a Bezier patch evaluates without the B-spline
-// basis's chain of divisions (which took a fifth of a face's refinement).
+// basis's chain of divisions (docs/results/cad.md, where the time goes).
 // Lazy, so not thread-safe: one per thread, as a face's refinement has.
 #pragma once
 
