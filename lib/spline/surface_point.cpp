@@ -3,6 +3,7 @@
 
 #include <seamless/spline/bezier_patch.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace seamless {
@@ -10,8 +11,13 @@ namespace seamless {
 namespace {
 
 // The normal n = sp.normal() is used as it is (not approached from elsewhere).
+// Besides a vanishing cross product, a derivative 1e-10 of the other's is a
+// pole whose control points differ by rounding (a sphere placed off its
+// axes): its direction is noise.
 bool regular(const SurfacePoint& sp, Vec3 n) {
-    return is_finite(n) && norm(n) > 1e-12 * norm(sp.du) * norm(sp.dv) && norm(n) > 0;
+    const double du = norm(sp.du), dv = norm(sp.dv);
+    return is_finite(n) && norm(n) > 1e-12 * du * dv && norm(n) > 0 &&
+           std::min(du, dv) > 1e-10 * std::max(du, dv);
 }
 
 } // namespace

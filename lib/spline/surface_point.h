@@ -43,8 +43,10 @@ inline Vec3 exact_point(const BezierPatch& b, double s, double t) {
 // Unit normal dP/du x dP/dv at local (s, t) of `b`; where it vanishes (a pole,
 // a collapsed edge) the limit normal, approached from (toward_s, toward_t).
 Vec3 unit_normal(const BezierPatch& b, double s, double t, double toward_s, double toward_t);
-// Where the normal does not vanish at (s, t) itself: true, and in n the same
-// value as unit_normal's (then a function of b, s and t alone); else false.
+// Where the normal does not vanish at (s, t) itself, nor is one derivative
+// a rounding of the other (a pole whose control points differ by rounding):
+// true, and in n the same value as unit_normal's (then a function of b, s
+// and t alone); else false.
 bool regular_unit_normal(const BezierPatch& b, double s, double t, Vec3& n);
 
 } // namespace seamless

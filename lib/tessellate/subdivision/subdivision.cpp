@@ -65,8 +65,11 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
     };
     for (int k = 0; k < 4; ++k) {
         const int k1 = (k + 1) % 4;
-        const Vec3 n = normalize(cross(V[k] - centre, V[k1] - centre));
-        if (!(norm(n) > 0)) continue; // a pole's empty triangle
+        const Vec3 a = V[k] - centre, c = V[k1] - centre, m = cross(a, c);
+        // A pole's empty triangle, also where its corners differ by rounding
+        // (a sphere placed off its axes): its plane is noise.
+        if (!(norm(m) > 1e-10 * norm(a) * norm(c))) continue;
+        const Vec3 n = normalize(m);
         if (o.tolerance > 0) {
             // Quick rejection (not part of the proof): the surface at the
             // triangle's parameter centroid far from its plane.
@@ -79,12 +82,12 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
         }
         if (o.angle > 0) {
             const double cos_half = std::cos(0.5 * o.angle);
-            for (const double* c : {kParam[k], kParam[k1]}) {
-                const Vec3 sn = normalize(evaluate(b, c[0], c[1]).normal());
-                if (norm(sn) > 0 && dot(sn, n) < cos_half) return false;
-            }
-            const Vec3 cn = normalize(evaluate(b, 0.5, 0.5).normal());
-            if (norm(cn) > 0 && dot(cn, n) < cos_half) return false;
+            // A pole's normal is skipped: its limit depends on the direction
+            // approached from (regular_unit_normal, surface_point.h).
+            Vec3 sn;
+            for (const double* q : {kParam[k], kParam[k1]})
+                if (regular_unit_normal(b, q[0], q[1], sn) && dot(sn, n) < cos_half) return false;
+            if (regular_unit_normal(b, 0.5, 0.5, sn) && dot(sn, n) < cos_half) return false;
         }
     }
     if (o.tolerance > 0) {

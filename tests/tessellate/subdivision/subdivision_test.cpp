@@ -3,6 +3,8 @@
 // planar, and get finer with the tolerance.
 #include "test_util.h"
 
+#include <tessellate/trimmed/brep_builder.h>
+
 #include <seamless/model/model.h>
 #include <seamless/tessellate/subdivision/planarity.h>
 #include <seamless/tessellate/subdivision/subdivision.h>
@@ -156,4 +158,45 @@ TEST_CASE("a thread's subdivisions agree whatever it subdivided before", "[subdi
         CHECK(again[k].centre == first[k].centre);
         CHECK(again[k].fan_error == first[k].fan_error);
     }
+}
+
+TEST_CASE("a pole whose control points differ by a rounding splits as an exact pole",
+          "[subdivision]") {
+    // A sphere placed off its axes (occt_bug24283_spheres.stp): the pole's
+    // control points are a rounding apart, so the cross product there, and
+    // the plane of the fan's triangle between two pole corners, are noise
+    // that the angle criterion must not split on.
+    auto leaves = [](const BSplineSurface& s) {
+        Model m;
+        m.surfaces.push_back(s);
+        SubdivisionOptions opt;
+        opt.eps1 = opt.eps2 = std::numeric_limits<double>::infinity();
+        opt.tolerance = 0.005;
+        opt.angle = 0.5;
+        size_t n = 0;
+        const auto patches = bezier_patches(m);
+        for (size_t i = 0; i < patches.size(); ++i) {
+            PatchTrees trees;
+            std::vector<Subpatch> out;
+            subdivide(patches[i], static_cast<int>(i), opt, trees, out);
+            n += out.size();
+        }
+        return n;
+    };
+    const BSplineSurface exact = test::sphere_surface({}, 1);
+    BSplineSurface rounded = exact;
+    int moved = 0;
+    for (int i = 0; i < rounded.size_u; ++i)
+        for (int j : {0, rounded.size_v - 1}) {
+            Vec3& p = rounded.points[static_cast<size_t>(i) * rounded.size_v + j];
+            REQUIRE(p.x == 0);
+            REQUIRE(p.y == 0);
+            p.x = 1e-16 * (i % 3 - 1);
+            p.y = 6e-17 * ((i + 1) % 3 - 1);
+            ++moved;
+        }
+    REQUIRE(moved > 0);
+    const size_t a = leaves(exact), b = leaves(rounded);
+    INFO("exact pole " << a << " leaves, rounded pole " << b);
+    CHECK(b <= a + a / 8);
 }
