@@ -22,14 +22,24 @@ class SpanPatches {
     // The surface's point at (u, v), clamped to its domain as
     // evaluate_point(s, u, v) is; equal to it up to rounding.
     Vec3 point(double u, double v);
+    // evaluate(s, u, v) up to rounding (point, derivatives in u and v).
+    SurfacePoint at(double u, double v);
 
   private:
-    const BezierPatch& patch(int ku, int kv);
+    struct Span {
+        BezierPatch patch;
+        // Above bicubic, the net times binomial(p, i) binomial(q, j), which
+        // points evaluate by Horner's rule; else null.
+        const BezierPatch* scaled = nullptr;
+    };
+    const Span& span(int ku, int kv);
+    const Span& span_at(double& u, double& v); // clamped, its span's patch
     const BSplineSurface* s_;
-    std::unordered_map<std::int64_t, int> index_; // span (ku, kv) -> patches_
-    std::deque<BezierPatch> patches_;             // stable addresses
-    int last_ku_ = -1, last_kv_ = -1;             // the span evaluated last, and its patch
-    const BezierPatch* last_ = nullptr;
+    std::unordered_map<std::int64_t, int> index_; // span (ku, kv) -> spans_
+    std::deque<Span> spans_;                      // stable addresses
+    std::deque<BezierPatch> scaled_;
+    int last_ku_ = -1, last_kv_ = -1; // the span evaluated last
+    const Span* last_ = nullptr;
 };
 
 } // namespace seamless

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/spline/bernstein_horner.h>
 #include <seamless/spline/bezier_patch.h>
 #include <seamless/spline/span_segments.h>
 
@@ -31,22 +32,40 @@ const SpanSegments::Segment& SpanSegments::segment(int k) {
             }
             s.cp[i] = d[p];
         }
+        double b[kMaxDegree + 1];
+        binomials(p, b);
+        for (int i = 0; i <= p; ++i) s.scaled[i] = b[i] * s.cp[i];
         segments_.push_back(s);
     }
     last_k_ = k, last_ = &segments_[it->second];
     return *last_;
 }
 
-Vec3 SpanSegments::point(double t) {
+const SpanSegments::Segment& SpanSegments::segment_at(double& t) {
     const BSplineCurve& c = *c_;
     t = std::clamp(t, c.t_min(), c.t_max());
-    const int p = c.degree;
-    const Segment& s = segment(find_span(p, c.size(), c.knots, t));
-    double B[kMaxDegree + 1], unused[kMaxDegree + 1];
-    bernstein(p, (t - s.t0) / (s.t1 - s.t0), B, unused);
-    HPoint X{0, 0, 0, 0};
-    for (int i = 0; i <= p; ++i) X = X + B[i] * s.cp[i];
+    // Samples come in runs over one span: find_span's [t_k, t_k+1) there.
+    if (last_ && t >= last_->t0 && t < last_->t1) return *last_;
+    return segment(find_span(c.degree, c.size(), c.knots, t));
+}
+
+Vec3 SpanSegments::point(double t) {
+    const Segment& s = segment_at(t);
+    const int p = c_->degree;
+    const HPoint X = bernstein_horner(s.scaled.data(), p, (t - s.t0) / (s.t1 - s.t0));
     return X.xyz() / X.w;
+}
+
+Vec3 SpanSegments::tangent(double t) {
+    const Segment& s = segment_at(t);
+    const int p = c_->degree;
+    const double h = s.t1 - s.t0;
+    double B[kMaxDegree + 1], dB[kMaxDegree + 1];
+    bernstein(p, (t - s.t0) / h, B, dB);
+    HPoint X{0, 0, 0, 0}, dX{0, 0, 0, 0};
+    for (int i = 0; i <= p; ++i) X = X + B[i] * s.cp[i], dX = dX + dB[i] * s.cp[i];
+    // (x / w)' = (x' - (x / w) w') / w, and d/dt = d/ds / h.
+    return (dX.xyz() - (X.xyz() / X.w) * dX.w) / (X.w * h);
 }
 
 } // namespace seamless

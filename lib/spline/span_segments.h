@@ -22,13 +22,19 @@ class SpanSegments {
     // The curve's point at t, clamped to its domain as evaluate_point(c, t)
     // is; equal to it up to rounding.
     Vec3 point(double t);
+    // dC/dt at t (clamped likewise): evaluate(c, t).tangent up to rounding,
+    // from the segment's hodograph where the B-spline basis would need its
+    // derivatives too.
+    Vec3 tangent(double t);
 
   private:
     struct Segment {
         double t0 = 0, t1 = 1;
-        std::array<HPoint, kMaxDegree + 1> cp; // homogeneous Bezier points
+        std::array<HPoint, kMaxDegree + 1> cp;     // homogeneous Bezier points
+        std::array<HPoint, kMaxDegree + 1> scaled; // cp[i] times binomial(p, i)
     };
     const Segment& segment(int k);
+    const Segment& segment_at(double& t); // t clamped, its span's segment
     const BSplineCurve* c_;
     std::unordered_map<int, int> index_; // span k -> segments_
     std::deque<Segment> segments_;       // stable addresses

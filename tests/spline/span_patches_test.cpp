@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Span patches (span_patches.h): the Bezier patch of each knot span,
-// extracted on first use, evaluates to the B-spline surface's point up to
-// rounding, on rational surfaces with repeated and unclamped knots too.
+// extracted on first use, evaluates to the B-spline surface's point and
+// derivatives up to rounding, on rational surfaces with repeated and unclamped knots too.
 #include <seamless/spline/span_patches.h>
 
 #include <catch2/catch.hpp>
@@ -28,9 +28,11 @@ BSplineSurface random_surface(std::mt19937& rng, int p, int q, int nu, int nv, b
 
 } // namespace
 
-TEST_CASE("span patches: the surface's points up to rounding", "[spline]") {
+TEST_CASE("span patches: the surface's points and derivatives up to rounding", "[spline]") {
     std::mt19937 rng(3);
-    for (const auto& [p, q] : {std::pair{1, 1}, {2, 1}, {2, 2}, {3, 3}, {5, 2}}) {
+    // Up to bicubic the Bernstein sums, above Horner's rule on a scaled net.
+    for (const auto& [p, q] :
+         {std::pair{1, 1}, {2, 1}, {2, 2}, {3, 3}, {5, 2}, {4, 4}, {9, 9}, {kMaxDegree, 1}}) {
         for (bool rational : {false, true}) {
             const BSplineSurface s = random_surface(rng, p, q, p + 4, q + 3, rational);
             SpanPatches spans(s);
@@ -41,6 +43,10 @@ TEST_CASE("span patches: the surface's points up to rounding", "[spline]") {
                 INFO("degree " << p << "," << q << " rational " << rational << " at " << a << ","
                                << b);
                 REQUIRE(distance(spans.point(a, b), evaluate_point(s, a, b)) <= 1e-12);
+                const SurfacePoint at = spans.at(a, b), exact = evaluate(s, a, b);
+                REQUIRE(distance(at.point, exact.point) <= 1e-12);
+                REQUIRE(distance(at.du, exact.du) <= 1e-9 * (1 + norm(exact.du)));
+                REQUIRE(distance(at.dv, exact.dv) <= 1e-9 * (1 + norm(exact.dv)));
             }
             // Span ends, where find_span picks the upper span.
             for (double k : s.knots_u)

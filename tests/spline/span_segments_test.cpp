@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Span segments (span_segments.h): the Bezier segment of each knot span,
 // computed by blossoming on first use, evaluates to the B-spline curve's
-// point up to rounding, at every degree, rational, with repeated and
+// point and tangent up to rounding, at every degree, rational, with repeated and
 // unclamped knots.
 #include <seamless/spline/span_segments.h>
 
@@ -11,7 +11,7 @@
 
 using namespace seamless;
 
-TEST_CASE("span segments: the curve's points up to rounding", "[spline]") {
+TEST_CASE("span segments: the curve's points and tangents up to rounding", "[spline]") {
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> x(-5, 5), w(0.2, 5);
     for (int p = 1; p <= kMaxDegree; ++p)
@@ -33,6 +33,9 @@ TEST_CASE("span segments: the curve's points up to rounding", "[spline]") {
                 INFO("degree " << p << " rational " << rational << " t " << at);
                 REQUIRE(distance(spans.point(at), evaluate_point(c, at)) <=
                         1e-11 * (1 + norm(evaluate_point(c, at))));
+                // At a knot the span's segment is find_span's, as evaluate's.
+                const Vec3 d = evaluate(c, at).tangent;
+                REQUIRE(distance(spans.tangent(at), d) <= 1e-9 * (1 + norm(d)));
             }
         }
 }

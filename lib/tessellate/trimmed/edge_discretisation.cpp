@@ -22,10 +22,10 @@ constexpr double kSingular = 1e-8;
 
 } // namespace
 
-Vec3 unit_normal(const FaceSurface& s, Vec3 uv, Vec3 inward) {
+Vec3 unit_normal(const FaceSurface& s, Vec3 uv, Vec3 inward, SpanPatches* spans) {
     for (double step : {0.0, 1e-6, 1e-4, 1e-2}) {
         const Vec3 q = uv + step * (inward - uv);
-        const SurfacePoint sp = s.at(q);
+        const SurfacePoint sp = spans ? s.at(q, *spans) : s.at(q);
         const Vec3 n = sp.normal();
         if (norm(n) > kSingular * (dot(sp.du, sp.du) + dot(sp.dv, sp.dv))) return normalize(n);
     }
@@ -122,9 +122,8 @@ struct Splitter {
             // The ends' tangents from inside [a, b]: at a kink (a break of
             // discretise_edge) the curve's other side turns away.
             const double in = kInside * (b.t - a.t);
-            const Vec3 ta = evaluate(curve, a.t + in).tangent,
-                       tb = evaluate(curve, b.t - in).tangent,
-                       tm = evaluate(curve, 0.5 * (a.t + b.t)).tangent;
+            const Vec3 ta = samples->tangent(a.t + in), tb = samples->tangent(b.t - in),
+                       tm = samples->tangent(0.5 * (a.t + b.t));
             if (limit.exceeded(ta, tm) || limit.exceeded(tm, tb) || limit.exceeded(ta, tb))
                 return INFINITY;
         }

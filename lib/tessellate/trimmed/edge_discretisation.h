@@ -52,7 +52,8 @@ void halve_segments(const BRep& brep, int edge, EdgePolyline& line,
 
 // The unit normal dP/du x dP/dv at uv; where it vanishes (a pole, an apex),
 // the normal a small step towards `inward`; zero if that vanishes too.
-Vec3 unit_normal(const FaceSurface& s, Vec3 uv, Vec3 inward);
+// With `spans` (the surface's), evaluated on its Bezier patches.
+Vec3 unit_normal(const FaceSurface& s, Vec3 uv, Vec3 inward, SpanPatches* spans = nullptr);
 
 // Angle in radians between two vectors (0 when one is zero).
 double angle_between(Vec3 a, Vec3 b);

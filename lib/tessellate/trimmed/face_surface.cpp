@@ -53,6 +53,11 @@ FaceSurface::FaceSurface(const BSplineSurface& s)
         closed_u_ = closed_u_ && distance(s.point(0, j), s.point(s.size_u - 1, j)) <= tiny;
     for (int i = 0; i < s.size_u; ++i)
         closed_v_ = closed_v_ && distance(s.point(i, 0), s.point(i, s.size_v - 1)) <= tiny;
+    const bool bilinear = s.degree_u == 1 && s.degree_v == 1 && s.size_u == 2 && s.size_v == 2;
+    affine_ = bilinear &&
+              (!s.rational() || std::all_of(s.weights.begin(), s.weights.end(),
+                                            [&](double w) { return w == s.weights[0]; })) &&
+              norm(s.point(0, 0) + s.point(1, 1) - s.point(1, 0) - s.point(0, 1)) <= tiny;
 }
 
 Vec3 FaceSurface::wrapped(Vec3 uv) const {
@@ -74,16 +79,27 @@ Vec3 FaceSurface::point(Vec3 uv, SpanPatches& spans) const {
     return spans.point(w.x, w.y);
 }
 
-SurfacePoint FaceSurface::at(Vec3 uv) const {
-    const Vec3 w = wrapped(uv);
+namespace {
+
+// The surface point at uv, by `eval` at uv clamped to the domain: beyond
+// it, to first order (exact for planes, and close for pcurves a little
+// outside it, within the file's tolerance).
+template <class Eval> SurfacePoint continued(const BSplineSurface& s, Vec3 w, Eval&& eval) {
     const double u = w.x, v = w.y;
-    const double uc = std::clamp(u, s_->u_min(), s_->u_max()),
-                 vc = std::clamp(v, s_->v_min(), s_->v_max());
-    SurfacePoint p = evaluate(*s_, uc, vc);
-    // Beyond the domain, to first order: exact for planes, and close for
-    // pcurves a little outside it (within the file's tolerance).
+    const double uc = std::clamp(u, s.u_min(), s.u_max()), vc = std::clamp(v, s.v_min(), s.v_max());
+    SurfacePoint p = eval(uc, vc);
     if (uc != u || vc != v) p.point += (u - uc) * p.du + (v - vc) * p.dv;
     return p;
+}
+
+} // namespace
+
+SurfacePoint FaceSurface::at(Vec3 uv) const {
+    return continued(*s_, wrapped(uv), [&](double u, double v) { return evaluate(*s_, u, v); });
+}
+
+SurfacePoint FaceSurface::at(Vec3 uv, SpanPatches& spans) const {
+    return continued(*s_, wrapped(uv), [&](double u, double v) { return spans.at(u, v); });
 }
 
 } // namespace seamless

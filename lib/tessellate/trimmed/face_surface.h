@@ -23,6 +23,8 @@ class FaceSurface {
   public:
     explicit FaceSurface(const BSplineSurface& s);
     SurfacePoint at(Vec3 uv) const;
+    // at(uv) up to rounding, from the spans' Bezier patches.
+    SurfacePoint at(Vec3 uv, SpanPatches& spans) const;
     Vec3 point(Vec3 uv) const; // at(uv).point, to the bit: cheaper inside the domain
     // point(uv) up to rounding, inside the domain from the spans' Bezier
     // patches (cheaper still where many points fall in few spans).
@@ -30,6 +32,10 @@ class FaceSurface {
     const BSplineSurface& surface() const { return *s_; }
     bool closed_u() const { return closed_u_; } // periodic in u: wrapped
     bool closed_v() const { return closed_v_; }
+    // An affine map of (u,v) (a plane as a parallelogram's bilinear patch,
+    // its weights equal): a flat triangle's distance from it is largest at
+    // a corner.
+    bool affine() const { return affine_; }
     // True when a crease passes through the box of the (u,v) points (a
     // closed direction's creases repeat by its period).
     bool crosses_crease(const std::array<Vec3, 3>& uv) const;
@@ -39,7 +45,7 @@ class FaceSurface {
   private:
     Vec3 wrapped(Vec3 uv) const; // moved by whole periods into a closed direction's domain
     const BSplineSurface* s_;
-    bool closed_u_ = false, closed_v_ = false;
+    bool closed_u_ = false, closed_v_ = false, affine_ = false;
     std::vector<double> creases_u_, creases_v_;
 };
 

@@ -75,8 +75,9 @@ constexpr double kMargin = 0.9;
 // pole or apex it collapses) the (u,v) image of a triangle strays from it
 // though the triangle lies on the surface: its flat points are measured
 // against the surface instead.
-double distance_to_surface(const FaceSurface& s, Vec3 q, Vec3 uv, double enough) {
-    SurfacePoint p = s.at(uv);
+double distance_to_surface(const FaceSurface& s, SpanPatches& spans, Vec3 q, Vec3 uv,
+                           double enough) {
+    SurfacePoint p = s.at(uv, spans);
     double best = distance(p.point, q);
     for (int it = 0; it < 4 && best > enough; ++it) {
         const Vec3 r = q - p.point;
@@ -85,7 +86,7 @@ double distance_to_surface(const FaceSurface& s, Vec3 q, Vec3 uv, double enough)
         const double det = (a + damp) * (c + damp) - b * b;
         if (!(det > 0)) break;
         uv = uv + Vec3{((c + damp) * ru - b * rv) / det, ((a + damp) * rv - b * ru) / det, 0};
-        p = s.at(uv);
+        p = s.at(uv, spans);
         best = std::min(best, distance(p.point, q));
     }
     return best;
@@ -131,7 +132,7 @@ struct Refiner {
 
     Vec3 point_normal(int i) {
         while (static_cast<int>(normal.size()) <= i)
-            normal.push_back(unit_normal(s, d.uv[normal.size()], inward));
+            normal.push_back(unit_normal(s, d.uv[normal.size()], inward, &spans));
         return normal[i];
     }
 
@@ -175,32 +176,38 @@ struct Refiner {
         // that of the triangle's side.
         const bool crease = s.crosses_crease(uv);
         for (int i = 0; i < 3; ++i)
-            v.normals[i] = d.pole[k[i]] != Vec3{} ? unit_normal(s, uv[i], centre)
+            v.normals[i] = d.pole[k[i]] != Vec3{} ? unit_normal(s, uv[i], centre, &spans)
                            : crease && s.on_crease(uv[i])
-                               ? unit_normal(s, uv[i] + kNudge * (centre - uv[i]), centre)
+                               ? unit_normal(s, uv[i] + kNudge * (centre - uv[i]), centre, &spans)
                                : point_normal(k[i]);
         const TriangleFrame frame(p[0], p[1], p[2]);
         const bool on_boundary = t.boundary[0] || t.boundary[1] || t.boundary[2];
-        for (const Sample& smp : kSamples) {
-            if (!full && v.deviation > target) break;
-            if (smp.boundary_only && !on_boundary) continue;
-            // Boundary segments were measured with their edge.
-            if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
-            const Vec3 q = smp.l[0] * uv[0] + smp.l[1] * uv[1] + smp.l[2] * uv[2];
-            // The surface's point against the flat triangle, as edges measure
-            // against their chords; else the flat point against the surface.
-            // At a pole the (u,v) samples miss the flat triangle's farthest
-            // points (the meridians' chords), which are measured as well;
-            // across a crease the flat triangle cuts the fold, which only the
-            // surface's points see.
-            double dev = frame.distance(s.point(q, spans));
-            const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
-            if (pole || crease)
-                dev = std::max(dev, distance_to_surface(s, flat, q, 0));
-            else if (dev > target)
-                dev = std::min(dev, distance_to_surface(s, flat, q, target));
-            v.deviation = std::max(v.deviation, dev);
-        }
+        // Surface and flat triangle both affine in (u,v): their distance is
+        // largest at a corner (a boundary point off the plane), not sampled.
+        if (s.affine())
+            for (int i = 0; i < 3; ++i)
+                v.deviation = std::max(v.deviation, distance(s.point(uv[i], spans), p[i]));
+        else
+            for (const Sample& smp : kSamples) {
+                if (!full && v.deviation > target) break;
+                if (smp.boundary_only && !on_boundary) continue;
+                // Boundary segments were measured with their edge.
+                if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
+                const Vec3 q = smp.l[0] * uv[0] + smp.l[1] * uv[1] + smp.l[2] * uv[2];
+                // The surface's point against the flat triangle, as edges measure
+                // against their chords; else the flat point against the surface.
+                // At a pole the (u,v) samples miss the flat triangle's farthest
+                // points (the meridians' chords), which are measured as well;
+                // across a crease the flat triangle cuts the fold, which only the
+                // surface's points see.
+                double dev = frame.distance(s.point(q, spans));
+                const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
+                if (pole || crease)
+                    dev = std::max(dev, distance_to_surface(s, spans, flat, q, 0));
+                else if (dev > target)
+                    dev = std::min(dev, distance_to_surface(s, spans, flat, q, target));
+                v.deviation = std::max(v.deviation, dev);
+            }
         // The corner normals within the angle of each other, and the flat
         // triangle's within it of theirs: no fold or needle on the surface.
         // Across a crease the normal jumps however small the triangle, and a
