@@ -9,21 +9,27 @@
 
 namespace seamless {
 
+// The ratio r of Horner's rule at x in [0, 1]: x / (1 - x) up to the
+// middle, past it (1 - x) / x with the sum taken from its other end, so
+// that r <= 1. Computed once per point of a patch, for all its rows.
+struct HornerRatio {
+    double r;
+    bool reversed;
+    explicit HornerRatio(double x) : r(x <= 0.5 ? x / (1 - x) : (1 - x) / x), reversed(x > 0.5) {}
+};
+
 // Sum_j binomial(n, j) x^j (1 - x)^(n - j) c_j, for c[j] = binomial(n, j)
-// c_j, divided by (1 - x)^n (by x^n past the middle): a polynomial in
-// r = x / (1 - x) <= 1 (or its reciprocal), so every step's rounding is that
-// of a convex sum. The factor cancels in the projection X.xyz / X.w when
-// every sum of a point has it.
-inline HPoint bernstein_horner(const HPoint* c, int n, double x) {
+// c_j, divided by (1 - x)^n (by x^n past the middle): a polynomial in r, so
+// every step's rounding is that of a convex sum. The factor cancels in the
+// projection X.xyz / X.w when every sum of a point has it.
+inline HPoint bernstein_horner(const HPoint* c, int n, HornerRatio h) {
     HPoint X;
-    if (x <= 0.5) {
-        const double r = x / (1 - x);
+    if (!h.reversed) {
         X = c[n];
-        for (int j = n - 1; j >= 0; --j) X = r * X + c[j];
+        for (int j = n - 1; j >= 0; --j) X = h.r * X + c[j];
     } else {
-        const double r = (1 - x) / x;
         X = c[0];
-        for (int j = 1; j <= n; ++j) X = r * X + c[j];
+        for (int j = 1; j <= n; ++j) X = h.r * X + c[j];
     }
     return X;
 }

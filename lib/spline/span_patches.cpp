@@ -63,8 +63,9 @@ Vec3 SpanPatches::point(double u, double v) {
     const double x = (u - b.u0) / (b.u1 - b.u0), y = (v - b.v0) / (b.v1 - b.v0);
     if (!sp.scaled) return evaluate_point(b, x, y);
     HPoint rows[BezierPatch::kMaxOrder];
-    for (int i = 0; i <= b.p; ++i) rows[i] = bernstein_horner(&sp.scaled->at(i, 0), b.q, y);
-    const HPoint X = bernstein_horner(rows, b.p, x);
+    const HornerRatio hy(y);
+    for (int i = 0; i <= b.p; ++i) rows[i] = bernstein_horner(&sp.scaled->at(i, 0), b.q, hy);
+    const HPoint X = bernstein_horner(rows, b.p, HornerRatio(x));
     return X.xyz() / X.w;
 }
 

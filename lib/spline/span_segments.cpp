@@ -52,7 +52,7 @@ const SpanSegments::Segment& SpanSegments::segment_at(double& t) {
 Vec3 SpanSegments::point(double t) {
     const Segment& s = segment_at(t);
     const int p = c_->degree;
-    const HPoint X = bernstein_horner(s.scaled.data(), p, (t - s.t0) / (s.t1 - s.t0));
+    const HPoint X = bernstein_horner(s.scaled.data(), p, HornerRatio((t - s.t0) / (s.t1 - s.t0)));
     return X.xyz() / X.w;
 }
 

@@ -88,7 +88,7 @@ int FaceDomain::add_interior(const FaceSurface& s, Vec3 at) {
     const Vec3 p{at.x / su, at.y / sv, 0};
     uv.push_back(p);
     scaled.push_back(at);
-    points.push_back(s.at(p).point);
+    points.push_back(s.point(p)); // at(p).point to the bit, without derivatives
     keys.push_back(-1);
     pole.push_back({});
     return size() - 1;
