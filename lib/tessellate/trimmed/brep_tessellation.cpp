@@ -202,8 +202,10 @@ Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
         pending = faces_of(brep, halve.edges);
         if (pending.empty()) break;
     }
-    for (size_t f = 0; f < r.meshes.size(); ++f)
+    for (size_t f = 0; f < r.meshes.size(); ++f) {
         if (r.meshes[f].failed) r.failed.push_back(static_cast<int>(f));
+        r.meshes[f].accepted = {}; // needed for redos only
+    }
     return r;
 }
 

@@ -85,7 +85,10 @@ void merge_vertex_images(const BRep& brep, const Box3& box, FaceDomain& d) {
 } // namespace
 
 int FaceDomain::add_interior(const FaceSurface& s, Vec3 at) {
-    const Vec3 p{at.x / su, at.y / sv, 0};
+    return add_interior(s, at, {at.x / su, at.y / sv, 0});
+}
+
+int FaceDomain::add_interior(const FaceSurface& s, Vec3 at, Vec3 p) {
     uv.push_back(p);
     scaled.push_back(at);
     points.push_back(s.point(p)); // at(p).point to the bit, without derivatives

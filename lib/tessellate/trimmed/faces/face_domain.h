@@ -50,6 +50,9 @@ struct FaceDomain {
     int size() const { return static_cast<int>(uv.size()); }
     // Appends an interior point at rescaled (x, y); returns its index.
     int add_interior(const FaceSurface& s, Vec3 at_scaled);
+    // ... whose (u,v) point is `uv` itself (an earlier run's point, which
+    // its rescaling back would move by a rounding).
+    int add_interior(const FaceSurface& s, Vec3 at_scaled, Vec3 uv);
 };
 
 FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& lines, int face);

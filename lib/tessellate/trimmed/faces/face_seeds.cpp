@@ -35,7 +35,7 @@ void insert_seeds(const FaceSurface& s, const FaceDomain& earlier, FaceDomain& d
         const int index = cdt.insert(at, 0, near);
         if (index < 0) continue;
         SEAMLESS_CHECK(index == d.size(), "the triangulation numbers inserted points in order");
-        d.add_interior(s, at);
+        d.add_interior(s, at, earlier.uv[i]);
         near = index;
     }
 }

@@ -101,13 +101,7 @@ bool domain_sliver(const FaceDomain& d, const std::array<int, 3>& k) {
     return !(norm(cross(a, b)) > kSliver * std::max({dot(a, a), dot(b, b), dot(e, e)}));
 }
 
-struct Verdict {
-    bool drop = false;  // two corners one mesh vertex (pole, seam): zero area, left out
-    bool split = false; // above the deviation or angle, or flat on the surface
-    double deviation = 0;
-    double badness = 0; // the largest of deviation and angle over their limits
-    std::array<Vec3, 3> normals;
-};
+using Verdict = TriangleVerdict;
 
 struct Refiner {
     const FaceSurface& s;
@@ -332,10 +326,24 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     }
     if (seeds) insert_seeds(s, seeds->domain, d, cdt);
     Refiner r{s, criteria, d, face_uv_centre(model.brep, f), {}, {}, 0};
+    // The earlier run's verdicts hold where the face's tolerance is as it
+    // was, and, for a triangle of three boundary points (its ear test looks
+    // at the scaled domain), the scale too (triangle_verdict.h).
+    const AcceptedTriangles* known =
+        seeds && seeds->domain.tolerance == d.tolerance ? &seeds->accepted : nullptr;
+    const bool same_scale = seeds && seeds->domain.su == d.su && seeds->domain.sv == d.sv;
+    auto reusable = [&](const DomainTriangle& t) {
+        return known && (same_scale || t.corners[0] >= d.boundary_points ||
+                         t.corners[1] >= d.boundary_points || t.corners[2] >= d.boundary_points);
+    };
+    auto corners_uv = [&](const DomainTriangle& t) {
+        return std::array<Vec3, 3>{d.uv[t.corners[0]], d.uv[t.corners[1]], d.uv[t.corners[2]]};
+    };
     std::vector<DomainTriangle> tris;
     // Verdicts, by the triangles' tags: a triangle the insertions left alone
     // keeps its verdict.
     std::vector<Verdict> judged;
+    long long reused = 0; // verdicts the earlier run's
     std::vector<int> failing;
     bool stopped = false; // by FaceCriteria::stop_when_encroached
     const size_t runaway = kStopPerBoundaryPoint * static_cast<size_t>(d.boundary_points);
@@ -348,7 +356,12 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         for (size_t i = 0; i < tris.size(); ++i) {
             if (tris[i].tag < 0) {
                 tris[i].tag = static_cast<int>(judged.size());
-                judged.push_back(r.judge(tris[i], false));
+                Verdict v;
+                if (reusable(tris[i]) && known->find(corners_uv(tris[i]), tris[i].boundary, v))
+                    ++reused;
+                else
+                    v = r.judge(tris[i], false);
+                judged.push_back(v);
                 cdt.set_tag(static_cast<int>(i), tris[i].tag);
             }
             if (judged[tris[i].tag].split) failing.push_back(static_cast<int>(i));
@@ -374,10 +387,11 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         out.encroached = segments_of(d, r.encroached_sides(kPersistent));
     else if (!failing.empty())
         out.encroached = segments_of(d, r.encroached_sides(1));
-    out.judged = static_cast<long long>(judged.size());
+    out.judged = static_cast<long long>(judged.size()) - reused;
     for (const DomainTriangle& t : tris) {
         Verdict& v = judged[t.tag];
         if (v.split && !v.drop) v = r.judge(t, true);
+        if (!v.split) out.accepted.add(corners_uv(t), t.boundary, v);
         if (v.drop) continue;
         if (v.split) ++out.above_tolerance;
         out.deviation = std::max(out.deviation, v.deviation);
@@ -391,6 +405,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
         out.triangles.push_back(c);
         out.normals.push_back(n);
     }
+    out.accepted.seal();
     return out;
 }
 

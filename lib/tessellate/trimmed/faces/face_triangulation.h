@@ -10,6 +10,7 @@
 #include <seamless/model/model.h>
 #include <seamless/tessellate/trimmed/edge_discretisation.h>
 #include <seamless/tessellate/trimmed/faces/face_domain.h>
+#include <seamless/tessellate/trimmed/faces/triangle_verdict.h>
 
 #include <array>
 #include <cstdint>
@@ -45,6 +46,8 @@ struct FaceMesh {
     // those segments (more triangles per boundary point than converged
     // faces have): its interior points would crowd a redo.
     bool crowded = false;
+    // Its triangles within the limits, for a redo from its points.
+    AcceptedTriangles accepted;
 };
 
 // Throws TriangleBudgetError (file `model.source`) past max_triangles.
