@@ -180,3 +180,26 @@ TEST_CASE("generated box, sphere and torus STEP files tessellate closed",
     check_closed("generated/sphere.step", 2);
     check_closed("generated/torus.step", 0);
 }
+
+TEST_CASE("pyocc_surf114.igs (folded C0 surfaces) meets the bench's tolerance and angle",
+          "[tessellation][cad][heavy]") {
+    // Near its folds a patch's normal turns a quarter turn along straight
+    // rulings and at points inside it: the angle criterion halves a rejected
+    // fan along its longer sides and leaves fans within D / 8 to the
+    // tolerance, so the mesh stays of the size the tolerance alone needs.
+    const Model m = load_model(test::shared_dir() / "models/cad-corpus/pyocc_surf114.igs");
+    TessellationOptions opt;
+    opt.tolerance = 1e-3 * d_max(m);
+    opt.certify = false;
+    const int alone = tessellate(m, opt).mesh.triangle_count();
+    opt.angle = 0.5;
+    opt.max_triangles = 500'000;
+    const Tessellation t = tessellate(m, opt);
+    INFO(alone << " triangles for the tolerance alone, " << t.mesh.triangle_count()
+               << " with the angle");
+    CHECK(t.mesh.triangle_count() < 4 * alone);
+    const test::MeshReport r = test::analyse_mesh(t.mesh, t.stats.d_max);
+    CHECK(r.zero_area == 0);
+    CHECK(r.t_junctions == 0);
+    CHECK(r.nonmanifold_edges == 0);
+}

@@ -49,8 +49,15 @@ bool split_in_u(const BezierPatch& b) {
     return lu >= lv;
 }
 
+// A fan whose corners lie within this fraction of the tolerance of its
+// centre is too small for the angle criterion.
+constexpr double kTinyFan = 1.0 / 8;
+// fan_accepted's fan_error when the angle criterion rejected the fan.
+constexpr double kTurned = -2;
+
 // The tolerance and angle criteria on the four-triangle fan from the centre
-// over the corners; fan_error is set when the tolerance test ran to the end.
+// over the corners; fan_error is set when the tolerance test ran to the end,
+// to kTurned when the normals turned too far.
 bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre,
                   const std::array<Vec3, 4>& V, double& fan_error) {
     if (o.tolerance <= 0 && o.angle <= 0) return true;
@@ -63,6 +70,13 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
     auto point = [&](double s, double t) {
         return power ? evaluate_point(pb, s, t) : evaluate_point(b, s, t);
     };
+    // A fan within a fraction of the tolerance is judged by the tolerance
+    // alone: at a cusp or an apex inside a patch (a folded C0 surface) the
+    // normals turn however small it is, as the trimmed faces' tiny
+    // triangles (face_triangulation.cpp).
+    double reach = 0;
+    for (const Vec3& v : V) reach = std::max(reach, distance(v, centre));
+    const bool angle = o.angle > 0 && !(o.tolerance > 0 && reach <= kTinyFan * o.tolerance);
     for (int k = 0; k < 4; ++k) {
         const int k1 = (k + 1) % 4;
         const Vec3 a = V[k] - centre, c = V[k1] - centre, m = cross(a, c);
@@ -80,14 +94,20 @@ bool fan_accepted(const SubdivisionOptions& o, const BezierPatch& b, Vec3 centre
             const double mt = 0.5 * (kParam[k][1] + kParam[k1][1]);
             if (std::abs(dot(point(ms, mt) - centre, n)) > 1.2 * o.tolerance) return false;
         }
-        if (o.angle > 0) {
+        if (angle) {
             const double cos_half = std::cos(0.5 * o.angle);
             // A pole's normal is skipped: its limit depends on the direction
             // approached from (regular_unit_normal, surface_point.h).
             Vec3 sn;
             for (const double* q : {kParam[k], kParam[k1]})
-                if (regular_unit_normal(b, q[0], q[1], sn) && dot(sn, n) < cos_half) return false;
-            if (regular_unit_normal(b, 0.5, 0.5, sn) && dot(sn, n) < cos_half) return false;
+                if (regular_unit_normal(b, q[0], q[1], sn) && dot(sn, n) < cos_half) {
+                    fan_error = kTurned;
+                    return false;
+                }
+            if (regular_unit_normal(b, 0.5, 0.5, sn) && dot(sn, n) < cos_half) {
+                fan_error = kTurned;
+                return false;
+            }
         }
     }
     if (o.tolerance > 0) {
@@ -134,9 +154,10 @@ void add_leaf(Context& cx, const Subpatch& leaf) {
 }
 
 // The direction subpatch `r` is halved in, true for u (s). A subpatch the
-// tolerance rejected: where the remainder is larger; flatness only where the
-// second derivatives do not decide (flatness costs more). A side can only be
-// halved while it spans more than one grid step.
+// tolerance rejected: where the remainder is larger; one the angle rejected:
+// its longer sides (flatness sees no turn along straight rulings, a twisted
+// patch's); flatness where neither decides (it costs more). A side can only
+// be halved while it spans more than one grid step.
 bool halve_in_u(const Context& cx, const BezierPatch& b, const ParamRect& r, double fan_error,
                 bool forced) {
     const bool can_u = r.s1 - r.s0 > 1, can_v = r.t1 - r.t0 > 1;
@@ -144,6 +165,9 @@ bool halve_in_u(const Context& cx, const BezierPatch& b, const ParamRect& r, dou
     if (cx.options.tolerance > 0 && (fan_error >= 0 || forced)) {
         const std::array<double, 2> d = second_derivative_bounds(b);
         in_u = d[0] >= d[1];
+    } else if (fan_error == kTurned) {
+        in_u = distance(b.corner(0), b.corner(1)) + distance(b.corner(3), b.corner(2)) >=
+               distance(b.corner(0), b.corner(3)) + distance(b.corner(1), b.corner(2));
     } else {
         in_u = split_in_u(b);
     }

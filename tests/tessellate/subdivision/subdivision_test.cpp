@@ -200,3 +200,29 @@ TEST_CASE("a pole whose control points differ by a rounding splits as an exact p
     INFO("exact pole " << a << " leaves, rounded pole " << b);
     CHECK(b <= a + a / 8);
 }
+
+TEST_CASE("a fan the angle rejects is halved along its longer sides", "[subdivision]") {
+    // Straight rulings along u, twisted a quarter turn over a short v
+    // (pyocc_surf114.igs's patches near a fold): flatness sees no curvature
+    // along u, yet the normal turns along it; halving in v only never
+    // brings the corners' normals together.
+    BezierPatch b;
+    b.p = b.q = 3;
+    for (int j = 0; j <= 3; ++j) {
+        const double t = j / 3.0, a = 0.5 * 3.14159265358979 * t;
+        const Vec3 base{0, 1e-3 * t, 1e-6 * t * t}; // a slight bend across
+        const Vec3 dir{std::cos(a), 0, std::sin(a)};
+        for (int i = 0; i <= 3; ++i) b.at(i, j) = HPoint::from(base + (i / 3.0 - 0.5) * dir, 1);
+    }
+    SubdivisionOptions opt;
+    opt.eps1 = opt.eps2 = std::numeric_limits<double>::infinity();
+    opt.tolerance = 1e-3;
+    opt.angle = 0.5;
+    opt.max_depth = 40;
+    PatchTrees trees;
+    std::vector<Subpatch> out;
+    subdivide(b, 0, opt, trees, out);
+    INFO(out.size() << " leaves, depth " << trees.depth);
+    CHECK(out.size() < 2000);
+    CHECK(trees.depth < 30);
+}
