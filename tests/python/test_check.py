@@ -45,3 +45,19 @@ def test_mesh_object_checks_like_its_file(meshes):
     built = seamless.Mesh(mesh.vertices, mesh.triangles)
     report = seamless.check(built)
     assert report["file"] is None and report["triangles"] == from_file["triangles"]
+
+
+def test_union_judges_touching_solids_as_one_mesh(cli, tmp_path):
+    """as1's 18 solids touch where the file places them: each passes on its own, the union
+    does not (`seamless check --union`)."""
+    mesh = tmp_path / "as1.ply"
+    proc = cli("tessellate", DATA / "models" / "cad" / "occt_as1-oc-214-mat.stp", "-o", mesh)
+    assert proc.returncode == 0, proc.stderr
+    for union in (False, True):
+        flags = ["--closed"] + (["--union"] if union else [])
+        proc = cli("check", "--json", mesh, *flags)
+        assert proc.returncode in (0, 1), proc.stderr
+        report = seamless.check(str(mesh), closed=True, union=union)
+        assert report == json.loads(proc.stdout)
+        assert report["passed"] == (proc.returncode == 0)
+        assert report["passed"] != union
