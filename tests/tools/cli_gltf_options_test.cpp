@@ -70,3 +70,23 @@ TEST_CASE("tessellate --merge and --units on a millimetre STEP part", "[cli][glt
     CHECK(test::run_cli("tessellate " + model + " -o x.glb --merge --flatten").status != 0);
     CHECK(test::run_cli("tessellate " + model + " -o x.glb --units inches").status != 0);
 }
+
+TEST_CASE("check judges a placed glTF's solids apart, as a PLY's", "[cli][gltf][heavy]") {
+    // as1's 18 solids touch where the file places them (bolts in holes): with
+    // the solids in the primitives' extras, `check --closed` passes the glb of
+    // every instance placed as it passes the PLY; --union judges it whole.
+    const auto dir = test::scratch_dir("cli_gltf_solids");
+    const std::string model = test::quoted(test::model_path("cad/occt_as1-oc-214-mat.stp"));
+    for (const char* flags : {"--merge", "--flatten"}) {
+        INFO(flags);
+        const auto glb = test::quoted(dir / "as1.glb");
+        REQUIRE(test::run_cli("tessellate " + model + " -o " + glb + " " + flags).status == 0);
+        const nlohmann::json g = load(dir / "as1.glb");
+        CHECK(g["meshes"][0]["primitives"][0]["extras"].contains("solids"));
+        const auto apart = test::run_cli("check --closed " + glb);
+        INFO(apart.out);
+        CHECK(apart.status == 0);
+        CHECK_THAT(apart.out, Catch::Contains("judged apart: 18 solids"));
+        CHECK(test::run_cli("check --closed --union " + glb).status == 1);
+    }
+}

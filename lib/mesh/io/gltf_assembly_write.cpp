@@ -5,6 +5,7 @@
 #include <seamless/base/error.h>
 #include <seamless/mesh/io/gltf_io.h>
 #include <seamless/mesh/io/gltf_primitives.h>
+#include <seamless/mesh/io/mesh_text.h>
 #include <seamless/mesh/io/placed_mesh.h>
 
 #include <tiny_gltf.h>
@@ -90,16 +91,18 @@ tinygltf::Model coloured_model(const Assembly& a) {
     return model;
 }
 
-// A glTF mesh named `name` of one primitive per colour group, with face extras.
+// A glTF mesh named `name` of one primitive per colour group, with face
+// and solid extras.
 tinygltf::Mesh grouped_mesh(tinygltf::Model& model, const TriangleMesh& mesh,
                             const ColourGroups& groups, const std::vector<int>& face_of,
-                            const std::string& name, double scale) {
+                            const std::vector<int>& solid_of, const std::string& name,
+                            double scale) {
     tinygltf::Mesh gmesh;
     gmesh.name = name;
     for (const auto& [colour, tris] : groups) {
         tinygltf::Primitive prim = add_triangles(model, mesh, tris, CornerData::of(mesh), scale);
         prim.material = colour;
-        add_face_extras(prim, tris, face_of);
+        add_face_extras(prim, tris, face_of, solid_of);
         gmesh.primitives.push_back(std::move(prim));
     }
     return gmesh;
@@ -141,6 +144,10 @@ void write_tree(const std::filesystem::path& path, const TriangleMesh& mesh, con
     tinygltf::Model model = coloured_model(a);
     std::vector<int> face_of;
     const auto parts = part_triangles(mesh, m, name, face_of);
+    // Solids of the model with its tree kept, as the faces.
+    const std::vector<int> solid_of_face = face_solids(m.brep);
+    std::vector<int> solid_of(face_of.size());
+    for (size_t t = 0; t < face_of.size(); ++t) solid_of[t] = solid_of_face[face_of[t]];
     // One mesh per part with triangles: glTF forbids a mesh without
     // primitives, so a part without faces has none (mesh_of -1).
     std::vector<int> mesh_of(parts.size(), -1);
@@ -148,7 +155,7 @@ void write_tree(const std::filesystem::path& path, const TriangleMesh& mesh, con
         if (parts[p].empty()) continue;
         mesh_of[p] = static_cast<int>(model.meshes.size());
         model.meshes.push_back(
-            grouped_mesh(model, mesh, parts[p], face_of, a.parts[p].name, scale));
+            grouped_mesh(model, mesh, parts[p], face_of, solid_of, a.parts[p].name, scale));
     }
     tinygltf::Scene scene;
     for (size_t k = 0; k < a.nodes.size(); ++k) {
@@ -192,7 +199,10 @@ void write_merged(const std::filesystem::path& path, const TriangleMesh& mesh, c
     tinygltf::Model model = coloured_model(m.assembly);
     const std::string stem =
         std::filesystem::path(m.source.empty() ? name : m.source).stem().string();
-    model.meshes.push_back(grouped_mesh(model, placed, groups, placed.triangle_face, stem, scale));
+    const std::vector<int> none;
+    model.meshes.push_back(
+        grouped_mesh(model, placed, groups, placed.triangle_face,
+                     mesh_text::has_solid_ids(placed) ? placed.triangle_solid : none, stem, scale));
     tinygltf::Node node;
     node.name = stem;
     node.mesh = 0;

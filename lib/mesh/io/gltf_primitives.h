@@ -36,12 +36,13 @@ tinygltf::Model new_gltf_model();
 tinygltf::Primitive add_triangles(tinygltf::Model& model, const TriangleMesh& mesh,
                                   const std::vector<int>& tris, CornerData has, double scale);
 
-// The primitive's face ids as its extras (docs/formats.md, "Face ids"):
-// {"faces": [[face, first, count], ...]}, one entry per run of consecutive
-// triangles of `tris` on one face (face_of[t], -1 for none); nothing when
-// face_of is empty.
+// The primitive's face and solid ids as its extras (docs/formats.md, "Face
+// ids"): {"faces": [[face, first, count], ...], "solids": [[solid, first,
+// count], ...]}, one entry per run of consecutive triangles of `tris` on one
+// face (face_of[t], -1 for none) or in one solid (solid_of[t]); a member
+// only when its ids are not empty.
 void add_face_extras(tinygltf::Primitive& prim, const std::vector<int>& tris,
-                     const std::vector<int>& face_of);
+                     const std::vector<int>& face_of, const std::vector<int>& solid_of);
 
 // Writes the model (scene 0 the default); throws InputError naming `name`.
 void finish_and_write(tinygltf::Model& model, const std::filesystem::path& path, bool binary,

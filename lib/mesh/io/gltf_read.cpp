@@ -152,9 +152,10 @@ class PrimitiveReader {
     TriangleMesh finish() && {
         if (all_normals_ && !mesh_.triangles.empty()) mesh_.corner_normals = std::move(normals_);
         if (all_uvs_ && !mesh_.triangles.empty()) mesh_.corner_uvs = std::move(uvs_);
-        if (all_faces_ && !mesh_.triangles.empty()) { // face ids; the parts are not written
-            mesh_.triangle_face = std::move(faces_);
+        if (faces_.complete && !mesh_.triangles.empty()) { // the parts are not written
+            mesh_.triangle_face = std::move(faces_.ids);
             mesh_.triangle_part.assign(mesh_.triangles.size(), -1);
+            if (solids_.complete) mesh_.triangle_solid = std::move(solids_.ids);
         }
         return std::move(mesh_);
     }
@@ -198,19 +199,28 @@ class PrimitiveReader {
             normals_.push_back(cn);
             uvs_.push_back(cu);
         }
-        read_faces(prim, tris.size());
+        read_ids(prim, "faces", tris.size(), faces_);
+        read_ids(prim, "solids", tris.size(), solids_);
     }
 
-    // The face ids of a primitive's n triangles from its extras (docs/formats.md,
-    // "Face ids": {"faces": [[face, first, count], ...]}); a primitive
-    // without them, or whose runs do not cover its triangles in order, leaves
-    // the mesh without face ids (extras are any application's).
-    void read_faces(const tinygltf::Primitive& prim, size_t n) {
-        const size_t before = faces_.size();
-        faces_.resize(before + n, -1);
-        const tinygltf::Value& runs = prim.extras.Has("faces") ? prim.extras.Get("faces") : none_;
+    // Ids of every triangle read so far, from the primitives' extras;
+    // complete while every primitive's runs covered its triangles.
+    struct Ids {
+        std::vector<int> ids;
+        bool complete = true;
+    };
+
+    // The ids of a primitive's n triangles from its extras' member `key`
+    // (docs/formats.md, "Face ids": {"faces": [[face, first, count], ...]},
+    // "solids" likewise); a primitive without them, or whose runs do not
+    // cover its triangles in order, leaves the mesh without those ids
+    // (extras are any application's).
+    void read_ids(const tinygltf::Primitive& prim, const char* key, size_t n, Ids& out) {
+        const size_t before = out.ids.size();
+        out.ids.resize(before + n, -1);
+        const tinygltf::Value& runs = prim.extras.Has(key) ? prim.extras.Get(key) : none_;
         size_t next = 0;
-        for (size_t k = 0; all_faces_ && k < runs.ArrayLen(); ++k) {
+        for (size_t k = 0; out.complete && k < runs.ArrayLen(); ++k) {
             const tinygltf::Value& run = runs.Get(static_cast<int>(k));
             double v[3];
             for (int i = 0; i < 3; ++i) {
@@ -219,16 +229,16 @@ class PrimitiveReader {
                 // Checked on the double, before any conversion.
                 if (!(v[i] >= (i == 0 ? -1 : 0) && v[i] <= 2147483647.0) ||
                     v[i] != std::floor(v[i]))
-                    all_faces_ = false;
+                    out.complete = false;
             }
-            if (!all_faces_ || v[1] != double(next) || v[2] < 1 || v[1] + v[2] > double(n)) {
-                all_faces_ = false;
+            if (!out.complete || v[1] != double(next) || v[2] < 1 || v[1] + v[2] > double(n)) {
+                out.complete = false;
                 break;
             }
-            std::fill_n(faces_.begin() + before + next, size_t(v[2]), static_cast<int>(v[0]));
+            std::fill_n(out.ids.begin() + before + next, size_t(v[2]), static_cast<int>(v[0]));
             next += size_t(v[2]);
         }
-        if (next != n) all_faces_ = false;
+        if (next != n) out.complete = false;
     }
 
     // The primitive's POSITION accessor in `pv`, its vertices appended to the
@@ -334,8 +344,8 @@ class PrimitiveReader {
     size_t max_triangles_;
     std::map<int, int> first_vertex_; // POSITION accessor -> index of its first vertex
     TriangleMesh mesh_;
-    bool all_normals_ = true, all_uvs_ = true, all_faces_ = true;
-    std::vector<int> faces_;
+    bool all_normals_ = true, all_uvs_ = true;
+    Ids faces_, solids_;
     const tinygltf::Value none_;
     std::vector<std::array<Vec3, 3>> normals_;
     std::vector<std::array<std::array<double, 2>, 3>> uvs_;

@@ -5,6 +5,7 @@
 #include <seamless/base/error.h>
 #include <seamless/mesh/io/gltf_io.h>
 #include <seamless/mesh/io/gltf_primitives.h>
+#include <seamless/mesh/io/mesh_text.h>
 
 #include <tiny_gltf.h>
 
@@ -167,20 +168,31 @@ tinygltf::Primitive add_triangles(tinygltf::Model& model, const TriangleMesh& me
     return add_primitive(model, primitive_arrays(mesh, tris, has, scale), has);
 }
 
-void add_face_extras(tinygltf::Primitive& prim, const std::vector<int>& tris,
-                     const std::vector<int>& face_of) {
-    if (face_of.empty()) return;
+namespace {
+
+// [[id, first, count], ...]: the runs of consecutive triangles of `tris`
+// with one id (id_of[t]).
+tinygltf::Value id_runs(const std::vector<int>& tris, const std::vector<int>& id_of) {
     tinygltf::Value::Array runs;
     for (size_t k = 0; k < tris.size();) {
         size_t end = k + 1;
-        while (end < tris.size() && face_of[tris[end]] == face_of[tris[k]]) ++end;
-        runs.emplace_back(tinygltf::Value::Array{tinygltf::Value(face_of[tris[k]]),
+        while (end < tris.size() && id_of[tris[end]] == id_of[tris[k]]) ++end;
+        runs.emplace_back(tinygltf::Value::Array{tinygltf::Value(id_of[tris[k]]),
                                                  tinygltf::Value(static_cast<int>(k)),
                                                  tinygltf::Value(static_cast<int>(end - k))});
         k = end;
     }
+    return tinygltf::Value(std::move(runs));
+}
+
+} // namespace
+
+void add_face_extras(tinygltf::Primitive& prim, const std::vector<int>& tris,
+                     const std::vector<int>& face_of, const std::vector<int>& solid_of) {
+    if (face_of.empty() && solid_of.empty()) return;
     tinygltf::Value::Object extras;
-    extras["faces"] = tinygltf::Value(std::move(runs));
+    if (!face_of.empty()) extras["faces"] = id_runs(tris, face_of);
+    if (!solid_of.empty()) extras["solids"] = id_runs(tris, solid_of);
     prim.extras = tinygltf::Value(std::move(extras));
 }
 
@@ -204,6 +216,8 @@ void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, boo
     const std::vector<int> no_faces;
     const std::vector<int>& face_of =
         mesh.triangle_face.size() == nf ? mesh.triangle_face : no_faces;
+    const std::vector<int>& solid_of =
+        mesh_text::has_solid_ids(mesh) ? mesh.triangle_solid : no_faces;
 
     // Group triangles by source surface, in surface order.
     std::map<int, std::vector<int>> groups;
@@ -214,7 +228,7 @@ void write_gltf(const std::filesystem::path& path, const TriangleMesh& mesh, boo
     tinygltf::Scene scene;
     for (const auto& [surface, tris] : groups) {
         tinygltf::Primitive prim = add_triangles(model, mesh, tris, has, options.scale);
-        add_face_extras(prim, tris, face_of);
+        add_face_extras(prim, tris, face_of, solid_of);
         add_surface_node(model, scene, mesh, surface, std::move(prim));
     }
     model.scenes.push_back(scene);

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <set>
 
 using namespace seamless;
 
@@ -105,7 +107,7 @@ TEST_CASE("Face ids round-trip through PLY and OBJ", "[mesh][io][face_ids]") {
     }
 }
 
-TEST_CASE("glTF face extras read back as face ids", "[mesh][io][face_ids]") {
+TEST_CASE("glTF face and solid extras read back as face and solid ids", "[mesh][io][face_ids]") {
     const Model m = test::small_assembly();
     const TriangleMesh placed = placed_mesh(tessellated(m), m);
     const TriangleMesh g = round_trip(placed, "a.glb");
@@ -118,6 +120,15 @@ TEST_CASE("glTF face extras read back as face ids", "[mesh][io][face_ids]") {
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
     CHECK(a == b);
+    // Each triangle's solid is its face's, as placed_mesh gave it: `check`
+    // judges a glTF's solids apart as a PLY's.
+    REQUIRE(placed.triangle_solid.size() == placed.triangles.size());
+    REQUIRE(g.triangle_solid.size() == g.triangles.size());
+    std::map<int, int> solid_of_face;
+    for (size_t t = 0; t < placed.triangles.size(); ++t)
+        solid_of_face[placed.triangle_face[t]] = placed.triangle_solid[t];
+    for (size_t t = 0; t < g.triangles.size(); ++t)
+        CHECK(g.triangle_solid[t] == solid_of_face.at(g.triangle_face[t]));
     // Without face ids none are read, nor when one primitive lacks them.
     TriangleMesh bare = placed;
     bare.triangle_face.clear();
@@ -127,6 +138,11 @@ TEST_CASE("glTF face extras read back as face ids", "[mesh][io][face_ids]") {
     std::ifstream in(path);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     REQUIRE(read_mesh(path).triangle_face.size() == placed.triangles.size());
+    // A primitive without solid runs: face ids, no solid ids.
+    text.replace(text.find("\"solids\""), 8, "\"solidz\"");
+    test::write_file(path, text);
+    CHECK(read_mesh(path).triangle_face.size() == placed.triangles.size());
+    CHECK(read_mesh(path).triangle_solid.empty());
     text.replace(text.find("\"faces\""), 7, "\"fakes\"");
     test::write_file(path, text);
     CHECK(read_mesh(path).triangle_face.empty());
@@ -183,6 +199,16 @@ TEST_CASE("Face ids of the corpus's assembly and a coloured part round-trip",
             INFO(ext);
             check_same_ids(placed, round_trip(placed, std::string("corpus") + ext));
         }
+        // glTF: every triangle's solid is its face's (as1: 18 solids).
+        const TriangleMesh g = round_trip(placed, "corpus.glb");
+        REQUIRE(g.triangle_solid.size() == g.triangles.size());
+        std::map<int, int> solid_of_face;
+        for (size_t t = 0; t < placed.triangles.size(); ++t)
+            solid_of_face[placed.triangle_face[t]] = placed.triangle_solid[t];
+        for (size_t t = 0; t < g.triangles.size(); ++t)
+            CHECK(g.triangle_solid[t] == solid_of_face.at(g.triangle_face[t]));
+        CHECK(std::set<int>(g.triangle_solid.begin(), g.triangle_solid.end()).size() ==
+              std::set<int>(placed.triangle_solid.begin(), placed.triangle_solid.end()).size());
     }
 }
 
