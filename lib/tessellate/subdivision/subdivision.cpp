@@ -39,14 +39,28 @@ struct Context {
     }
 };
 
+// A subpatch whose sides along one direction are this many times as long as
+// the others is elongated.
+constexpr double kElongated = 16;
+
+// The lengths of the sides along u (corners 0-1 and 3-2) and along v.
+std::array<double, 2> side_lengths(const BezierPatch& b) {
+    return {distance(b.corner(0), b.corner(1)) + distance(b.corner(3), b.corner(2)),
+            distance(b.corner(0), b.corner(3)) + distance(b.corner(1), b.corner(2))};
+}
+
+bool elongated(const BezierPatch& b) {
+    const std::array<double, 2> l = side_lengths(b);
+    return std::max(l[0], l[1]) > kElongated * std::min(l[0], l[1]);
+}
+
 // True to split in u (s), false for v (t).
 bool split_in_u(const BezierPatch& b) {
     const double fu = flatness_u(b), fv = flatness_v(b);
     if (fu > 2 * fv) return true;
     if (fv > 2 * fu) return false;
-    const double lu = distance(b.corner(0), b.corner(1)) + distance(b.corner(3), b.corner(2));
-    const double lv = distance(b.corner(0), b.corner(3)) + distance(b.corner(1), b.corner(2));
-    return lu >= lv;
+    const std::array<double, 2> l = side_lengths(b);
+    return l[0] >= l[1];
 }
 
 // A fan whose corners lie within this fraction of the tolerance of its
@@ -154,9 +168,11 @@ void add_leaf(Context& cx, const Subpatch& leaf) {
 }
 
 // The direction subpatch `r` is halved in, true for u (s). A subpatch the
-// tolerance rejected: where the remainder is larger; one the angle rejected:
-// its longer sides (flatness sees no turn along straight rulings, a twisted
-// patch's); flatness where neither decides (it costs more). A side can only
+// tolerance rejected: where the remainder is larger; else where it is less
+// flat, unless the angle rejected an elongated subpatch flat within a
+// fraction of the tolerance both ways: then across its long sides (a
+// twisted patch's straight rulings, along which the normal turns though
+// flatness sees nothing: halving across them never ends). A side can only
 // be halved while it spans more than one grid step.
 bool halve_in_u(const Context& cx, const BezierPatch& b, const ParamRect& r, double fan_error,
                 bool forced) {
@@ -165,9 +181,9 @@ bool halve_in_u(const Context& cx, const BezierPatch& b, const ParamRect& r, dou
     if (cx.options.tolerance > 0 && (fan_error >= 0 || forced)) {
         const std::array<double, 2> d = second_derivative_bounds(b);
         in_u = d[0] >= d[1];
-    } else if (fan_error == kTurned) {
-        in_u = distance(b.corner(0), b.corner(1)) + distance(b.corner(3), b.corner(2)) >=
-               distance(b.corner(0), b.corner(3)) + distance(b.corner(1), b.corner(2));
+    } else if (fan_error == kTurned && cx.options.tolerance > 0 && elongated(b) &&
+               std::max(flatness_u(b), flatness_v(b)) <= kTinyFan * cx.options.tolerance) {
+        in_u = side_lengths(b)[0] >= side_lengths(b)[1];
     } else {
         in_u = split_in_u(b);
     }
