@@ -2,6 +2,7 @@
 #include <seamless/tessellate/trimmed/vertex_balls.h>
 
 #include <algorithm>
+#include <cstddef>
 
 namespace seamless {
 
