@@ -9,6 +9,7 @@
 #include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
 #include <seamless/tessellate/trimmed/faces/face_domain.h>
 #include <seamless/tessellate/trimmed/faces/face_triangulation.h>
+#include <seamless/tessellate/trimmed/vertex_balls.h>
 
 #include <algorithm>
 #include <chrono>
@@ -198,6 +199,7 @@ Faces triangulate_faces(const Model& model, std::vector<EdgePolyline>& lines,
         for_each_item(static_cast<int>(halve.edges.size()), threads, [&](int i) {
             const int e = halve.edges[i];
             halve_segments(brep, e, lines[e], halve.segments[e]);
+            drop_points_in_vertex_balls(brep, e, lines[e], criteria.deviation);
         });
         pending = faces_of(brep, halve.edges);
         if (pending.empty()) break;
@@ -255,8 +257,10 @@ Tessellation tessellate_at_scale(const Model& model, const TessellationOptions& 
     const EdgeCriteria ec{D, st.angle};
     const auto uses = edge_uses(model);
     std::vector<EdgePolyline> lines(brep.edges.size());
-    for_each_item(static_cast<int>(lines.size()), options.threads,
-                  [&](int e) { lines[e] = discretise_edge(brep, e, uses[e], ec); });
+    for_each_item(static_cast<int>(lines.size()), options.threads, [&](int e) {
+        lines[e] = discretise_edge(brep, e, uses[e], ec);
+        drop_points_in_vertex_balls(brep, e, lines[e], D);
+    });
     st.edge_seconds = seconds_since(start);
     if (options.progress) options.progress(0.2);
     const auto faces_start = std::chrono::steady_clock::now();
