@@ -91,6 +91,7 @@ int FaceDomain::add_interior(const FaceSurface& s, Vec3 at) {
     points.push_back(s.at(p).point);
     keys.push_back(-1);
     pole.push_back({});
+    offset.push_back(0);
     return size() - 1;
 }
 
@@ -138,6 +139,8 @@ FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& line
     metric_scale(s, box, d.su, d.sv);
     for (const Vec3& p : d.uv) d.scaled.push_back({p.x * d.su, p.y * d.sv, 0});
     merge_vertex_images(brep, box, d);
+    // After the merge, which moves a vertex's images onto one (u,v) point.
+    for (int i = 0; i < d.size(); ++i) d.offset.push_back(distance(d.points[i], s.point(d.uv[i])));
     return d;
 }
 

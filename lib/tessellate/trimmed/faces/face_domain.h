@@ -36,6 +36,10 @@ struct FaceDomain {
     std::vector<Vec3> uv, scaled, points;
     std::vector<std::int64_t> keys;
     std::vector<Vec3> pole;
+    // Per point: how far it lies off the surface, |point - S(uv)|: a boundary
+    // point lies on its edge's curve, which the file's pcurve maps up to the
+    // edge's tolerance away; an interior point lies on the surface (zero).
+    std::vector<double> offset;
     std::vector<std::array<int, 2>> segments; // the loops' segments, point indices
     // Per segment: its edge, its segment of the edge's polyline (k: from
     // point k to k + 1), which re-splitting halves, and the coedge's pcurve.

@@ -19,8 +19,10 @@ namespace {
 constexpr int kRounds = 64;
 // A face whose refinement does not converge (seen on a torus fillet whose
 // carried pcurves stray from it) stops at this many triangles, the rest
-// counted above the tolerance, instead of filling the model's budget.
-constexpr size_t kMaxFaceTriangles = 100'000;
+// counted above the tolerance, instead of filling the model's budget; above
+// what the corpus's largest converging faces need at a tenth of the default
+// deviation (docs/results/cad.md).
+constexpr size_t kMaxFaceTriangles = 250'000;
 // Rounds a boundary side must be found encroached in before it counts as
 // one refinement does not mend (FaceCriteria::stop_when_encroached).
 constexpr int kPersistent = 8;
@@ -65,9 +67,20 @@ constexpr double kNudge = 1e-6;
 constexpr double kTolerances = 8;
 constexpr double kTiny = 1.0 / 8;
 
-// Samples can miss a triangle's largest deviation, which lies between them:
-// the refinement aims this much below D.
-constexpr double kMargin = 0.9;
+// A triangle's target at barycentric l: its aim (Refiner::judge), above
+// that only what its corners' offsets off the surface (FaceDomain::offset:
+// a boundary point lies on its edge's curve), which move the flat triangle
+// off it by up to their interpolation, force (offset_allowance). Triangles
+// whose corners lie on the surface are held to the aim whatever the face's
+// edges' tolerances.
+struct Target {
+    std::array<double, 3> offset;
+    double aim, deviation;
+    double at(const double l[3]) const {
+        return aim +
+               offset_allowance(l[0] * offset[0] + l[1] * offset[1] + l[2] * offset[2], deviation);
+    }
+};
 
 // An upper bound of the distance from q to the surface: the nearest of the
 // surface points at uv and of a few damped Gauss-Newton steps from it, taken
@@ -164,13 +177,16 @@ struct Refiner {
         }
         const Vec3 centre = (uv[0] + uv[1] + uv[2]) / 3.0;
         // A triangle on the boundary keeps its segment's deviation, which the
-        // edge's own samples held below kMargin * D but the face's may find a
+        // edge's own samples held below the aim but the face's may find a
         // little above: up to D it is the edge's, not the triangle's. Not at
         // a pole, where the (u,v) samples are distorted and miss more.
         const bool pole =
             d.pole[k[0]] != Vec3{} || d.pole[k[1]] != Vec3{} || d.pole[k[2]] != Vec3{};
         const bool boundary = !pole && (t.boundary[0] || t.boundary[1] || t.boundary[2]);
-        const double target = (boundary ? 1.0 : kMargin) * c.deviation + d.tolerance;
+        const Target target{{d.offset[k[0]], d.offset[k[1]], d.offset[k[2]]},
+                            (boundary ? 1.0 : kDeviationAim) * c.deviation,
+                            c.deviation};
+        double excess = 0; // the largest sample's deviation over its target
         // At a pole the normal is the one facing the triangle; on a crease,
         // that of the triangle's side.
         const bool crease = s.crosses_crease(uv);
@@ -182,7 +198,7 @@ struct Refiner {
         const TriangleFrame frame(p[0], p[1], p[2]);
         const bool on_boundary = t.boundary[0] || t.boundary[1] || t.boundary[2];
         for (const Sample& smp : kSamples) {
-            if (!full && v.deviation > target) break;
+            if (!full && excess > 1) break;
             if (smp.boundary_only && !on_boundary) continue;
             // Boundary segments were measured with their edge.
             if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
@@ -195,11 +211,13 @@ struct Refiner {
             // surface's points see.
             double dev = frame.distance(s.point(q, spans));
             const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
+            const double limit_here = target.at(smp.l);
             if (pole || crease)
                 dev = std::max(dev, distance_to_surface(s, flat, q, 0));
-            else if (dev > target)
-                dev = std::min(dev, distance_to_surface(s, flat, q, target));
+            else if (dev > limit_here)
+                dev = std::min(dev, distance_to_surface(s, flat, q, limit_here));
             v.deviation = std::max(v.deviation, dev);
+            excess = std::max(excess, dev / limit_here);
         }
         // The corner normals within the angle of each other, and the flat
         // triangle's within it of theirs: no fold or needle on the surface.
@@ -233,24 +251,45 @@ struct Refiner {
                 if (!small && limit.exceeded(x, n)) turn = std::max(turn, angle_between(x, n));
             }
         const bool flat = !ear && !(norm(n) > 1e-12 * longest);
-        v.badness = flat ? INFINITY : std::max(v.deviation / target, turn / c.angle);
+        v.badness = flat ? INFINITY : std::max(excess, turn / c.angle);
         v.split = v.badness > 1;
         return v;
     }
 
-    // Records t's boundary sides but those along a pole's degenerate edge,
-    // which halving would not change (all its points are the pole); false
-    // when there are none.
-    bool record_encroached(const DomainTriangle& t) {
+    // Records t's boundary sides that the point `at`, refused, encroaches;
+    // false when there are none. Not a side along a pole's degenerate edge,
+    // which halving would not change (all its points are the pole), nor,
+    // on a triangle of three mesh vertices, a side leaving a pole with `at`
+    // on t's side of it and outside its diametral circle (Ruppert's test):
+    // `at` then lies beside the degenerate edge, and halving the side would
+    // only move its other end towards the pole. (A triangle across a seam,
+    // two of its corners one vertex, has its seam sides halved.)
+    bool record_encroached(const DomainTriangle& t, Vec3 at) {
+        const auto& c = t.corners;
+        const bool seam =
+            (d.keys[c[0]] >= 0 && (d.keys[c[0]] == d.keys[c[1]] || d.keys[c[0]] == d.keys[c[2]])) ||
+            (d.keys[c[1]] >= 0 && d.keys[c[1]] == d.keys[c[2]]);
         bool any = false;
         for (int k = 0; k < 3; ++k) {
-            const int a = t.corners[(k + 1) % 3], b = t.corners[(k + 2) % 3];
+            const int a = c[(k + 1) % 3], b = c[(k + 2) % 3];
             if (!t.boundary[k] || (d.pole[a] != Vec3{} && d.pole[b] != Vec3{})) continue;
+            if (!seam && (d.pole[a] != Vec3{} || d.pole[b] != Vec3{}) &&
+                !encroaches(at, a, b, c[k]))
+                continue;
             auto& seen = encroached[{std::min(a, b), std::max(a, b)}];
             if (seen[1] == 0 || seen[0] != round) seen = {round, seen[1] + 1};
             any = true;
         }
         return any;
+    }
+
+    // `at` lies across side ab from the triangle's corner c, or within the
+    // side's diametral circle.
+    bool encroaches(Vec3 at, int a, int b, int c) const {
+        const Vec3 pa = d.scaled[a], pb = d.scaled[b], side = pb - pa;
+        const Vec3 ta = at - pa, ca = d.scaled[c] - pa;
+        const double across = (side.x * ta.y - side.y * ta.x) * (side.x * ca.y - side.y * ca.x);
+        return !(across > 0) || distance(at, 0.5 * (pa + pb)) < 0.5 * norm(side);
     }
 
     // The point to insert for t: its circumcentre where that lies in the
@@ -274,7 +313,7 @@ struct Refiner {
         Vec3 at = a + offset;
         int index = cdt.insert(at, 0.75 * norm(offset), t.corners[0]);
         if (index == ConstrainedTriangulation::kCrowded) return false;
-        if (index == ConstrainedTriangulation::kOutside && record_encroached(t)) return false;
+        if (index == ConstrainedTriangulation::kOutside && record_encroached(t, at)) return false;
         if (index < 0) index = cdt.insert(at = (a + b + c3) / 3.0, 1e-3 * shortest, t.corners[0]);
         if (index < 0) return false;
         SEAMLESS_CHECK(index == d.size(), "the triangulation numbers inserted points in order");
