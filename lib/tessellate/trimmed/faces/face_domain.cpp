@@ -95,6 +95,26 @@ int FaceDomain::add_interior(const FaceSurface& s, Vec3 at) {
     return size() - 1;
 }
 
+bool FaceDomain::encroaches(Vec3 at, int a, int b, int c) const {
+    const Vec3 pa = scaled[a], pb = scaled[b], side = pb - pa;
+    const Vec3 ta = at - pa, ca = scaled[c] - pa;
+    const double across = (side.x * ta.y - side.y * ta.x) * (side.x * ca.y - side.y * ca.x);
+    return !(across > 0) || distance(at, 0.5 * (pa + pb)) < 0.5 * norm(side);
+}
+
+std::vector<int> FaceDomain::segments_joining(std::vector<std::array<int, 2>> sides) const {
+    for (auto& s : sides) s = {std::min(s[0], s[1]), std::max(s[0], s[1])};
+    std::sort(sides.begin(), sides.end());
+    sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+    std::vector<int> out;
+    for (size_t i = 0; i < segments.size(); ++i) {
+        const std::array<int, 2> s{std::min(segments[i][0], segments[i][1]),
+                                   std::max(segments[i][0], segments[i][1])};
+        if (std::binary_search(sides.begin(), sides.end(), s)) out.push_back(static_cast<int>(i));
+    }
+    return out;
+}
+
 FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& lines, int face) {
     const BRep& brep = model.brep;
     const BRepFace& f = brep.faces[face];

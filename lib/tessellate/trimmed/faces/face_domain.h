@@ -54,6 +54,17 @@ struct FaceDomain {
     int size() const { return static_cast<int>(uv.size()); }
     // Appends an interior point at rescaled (x, y); returns its index.
     int add_interior(const FaceSurface& s, Vec3 at_scaled);
+    // The offsets of the points `corners` interpolated at barycentric l: how
+    // far the flat triangle's point may lie off the surface by them.
+    double offset_at(const std::array<int, 3>& corners, const double l[3]) const {
+        return l[0] * offset[corners[0]] + l[1] * offset[corners[1]] + l[2] * offset[corners[2]];
+    }
+    // Rescaled point `at` lies across the side between points a and b from
+    // point c, or within the side's diametral circle (Ruppert's encroachment).
+    bool encroaches(Vec3 at, int a, int b, int c) const;
+    // The segments (indices into `segments`) joining the given pairs of
+    // points, sorted, each once.
+    std::vector<int> segments_joining(std::vector<std::array<int, 2>> sides) const;
 };
 
 FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& lines, int face);

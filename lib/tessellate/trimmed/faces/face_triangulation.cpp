@@ -67,21 +67,6 @@ constexpr double kNudge = 1e-6;
 constexpr double kTolerances = 8;
 constexpr double kTiny = 1.0 / 8;
 
-// A triangle's target at barycentric l: its aim (Refiner::judge), above
-// that only what its corners' offsets off the surface (FaceDomain::offset:
-// a boundary point lies on its edge's curve), which move the flat triangle
-// off it by up to their interpolation, force (offset_allowance). Triangles
-// whose corners lie on the surface are held to the aim whatever the face's
-// edges' tolerances.
-struct Target {
-    std::array<double, 3> offset;
-    double aim, deviation;
-    double at(const double l[3]) const {
-        return aim +
-               offset_allowance(l[0] * offset[0] + l[1] * offset[1] + l[2] * offset[2], deviation);
-    }
-};
-
 // An upper bound of the distance from q to the surface: the nearest of the
 // surface points at uv and of a few damped Gauss-Newton steps from it, taken
 // while above `enough`. Where the parametrisation is distorted (towards a
@@ -183,9 +168,7 @@ struct Refiner {
         const bool pole =
             d.pole[k[0]] != Vec3{} || d.pole[k[1]] != Vec3{} || d.pole[k[2]] != Vec3{};
         const bool boundary = !pole && (t.boundary[0] || t.boundary[1] || t.boundary[2]);
-        const Target target{{d.offset[k[0]], d.offset[k[1]], d.offset[k[2]]},
-                            (boundary ? 1.0 : kDeviationAim) * c.deviation,
-                            c.deviation};
+        const double aim = (boundary ? 1.0 : kDeviationAim) * c.deviation;
         double excess = 0; // the largest sample's deviation over its target
         // At a pole the normal is the one facing the triangle; on a crease,
         // that of the triangle's side.
@@ -211,7 +194,9 @@ struct Refiner {
             // surface's points see.
             double dev = frame.distance(s.point(q, spans));
             const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
-            const double limit_here = target.at(smp.l);
+            // Above the aim only what the corners' offsets off the surface
+            // force, whatever the tolerances of the face's edges.
+            const double limit_here = aim + offset_allowance(d.offset_at(k, smp.l), c.deviation);
             if (pole || crease)
                 dev = std::max(dev, distance_to_surface(s, flat, q, 0));
             else if (dev > limit_here)
@@ -274,22 +259,13 @@ struct Refiner {
             const int a = c[(k + 1) % 3], b = c[(k + 2) % 3];
             if (!t.boundary[k] || (d.pole[a] != Vec3{} && d.pole[b] != Vec3{})) continue;
             if (!seam && (d.pole[a] != Vec3{} || d.pole[b] != Vec3{}) &&
-                !encroaches(at, a, b, c[k]))
+                !d.encroaches(at, a, b, c[k]))
                 continue;
             auto& seen = encroached[{std::min(a, b), std::max(a, b)}];
             if (seen[1] == 0 || seen[0] != round) seen = {round, seen[1] + 1};
             any = true;
         }
         return any;
-    }
-
-    // `at` lies across side ab from the triangle's corner c, or within the
-    // side's diametral circle.
-    bool encroaches(Vec3 at, int a, int b, int c) const {
-        const Vec3 pa = d.scaled[a], pb = d.scaled[b], side = pb - pa;
-        const Vec3 ta = at - pa, ca = d.scaled[c] - pa;
-        const double across = (side.x * ta.y - side.y * ta.x) * (side.x * ca.y - side.y * ca.x);
-        return !(across > 0) || distance(at, 0.5 * (pa + pb)) < 0.5 * norm(side);
     }
 
     // The point to insert for t: its circumcentre where that lies in the
@@ -321,21 +297,6 @@ struct Refiner {
         return true;
     }
 };
-
-// The boundary segments (indices into d.segments) joining the given pairs of
-// points, sorted, each once.
-std::vector<int> segments_of(const FaceDomain& d, std::vector<std::array<int, 2>> sides) {
-    for (auto& s : sides) s = {std::min(s[0], s[1]), std::max(s[0], s[1])};
-    std::sort(sides.begin(), sides.end());
-    sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
-    std::vector<int> out;
-    for (size_t i = 0; i < d.segments.size(); ++i) {
-        const std::array<int, 2> s{std::min(d.segments[i][0], d.segments[i][1]),
-                                   std::max(d.segments[i][0], d.segments[i][1])};
-        if (std::binary_search(sides.begin(), sides.end(), s)) out.push_back(static_cast<int>(i));
-    }
-    return out;
-}
 
 // A face whose every edge is degenerate is a point in space: nothing to
 // mesh, and no neighbour shares a mesh edge with it.
@@ -403,9 +364,9 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     }
     out.crowded = stopped && tris.size() > runaway;
     if (stopped)
-        out.encroached = segments_of(d, r.encroached_sides(kPersistent));
+        out.encroached = d.segments_joining(r.encroached_sides(kPersistent));
     else if (!failing.empty())
-        out.encroached = segments_of(d, r.encroached_sides(1));
+        out.encroached = d.segments_joining(r.encroached_sides(1));
     out.judged = static_cast<long long>(judged.size());
     for (const DomainTriangle& t : tris) {
         Verdict& v = judged[t.tag];
