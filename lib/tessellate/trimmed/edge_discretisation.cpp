@@ -66,6 +66,7 @@ struct SegmentEnd {
     Vec3 point;
     std::array<Vec3, kCachedUses> uv, normal;
     std::array<bool, kCachedUses> has_normal{};
+    std::array<double, kCachedUses> offset{-1, -1, -1, -1}; // -1: not computed
 };
 
 struct Splitter {
@@ -103,6 +104,15 @@ struct Splitter {
         return x.normal[k];
     }
 
+    // How far the end's point lies off use k's surface at its (u,v) point
+    // (FaceDomain::offset): asked only of chords above the aim.
+    double offset(SegmentEnd& x, size_t k) const {
+        const EdgeOnFace& use = uses[k];
+        if (k >= kCachedUses) return distance(x.point, use.surface.point(uv(x, k)));
+        if (x.offset[k] < 0) x.offset[k] = distance(x.point, use.surface.point(x.uv[k]));
+        return x.offset[k];
+    }
+
     // The largest sampled distance of [a, b]'s curve and (u,v) images from
     // its chord, or infinity when a tangent or normal turns too far; m is
     // the middle's end data.
@@ -132,9 +142,11 @@ struct Splitter {
             const Vec3 ua = uv(a, k), ub = uv(b, k);
             for (double s : {0.25, 0.5, 0.75}) {
                 const Vec3 q = lerp(ua, ub, s);
-                // The tolerance is how far the surface is allowed to be.
-                d = std::max(d,
-                             point_segment_distance(use.surface.point(q), pa, pb) - use.tolerance);
+                double dq = point_segment_distance(use.surface.point(q), pa, pb);
+                // The ends' offsets off the surface are the chord's, not its sag's.
+                if (dq > kDeviationAim * c.deviation)
+                    dq -= offset_allowance(std::lerp(offset(a, k), offset(b, k), s), c.deviation);
+                d = std::max(d, dq);
             }
             // The midpoint too: a closed edge's ends have one normal. Across
             // a crease the normal jumps however short the segment.
@@ -154,12 +166,12 @@ struct Splitter {
         const bool room = depth < kMaxDepth && static_cast<int>(line.t.size()) < c.max_points &&
                           m.t > a.t && m.t < b.t;
         // Samples miss the largest deviation by a few per cent: aim below D.
-        if (d > 0.9 * c.deviation && room) {
+        if (d > kDeviationAim * c.deviation && room) {
             split(a, m, depth + 1);
             split(m, b, depth + 1);
             return;
         }
-        if (d > 0.9 * c.deviation) line.limited = true;
+        if (d > kDeviationAim * c.deviation) line.limited = true;
         if (std::isfinite(d)) line.deviation = std::max(line.deviation, d);
         line.t.push_back(b.t);
         line.points.push_back(b.point);

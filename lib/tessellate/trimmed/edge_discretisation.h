@@ -27,6 +27,20 @@ struct EdgeOnFace {
     Vec3 inward;
 };
 
+// Edges and faces aim this fraction of D below it: samples miss the largest
+// deviation, which lies between them, by a few per cent.
+constexpr double kDeviationAim = 0.9;
+
+// What a chord or a triangle whose ends or corners lie `offset` off the
+// surface (interpolated between them; an edge's point on its curve against
+// the surface at its pcurve's point) may be measured above its aim: up to
+// 0.8 D the offset leaves the surface's sag a tenth of D below the aim, and
+// beyond, the offset's excess is what no refinement removes.
+inline double offset_allowance(double offset, double deviation) {
+    constexpr double kFree = kDeviationAim - 0.1;
+    return offset > kFree * deviation ? offset - kFree * deviation : 0;
+}
+
 struct EdgeCriteria {
     double deviation = 0; // D, model units
     double angle = 0.5;   // radians

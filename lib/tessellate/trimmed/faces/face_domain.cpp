@@ -94,7 +94,28 @@ int FaceDomain::add_interior(const FaceSurface& s, Vec3 at, Vec3 p) {
     points.push_back(s.point(p)); // at(p).point to the bit, without derivatives
     keys.push_back(-1);
     pole.push_back({});
+    offset.push_back(0);
     return size() - 1;
+}
+
+bool FaceDomain::encroaches(Vec3 at, int a, int b, int c) const {
+    const Vec3 pa = scaled[a], pb = scaled[b], side = pb - pa;
+    const Vec3 ta = at - pa, ca = scaled[c] - pa;
+    const double across = (side.x * ta.y - side.y * ta.x) * (side.x * ca.y - side.y * ca.x);
+    return !(across > 0) || distance(at, 0.5 * (pa + pb)) < 0.5 * norm(side);
+}
+
+std::vector<int> FaceDomain::segments_joining(std::vector<std::array<int, 2>> sides) const {
+    for (auto& s : sides) s = {std::min(s[0], s[1]), std::max(s[0], s[1])};
+    std::sort(sides.begin(), sides.end());
+    sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+    std::vector<int> out;
+    for (size_t i = 0; i < segments.size(); ++i) {
+        const std::array<int, 2> s{std::min(segments[i][0], segments[i][1]),
+                                   std::max(segments[i][0], segments[i][1])};
+        if (std::binary_search(sides.begin(), sides.end(), s)) out.push_back(static_cast<int>(i));
+    }
+    return out;
 }
 
 FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& lines, int face) {
@@ -141,6 +162,8 @@ FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& line
     metric_scale(s, box, d.su, d.sv);
     for (const Vec3& p : d.uv) d.scaled.push_back({p.x * d.su, p.y * d.sv, 0});
     merge_vertex_images(brep, box, d);
+    // After the merge, which moves a vertex's images onto one (u,v) point.
+    for (int i = 0; i < d.size(); ++i) d.offset.push_back(distance(d.points[i], s.point(d.uv[i])));
     return d;
 }
 

@@ -36,6 +36,10 @@ struct FaceDomain {
     std::vector<Vec3> uv, scaled, points;
     std::vector<std::int64_t> keys;
     std::vector<Vec3> pole;
+    // Per point: how far it lies off the surface, |point - S(uv)|: a boundary
+    // point lies on its edge's curve, which the file's pcurve maps up to the
+    // edge's tolerance away; an interior point lies on the surface (zero).
+    std::vector<double> offset;
     std::vector<std::array<int, 2>> segments; // the loops' segments, point indices
     // Per segment: its edge, its segment of the edge's polyline (k: from
     // point k to k + 1), which re-splitting halves, and the coedge's pcurve.
@@ -53,6 +57,17 @@ struct FaceDomain {
     // ... whose (u,v) point is `uv` itself (an earlier run's point, which
     // its rescaling back would move by a rounding).
     int add_interior(const FaceSurface& s, Vec3 at_scaled, Vec3 uv);
+    // The offsets of the points `corners` interpolated at barycentric l: how
+    // far the flat triangle's point may lie off the surface by them.
+    double offset_at(const std::array<int, 3>& corners, const double l[3]) const {
+        return l[0] * offset[corners[0]] + l[1] * offset[corners[1]] + l[2] * offset[corners[2]];
+    }
+    // Rescaled point `at` lies across the side between points a and b from
+    // point c, or within the side's diametral circle (Ruppert's encroachment).
+    bool encroaches(Vec3 at, int a, int b, int c) const;
+    // The segments (indices into `segments`) joining the given pairs of
+    // points, sorted, each once.
+    std::vector<int> segments_joining(std::vector<std::array<int, 2>> sides) const;
 };
 
 FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& lines, int face);

@@ -19,8 +19,10 @@ namespace {
 constexpr int kRounds = 64;
 // A face whose refinement does not converge (seen on a torus fillet whose
 // carried pcurves stray from it) stops at this many triangles, the rest
-// counted above the tolerance, instead of filling the model's budget.
-constexpr size_t kMaxFaceTriangles = 100'000;
+// counted above the tolerance, instead of filling the model's budget; above
+// what the corpus's largest converging faces need at a tenth of the default
+// deviation (docs/results/cad.md).
+constexpr size_t kMaxFaceTriangles = 250'000;
 // Rounds a boundary side must be found encroached in before it counts as
 // one refinement does not mend (FaceCriteria::stop_when_encroached).
 constexpr int kPersistent = 8;
@@ -64,10 +66,6 @@ constexpr double kNudge = 1e-6;
 // within this fraction of the deviation tiny.
 constexpr double kTolerances = 8;
 constexpr double kTiny = 1.0 / 8;
-
-// Samples can miss a triangle's largest deviation, which lies between them:
-// the refinement aims this much below D.
-constexpr double kMargin = 0.9;
 
 // An upper bound of the distance from q to the surface: the nearest of the
 // surface points at uv and of a few damped Gauss-Newton steps from it, taken
@@ -159,13 +157,14 @@ struct Refiner {
         }
         const Vec3 centre = (uv[0] + uv[1] + uv[2]) / 3.0;
         // A triangle on the boundary keeps its segment's deviation, which the
-        // edge's own samples held below kMargin * D but the face's may find a
+        // edge's own samples held below the aim but the face's may find a
         // little above: up to D it is the edge's, not the triangle's. Not at
         // a pole, where the (u,v) samples are distorted and miss more.
         const bool pole =
             d.pole[k[0]] != Vec3{} || d.pole[k[1]] != Vec3{} || d.pole[k[2]] != Vec3{};
         const bool boundary = !pole && (t.boundary[0] || t.boundary[1] || t.boundary[2]);
-        const double target = (boundary ? 1.0 : kMargin) * c.deviation + d.tolerance;
+        const double aim = (boundary ? 1.0 : kDeviationAim) * c.deviation;
+        double excess = 0; // the largest sample's deviation over its target
         // At a pole the normal is the one facing the triangle; on a crease,
         // that of the triangle's side.
         const bool crease = s.crosses_crease(uv);
@@ -177,13 +176,14 @@ struct Refiner {
         const TriangleFrame frame(p[0], p[1], p[2]);
         const bool on_boundary = t.boundary[0] || t.boundary[1] || t.boundary[2];
         // Surface and flat triangle both affine in (u,v): their distance is
-        // largest at a corner (a boundary point off the plane), not sampled.
+        // largest at a corner (a boundary point off the plane, by its
+        // offset, which its own limit allows), not sampled.
         if (s.affine())
             for (int i = 0; i < 3; ++i)
                 v.deviation = std::max(v.deviation, distance(s.point(uv[i], spans), p[i]));
         else
             for (const Sample& smp : kSamples) {
-                if (!full && v.deviation > target) break;
+                if (!full && excess > 1) break;
                 if (smp.boundary_only && !on_boundary) continue;
                 // Boundary segments were measured with their edge.
                 if (smp.edge >= 0 && t.boundary[smp.edge]) continue;
@@ -196,11 +196,16 @@ struct Refiner {
                 // surface's points see.
                 double dev = frame.distance(s.point(q, spans));
                 const Vec3 flat = smp.l[0] * p[0] + smp.l[1] * p[1] + smp.l[2] * p[2];
+                // Above the aim only what the corners' offsets off the surface
+                // force, whatever the tolerances of the face's edges.
+                const double limit_here =
+                    aim + offset_allowance(d.offset_at(k, smp.l), c.deviation);
                 if (pole || crease)
                     dev = std::max(dev, distance_to_surface(s, spans, flat, q, 0));
-                else if (dev > target)
-                    dev = std::min(dev, distance_to_surface(s, spans, flat, q, target));
+                else if (dev > limit_here)
+                    dev = std::min(dev, distance_to_surface(s, spans, flat, q, limit_here));
                 v.deviation = std::max(v.deviation, dev);
+                excess = std::max(excess, dev / limit_here);
             }
         // The corner normals within the angle of each other, and the flat
         // triangle's within it of theirs: no fold or needle on the surface.
@@ -234,19 +239,31 @@ struct Refiner {
                 if (!small && limit.exceeded(x, n)) turn = std::max(turn, angle_between(x, n));
             }
         const bool flat = !ear && !(norm(n) > 1e-12 * longest);
-        v.badness = flat ? INFINITY : std::max(v.deviation / target, turn / c.angle);
+        v.badness = flat ? INFINITY : std::max(excess, turn / c.angle);
         v.split = v.badness > 1;
         return v;
     }
 
-    // Records t's boundary sides but those along a pole's degenerate edge,
-    // which halving would not change (all its points are the pole); false
-    // when there are none.
-    bool record_encroached(const DomainTriangle& t) {
+    // Records t's boundary sides that the point `at`, refused, encroaches;
+    // false when there are none. Not a side along a pole's degenerate edge,
+    // which halving would not change (all its points are the pole), nor,
+    // on a triangle of three mesh vertices, a side leaving a pole with `at`
+    // on t's side of it and outside its diametral circle (Ruppert's test):
+    // `at` then lies beside the degenerate edge, and halving the side would
+    // only move its other end towards the pole. (A triangle across a seam,
+    // two of its corners one vertex, has its seam sides halved.)
+    bool record_encroached(const DomainTriangle& t, Vec3 at) {
+        const auto& c = t.corners;
+        const bool seam =
+            (d.keys[c[0]] >= 0 && (d.keys[c[0]] == d.keys[c[1]] || d.keys[c[0]] == d.keys[c[2]])) ||
+            (d.keys[c[1]] >= 0 && d.keys[c[1]] == d.keys[c[2]]);
         bool any = false;
         for (int k = 0; k < 3; ++k) {
-            const int a = t.corners[(k + 1) % 3], b = t.corners[(k + 2) % 3];
+            const int a = c[(k + 1) % 3], b = c[(k + 2) % 3];
             if (!t.boundary[k] || (d.pole[a] != Vec3{} && d.pole[b] != Vec3{})) continue;
+            if (!seam && (d.pole[a] != Vec3{} || d.pole[b] != Vec3{}) &&
+                !d.encroaches(at, a, b, c[k]))
+                continue;
             auto& seen = encroached[{std::min(a, b), std::max(a, b)}];
             if (seen[1] == 0 || seen[0] != round) seen = {round, seen[1] + 1};
             any = true;
@@ -275,7 +292,7 @@ struct Refiner {
         Vec3 at = a + offset;
         int index = cdt.insert(at, 0.75 * norm(offset), t.corners[0]);
         if (index == ConstrainedTriangulation::kCrowded) return false;
-        if (index == ConstrainedTriangulation::kOutside && record_encroached(t)) return false;
+        if (index == ConstrainedTriangulation::kOutside && record_encroached(t, at)) return false;
         if (index < 0) index = cdt.insert(at = (a + b + c3) / 3.0, 1e-3 * shortest, t.corners[0]);
         if (index < 0) return false;
         SEAMLESS_CHECK(index == d.size(), "the triangulation numbers inserted points in order");
@@ -283,21 +300,6 @@ struct Refiner {
         return true;
     }
 };
-
-// The boundary segments (indices into d.segments) joining the given pairs of
-// points, sorted, each once.
-std::vector<int> segments_of(const FaceDomain& d, std::vector<std::array<int, 2>> sides) {
-    for (auto& s : sides) s = {std::min(s[0], s[1]), std::max(s[0], s[1])};
-    std::sort(sides.begin(), sides.end());
-    sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
-    std::vector<int> out;
-    for (size_t i = 0; i < d.segments.size(); ++i) {
-        const std::array<int, 2> s{std::min(d.segments[i][0], d.segments[i][1]),
-                                   std::max(d.segments[i][0], d.segments[i][1])};
-        if (std::binary_search(sides.begin(), sides.end(), s)) out.push_back(static_cast<int>(i));
-    }
-    return out;
-}
 
 // A face whose every edge is degenerate is a point in space: nothing to
 // mesh, and no neighbour shares a mesh edge with it.
@@ -384,9 +386,9 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     }
     out.crowded = stopped && tris.size() > runaway;
     if (stopped)
-        out.encroached = segments_of(d, r.encroached_sides(kPersistent));
+        out.encroached = d.segments_joining(r.encroached_sides(kPersistent));
     else if (!failing.empty())
-        out.encroached = segments_of(d, r.encroached_sides(1));
+        out.encroached = d.segments_joining(r.encroached_sides(1));
     out.judged = static_cast<long long>(judged.size()) - reused;
     for (const DomainTriangle& t : tris) {
         Verdict& v = judged[t.tag];

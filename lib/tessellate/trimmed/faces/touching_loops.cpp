@@ -71,7 +71,7 @@ struct Separation {
         m = 0;
         for (size_t i = 0; i < d.segments.size(); ++i)
             if (d.origins[i].edge == edge && movable(static_cast<int>(i)))
-                m = std::max(m, distance(surface.at(d.uv[i]).point, d.points[i]));
+                m = std::max(m, d.offset[i]);
         return m;
     }
     int previous(int p) const {
@@ -120,6 +120,7 @@ struct Separation {
     void move(const Move& m) {
         d.scaled[m.point] = m.to;
         d.uv[m.point] = {m.to.x / d.su, m.to.y / d.sv, 0};
+        d.offset[m.point] = distance(d.points[m.point], surface.point(d.uv[m.point]));
     }
 };
 
