@@ -351,7 +351,9 @@ Tessellation tessellate_brep(const Model& model, const TessellationOptions& opti
                                         " edges have a tolerance above the deviation " +
                                         std::to_string(t.stats.tolerance) + " (largest " +
                                         std::to_string(st.max_edge_tolerance) +
-                                        "): the deviation reached is at least that");
+                                        "): where an edge's curve lies farther than the "
+                                        "deviation off its faces, the deviation reached is "
+                                        "at least that distance");
     return t;
 }
 
