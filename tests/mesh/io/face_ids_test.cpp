@@ -29,6 +29,18 @@ TriangleMesh round_trip(const TriangleMesh& mesh, const std::string& name) {
     return read_mesh(path);
 }
 
+// A glTF read back (g) gives every triangle the solid of its face in the
+// mesh written (placed): `check` judges a glTF's solids apart as a PLY's.
+void check_solids_by_face(const TriangleMesh& placed, const TriangleMesh& g) {
+    REQUIRE(placed.triangle_solid.size() == placed.triangles.size());
+    REQUIRE(g.triangle_solid.size() == g.triangles.size());
+    std::map<int, int> solid_of_face;
+    for (size_t t = 0; t < placed.triangles.size(); ++t)
+        solid_of_face[placed.triangle_face[t]] = placed.triangle_solid[t];
+    for (size_t t = 0; t < g.triangles.size(); ++t)
+        CHECK(g.triangle_solid[t] == solid_of_face.at(g.triangle_face[t]));
+}
+
 void check_same_ids(const TriangleMesh& a, const TriangleMesh& b) {
     REQUIRE(b.triangles == a.triangles);
     REQUIRE(b.positions.size() == a.positions.size());
@@ -120,15 +132,7 @@ TEST_CASE("glTF face and solid extras read back as face and solid ids", "[mesh][
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
     CHECK(a == b);
-    // Each triangle's solid is its face's, as placed_mesh gave it: `check`
-    // judges a glTF's solids apart as a PLY's.
-    REQUIRE(placed.triangle_solid.size() == placed.triangles.size());
-    REQUIRE(g.triangle_solid.size() == g.triangles.size());
-    std::map<int, int> solid_of_face;
-    for (size_t t = 0; t < placed.triangles.size(); ++t)
-        solid_of_face[placed.triangle_face[t]] = placed.triangle_solid[t];
-    for (size_t t = 0; t < g.triangles.size(); ++t)
-        CHECK(g.triangle_solid[t] == solid_of_face.at(g.triangle_face[t]));
+    check_solids_by_face(placed, g);
     // Without face ids none are read, nor when one primitive lacks them.
     TriangleMesh bare = placed;
     bare.triangle_face.clear();
@@ -201,12 +205,7 @@ TEST_CASE("Face ids of the corpus's assembly and a coloured part round-trip",
         }
         // glTF: every triangle's solid is its face's (as1: 18 solids).
         const TriangleMesh g = round_trip(placed, "corpus.glb");
-        REQUIRE(g.triangle_solid.size() == g.triangles.size());
-        std::map<int, int> solid_of_face;
-        for (size_t t = 0; t < placed.triangles.size(); ++t)
-            solid_of_face[placed.triangle_face[t]] = placed.triangle_solid[t];
-        for (size_t t = 0; t < g.triangles.size(); ++t)
-            CHECK(g.triangle_solid[t] == solid_of_face.at(g.triangle_face[t]));
+        check_solids_by_face(placed, g);
         CHECK(std::set<int>(g.triangle_solid.begin(), g.triangle_solid.end()).size() ==
               std::set<int>(placed.triangle_solid.begin(), placed.triangle_solid.end()).size());
     }

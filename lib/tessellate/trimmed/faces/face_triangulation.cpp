@@ -176,11 +176,10 @@ struct Refiner {
         const TriangleFrame frame(p[0], p[1], p[2]);
         const bool on_boundary = t.boundary[0] || t.boundary[1] || t.boundary[2];
         // Surface and flat triangle both affine in (u,v): their distance is
-        // largest at a corner (a boundary point off the plane, by its
-        // offset, which its own limit allows), not sampled.
+        // largest at a corner, its offset off the plane (which its own limit
+        // allows), not sampled.
         if (s.affine())
-            for (int i = 0; i < 3; ++i)
-                v.deviation = std::max(v.deviation, distance(s.point(uv[i], spans), p[i]));
+            v.deviation = std::max({d.offset[k[0]], d.offset[k[1]], d.offset[k[2]]});
         else
             for (const Sample& smp : kSamples) {
                 if (!full && excess > 1) break;
