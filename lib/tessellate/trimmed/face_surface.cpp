@@ -102,4 +102,21 @@ SurfacePoint FaceSurface::at(Vec3 uv, SpanPatches& spans) const {
     return continued(*s_, wrapped(uv), [&](double u, double v) { return spans.at(u, v); });
 }
 
+double distance_to_surface(const FaceSurface& s, SpanPatches& spans, Vec3 q, Vec3 uv,
+                           double enough) {
+    SurfacePoint p = s.at(uv, spans);
+    double best = distance(p.point, q);
+    for (int it = 0; it < 4 && best > enough; ++it) {
+        const Vec3 r = q - p.point;
+        const double a = dot(p.du, p.du), b = dot(p.du, p.dv), c = dot(p.dv, p.dv);
+        const double damp = 1e-9 * (a + c), ru = dot(r, p.du), rv = dot(r, p.dv);
+        const double det = (a + damp) * (c + damp) - b * b;
+        if (!(det > 0)) break;
+        uv = uv + Vec3{((c + damp) * ru - b * rv) / det, ((a + damp) * rv - b * ru) / det, 0};
+        p = s.at(uv, spans);
+        best = std::min(best, distance(p.point, q));
+    }
+    return best;
+}
+
 } // namespace seamless

@@ -49,4 +49,13 @@ class FaceSurface {
     std::vector<double> creases_u_, creases_v_;
 };
 
+// An upper bound of the distance from q to the surface: the nearest of the
+// surface points at uv and of a few damped Gauss-Newton steps from it, taken
+// while above `enough`. Where the parametrisation is distorted (towards a
+// pole or apex it collapses) the (u,v) image of a triangle strays from it
+// though the triangle lies on the surface: its flat points are measured
+// against the surface instead.
+double distance_to_surface(const FaceSurface& s, SpanPatches& spans, Vec3 q, Vec3 uv,
+                           double enough);
+
 } // namespace seamless

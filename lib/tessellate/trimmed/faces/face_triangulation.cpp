@@ -67,29 +67,6 @@ constexpr double kNudge = 1e-6;
 constexpr double kTolerances = 8;
 constexpr double kTiny = 1.0 / 8;
 
-// An upper bound of the distance from q to the surface: the nearest of the
-// surface points at uv and of a few damped Gauss-Newton steps from it, taken
-// while above `enough`. Where the parametrisation is distorted (towards a
-// pole or apex it collapses) the (u,v) image of a triangle strays from it
-// though the triangle lies on the surface: its flat points are measured
-// against the surface instead.
-double distance_to_surface(const FaceSurface& s, SpanPatches& spans, Vec3 q, Vec3 uv,
-                           double enough) {
-    SurfacePoint p = s.at(uv, spans);
-    double best = distance(p.point, q);
-    for (int it = 0; it < 4 && best > enough; ++it) {
-        const Vec3 r = q - p.point;
-        const double a = dot(p.du, p.du), b = dot(p.du, p.dv), c = dot(p.dv, p.dv);
-        const double damp = 1e-9 * (a + c), ru = dot(r, p.du), rv = dot(r, p.dv);
-        const double det = (a + damp) * (c + damp) - b * b;
-        if (!(det > 0)) break;
-        uv = uv + Vec3{((c + damp) * ru - b * rv) / det, ((a + damp) * rv - b * ru) / det, 0};
-        p = s.at(uv, spans);
-        best = std::min(best, distance(p.point, q));
-    }
-    return best;
-}
-
 // Thin in the scaled domain: between loops that run along each other
 // (touching_loops.h) there is no room for a point whatever the 3D corners,
 // a tolerance apart, make of its normal.
