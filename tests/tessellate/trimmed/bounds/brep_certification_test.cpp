@@ -2,6 +2,7 @@
 // The certified bound of trimmed faces (brep_certification.h) on the hard
 // cases: it holds (every sampled distance between a triangle and its exact
 // analytic surface is below it) everywhere, and is tight.
+#include <tessellate/trimmed/bounds/bound_cases.h>
 #include <tessellate/trimmed/brep_cases.h>
 
 #include <seamless/tessellate/tessellation.h>
@@ -147,17 +148,8 @@ TEST_CASE("trimmed faces: the certified bound is the largest full triangle bound
         const Tessellation t = tessellate(c.model, o);
         const TriangleMesh& m = t.mesh;
         double full = 0;
-        for (int f = 0; f < m.triangle_count(); ++f) {
-            const BSplineSurface& s = c.model.surfaces[m.triangle_surface[f]];
-            const FaceSurface face(s);
-            const TriangleBound bound(s, face.closed_u(), face.closed_v());
-            std::array<UV, 3> uv;
-            std::array<Vec3, 3> Q;
-            for (int k = 0; k < 3; ++k)
-                uv[k] = {m.corner_uvs[f][k][0], m.corner_uvs[f][k][1]},
-                Q[k] = m.positions[m.triangles[f][k]];
-            full = std::max(full, bound(uv, Q));
-        }
+        for (int f = 0; f < m.triangle_count(); ++f)
+            full = std::max(full, mesh_triangle_bound(c.model, m, f).bound);
         CHECK(t.stats.brep.bound_triangles == full);
         o.threads = 2;
         const Tessellation t2 = tessellate(c.model, o);

@@ -2,6 +2,7 @@
 // By hand: SEAMLESS_DIAGNOSE=model.stp test_tessellate "[.diagnose]" prints
 // the triangles with the largest certified bounds (triangle_bound.h) beside
 // their sampled parametric distance |S(x) - L(x)|.
+#include <tessellate/trimmed/bounds/bound_cases.h>
 #include <tessellate/trimmed/brep_cases.h>
 
 #include <seamless/model/model.h>
@@ -36,14 +37,10 @@ TEST_CASE("trimmed faces: the largest certified triangle bounds of a model", "[.
     };
     std::vector<Row> rows;
     for (int f = 0; f < m.triangle_count(); ++f) {
-        const BSplineSurface& s = model.surfaces[m.triangle_surface[f]];
-        const FaceSurface face(s);
-        const TriangleBound bound(s, face.closed_u(), face.closed_v());
-        std::array<UV, 3> uv;
-        std::array<Vec3, 3> Q;
-        for (int k = 0; k < 3; ++k)
-            uv[k] = {m.corner_uvs[f][k][0], m.corner_uvs[f][k][1]},
-            Q[k] = m.positions[m.triangles[f][k]];
+        const FaceSurface face(model.surfaces[m.triangle_surface[f]]);
+        const test::MeshTriangleBound t = test::mesh_triangle_bound(model, m, f);
+        const std::array<UV, 3>& uv = t.uv;
+        const std::array<Vec3, 3>& Q = t.Q;
         double sampled = 0;
         for (int a = 0; a <= 8; ++a)
             for (int b = 0; a + b <= 8; ++b) {
@@ -53,7 +50,7 @@ TEST_CASE("trimmed faces: the largest certified triangle bounds of a model", "[.
                 sampled = std::max(sampled,
                                    distance(face.at(x).point, l0 * Q[0] + l1 * Q[1] + l2 * Q[2]));
             }
-        rows.push_back({bound(uv, Q), sampled, f});
+        rows.push_back({t.bound, sampled, f});
     }
     std::sort(rows.begin(), rows.end(),
               [](const Row& a, const Row& b) { return a.bound > b.bound; });

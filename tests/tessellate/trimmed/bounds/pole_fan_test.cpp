@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+#include <tessellate/trimmed/bounds/bound_cases.h>
+
 #include <seamless/tessellate/trimmed/bounds/pole_fan.h>
 #include <seamless/tessellate/trimmed/faces/triangle_distance.h>
 
@@ -12,28 +14,15 @@ using namespace seamless;
 namespace {
 
 // A cone with its apex at the origin, radius v at height v, v in [0, 1]: the
-// circle a rational quadratic in u (closed, [0, 1]), a line in v; the side
-// v = 0 collapses to the apex.
-BSplineSurface cone() {
-    BSplineSurface s;
-    s.degree_u = 2, s.degree_v = 1;
-    s.size_u = 9, s.size_v = 2;
-    s.knots_u = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
-    s.knots_v = {0, 0, 1, 1};
-    const double r = std::sqrt(0.5);
-    const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
-    for (int i = 0; i < 9; ++i)
-        for (int j = 0; j < 2; ++j) {
-            s.points.push_back({j * cx[i], j * cy[i], 1.0 * j});
-            s.weights.push_back(i % 2 ? r : 1.0);
-        }
-    return s;
+// side v = 0 collapses to the apex.
+BSplineSurface cone_apex_at_origin() {
+    return test::revolved_segment(0, 0, 1, 1);
 }
 
 } // namespace
 
 TEST_CASE("a pole fan is paired geometrically also with its apex corners a rounding off the side") {
-    const BSplineSurface s = cone();
+    const BSplineSurface s = cone_apex_at_origin();
     const TriangleBound bound(s, true, false);
     const double h = 0.2;
     const int n = 8;

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+#include <tessellate/trimmed/bounds/bound_cases.h>
+
 #include <seamless/tessellate/trimmed/bounds/chord_bound.h>
 #include <seamless/tessellate/trimmed/bounds/triangle_bound.h>
 #include <seamless/tessellate/trimmed/face_surface.h>
@@ -15,23 +17,9 @@ using namespace seamless;
 
 namespace {
 
-// A cylinder of radius 1 and height 2 as OpenCASCADE writes one: the circle a
-// rational quadratic in u with double knots (a C0 basis, a C1 curve), a
-// line in v.
+// A cylinder of radius 1 and height 2 as OpenCASCADE writes one.
 BSplineSurface cylinder() {
-    BSplineSurface s;
-    s.degree_u = 2, s.degree_v = 1;
-    s.size_u = 9, s.size_v = 2;
-    s.knots_u = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
-    s.knots_v = {0, 0, 1, 1};
-    const double r = std::sqrt(0.5);
-    const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
-    for (int i = 0; i < 9; ++i)
-        for (int j = 0; j < 2; ++j) {
-            s.points.push_back({cx[i], cy[i], 2.0 * j});
-            s.weights.push_back(i % 2 ? r : 1.0);
-        }
-    return s;
+    return test::revolved_segment(1, 0, 1, 2);
 }
 
 // A bicubic B-spline with random heights over [0,3]^2 and interior knots of
