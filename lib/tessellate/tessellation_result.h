@@ -44,7 +44,11 @@ struct BRepStats {
     // edge chords against the 3D curves, and triangles against the surface at
     // barycentric samples mapped through (u,v). Measured, not certified.
     double max_deviation = 0;
-    double max_edge_tolerance = 0; // largest edge tolerance; above D it bounds what is reachable
+    double max_edge_tolerance = 0; // largest edge tolerance, as the file claims it
+    // Largest measured distance between a boundary point (on its edge's 3D
+    // curve) and its face's surface at the pcurve's point: the B-rep's own
+    // gap, which no mesh of both faces closes to below it.
+    double max_edge_offset = 0;
     int edges_above_tolerance = 0; // edges whose tolerance exceeds D
     bool certified = false;        // max_deviation is a sampled measure, not a bound
     // Certified bounds (TessellationOptions::certify; brep_certification.h):

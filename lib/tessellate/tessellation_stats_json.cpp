@@ -64,6 +64,7 @@ std::string tessellation_stats_json(const TessellationStats& s, const StatsSourc
                       {"face_seconds", b.face_seconds},
                       {"mesh_seconds", b.mesh_seconds},
                       {"max_edge_tolerance", b.max_edge_tolerance},
+                      {"max_edge_offset", b.max_edge_offset},
                       {"edges_above_tolerance", b.edges_above_tolerance},
                       {"warnings", b.warnings}};
     }

@@ -97,10 +97,34 @@ TEST_CASE("boundary offsets: loose edge tolerances leave the mesh within D", "[b
         o.threads = 1;
         const Tessellation t = tessellate(lune(0.5, 1, shift, 5 * D), o);
         CHECK(t.stats.brep.edges_above_tolerance == 3);
+        // The stats report the measured offset, not the claimed tolerance.
+        CHECK(std::abs(t.stats.brep.max_edge_offset - std::abs(shift)) < 1e-12);
         CHECK(t.stats.brep.above_tolerance == 0);
         CHECK(t.stats.brep.max_deviation <= D);
         CHECK(sphere_deviation(t.mesh) <= D);
     }
+}
+
+TEST_CASE("boundary offsets: a gap above D is reported and the mesh stays within D beyond it",
+          "[brep]") {
+    // Edge curves 3 D off the sphere: no mesh of the face is within D of it
+    // at its boundary; the stats and the warning say how far, and inside the
+    // face the triangles come back to the surface.
+    const double D = 1e-3, shift = 3 * D;
+    TessellationOptions o;
+    o.tolerance = D;
+    o.threads = 1;
+    const Tessellation t = tessellate(lune(0.5, 1, shift, 1e-9), o);
+    const BRepStats& b = t.stats.brep;
+    CHECK(b.edges_above_tolerance == 0);
+    CHECK(std::abs(b.max_edge_offset - shift) < 1e-12);
+    const double measured = sphere_deviation(t.mesh);
+    CHECK(measured >= shift * (1 - 1e-9));
+    CHECK(measured <= shift + D);
+    CHECK(b.max_deviation <= shift + D);
+    REQUIRE(b.warnings.size() == 1);
+    CHECK(b.warnings[0].find("lie up to 0.003 off their faces") != std::string::npos);
+    CHECK(b.warnings[0].find("at least that") != std::string::npos);
 }
 
 TEST_CASE("boundary offsets: a polar lune's needles at the pole are mended inside it", "[brep]") {
