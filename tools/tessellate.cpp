@@ -218,7 +218,9 @@ int run_tessellate(const TessellateArgs& args) {
 void add_tessellate(CLI::App& app, Action& action) {
     auto* cmd = app.add_subcommand(
         "tessellate", "Triangulate a model into a crack-free mesh (planar subpatches, "
-                      "straight-midpoint edge vertices, fans of four or more triangles)");
+                      "straight-midpoint edge vertices, fans of four or more triangles; with "
+                      "--tolerance, two where certified; trimmed B-rep faces: shared edge "
+                      "polylines and constrained triangulations)");
     auto args = std::make_shared<TessellateArgs>();
     add_tessellate_options(cmd, *args);
     cmd->callback([&action, args] { action = [args] { return run_tessellate(*args); }; });

@@ -38,7 +38,8 @@ struct TessellationOptions {
     // is refused with an InputError instead of filling the memory (peak memory
     // is about 0.7 KB per triangle: teapot at 6.5e-5, 1.14 M triangles, 779
     // MB). Counted during the subdivision as four triangles per subpatch (a
-    // fan has at least four), and checked again on the final mesh.
+    // fan has at least four; two with a tolerance, where a subpatch may be
+    // two triangles: Subpatch::diagonal), and checked again on the final mesh.
     std::int64_t max_triangles = 10'000'000;
     // Called with the fraction done (0..1), from any thread, a few hundred
     // times at most per pass (pass_progress.h); empty: nothing is reported.

@@ -88,9 +88,10 @@ TessellationPass::TessellationPass(const Model& model, const std::vector<BezierP
       stats_(pass_stats(model, patches, options)), scale_(magnitude(control_box(model))),
       keep_(options.tolerance > 0),
       subdivision_(patches, subdivision_options(stats_, options), cost_deviation(stats_),
-                   options.threads, std::max<std::int64_t>(options.max_triangles, 0) / 4, keep_),
-      fans_(patches, scale_, stats_.tolerance, options.threads), changed_(patches.size(), 1),
-      progress_(options.progress, 0) {
+                   options.threads,
+                   std::max<std::int64_t>(options.max_triangles, 0) / (keep_ ? 2 : 4), keep_),
+      fans_(patches, scale_, stats_.tolerance, options.angle, options.threads),
+      changed_(patches.size(), 1), progress_(options.progress, 0) {
     // Shared boundaries agree to the seam tolerance, and at least to the
     // rounding of knot insertion, which scales with the coordinates'
     // magnitude, not with d_max: a model far from the origin needs the larger.

@@ -69,6 +69,7 @@ struct TessellationStats {
     int seams = 0, seam_vertices = 0;     // boundaries matched geometrically (edge_graph.h)
     int flipped_surfaces = 0;             // turned by orient_surfaces
     int nonplanar_subpatches = 0;         // stopped by max_depth
+    int two_triangle_subpatches = 0;      // Subpatch::diagonal: two triangles, not a fan
     int max_depth = 0;                    // deepest subpatch
     double d_max = 0, eps1 = 0, eps2 = 0; // eps: 0 when the planarity test was off
     double seam_tolerance = 0;

@@ -21,6 +21,7 @@ std::string tessellation_stats_json(const TessellationStats& s, const StatsSourc
         {"flipped_surfaces", s.flipped_surfaces},
         {"seam_tolerance", s.seam_tolerance},
         {"nonplanar_subpatches", s.nonplanar_subpatches},
+        {"two_triangle_subpatches", s.two_triangle_subpatches},
         {"max_depth", s.max_depth},
         {"d_max", s.d_max},
         {"eps1", s.eps1},

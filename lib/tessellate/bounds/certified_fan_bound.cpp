@@ -120,7 +120,8 @@ double certified_fan_bound_at(const Fan& fan, int m, int steps, double enough, P
 } // namespace
 
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
-                           std::span<const RingPoint> ring, double scale, double target) {
+                           std::span<const RingPoint> ring, double scale, double target,
+                           bool refine) {
     const size_t n = ring.size();
     SEAMLESS_CHECK(n >= 3, "a fan ring of fewer than three points");
     // On the heap (400 KB), one thread_local access (a call in a shared library).
@@ -149,6 +150,7 @@ double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int dep
                                      allowance);
             if (coarse <= target) return coarse;
         }
+        if (!refine) return coarse;
     }
     // m: the tangential remainder of an unrefined fan triangle of the subpatch
     // against its normal remainder (about the geometric deviation).

@@ -79,9 +79,10 @@ struct RingPoint {
 // power-basis evaluator's proven rounding (power_basis.h). `target` > 0 (a
 // requested tolerance): a bound at or below it is enough, so the coarsest
 // refinement (m = 4) is tried first and the finer one only when it ends above
-// `target`.
+// `target`; `refine` false: not even then (a trial whose failure is cheap).
 double certified_fan_bound(const BezierPatch& patch, const ParamRect& r, int depth, Vec3 centre,
-                           std::span<const RingPoint> ring, double scale, double target = 0);
+                           std::span<const RingPoint> ring, double scale, double target = 0,
+                           bool refine = true);
 
 // Bounds on |S_ss| and |S_tt| over the local [0,1]^2 of `b` (the differenced
 // control net, quotient rule for rational patches): the remainders a halving

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Step (d2) of a tessellation pass: every fan's certified two-way distance to
 // its subpatch (error_bound.h), each on its own, in parallel; a bound of an
-// earlier pass for the same subpatch, centre and ring is reused.
+// earlier pass for the same subpatch, centre and ring is reused. With a
+// tolerance, a subpatch whose ring is its four corners becomes two triangles
+// where they meet the tolerance and the angle (Subpatch::diagonal).
 #pragma once
 
 #include <seamless/base/key_table.h>
@@ -25,6 +27,7 @@ struct KnownBound {
     int ring_first = 0, ring_size = 0;
     Vec3 centre;
     double bound = 0;
+    signed char diagonal = -1; // Subpatch::diagonal
 };
 // One patch's known bounds by subpatch_key, their rings end to end.
 struct KnownBounds {
@@ -36,13 +39,14 @@ struct KnownBounds {
 // patch's known bounds (the earlier passes').
 class FanCertification {
   public:
-    // `scale` and `tolerance` as certified_fan_bound's.
+    // `scale` and `tolerance` as certified_fan_bound's; `angle` (radians, 0:
+    // none) as TessellationOptions::angle.
     FanCertification(const std::vector<BezierPatch>& patches, double scale, double tolerance,
-                     int threads)
-        : patches_(patches), scale_(scale), tolerance_(tolerance), threads_(threads),
+                     double angle, int threads)
+        : patches_(patches), scale_(scale), tolerance_(tolerance), angle_(angle), threads_(threads),
           known_(patches.size()) {}
 
-    // Subpatch::error_bound of every subpatch, from its ring and centre vertex
+    // Subpatch::error_bound and diagonal of every subpatch, from its ring and centre vertex
     // (rings.vertices[].vertex, rings.centre into `positions`); per subpatch,
     // whether its bound was computed (not known from an earlier pass).
     // `same` (may be null): per patch, whether its subpatches, rings and
@@ -71,7 +75,7 @@ class FanCertification {
 
   private:
     const std::vector<BezierPatch>& patches_;
-    double scale_, tolerance_;
+    double scale_, tolerance_, angle_;
     int threads_;
     std::vector<KnownBounds> known_;
 };

@@ -72,9 +72,11 @@ namespace {
 // write_fans' steps over one pass's Tessellation.
 class FanWriter {
   public:
-    FanWriter(const FanSources& in, const std::vector<Vec3>& positions, Tessellation& out)
-        : in_(in), rings_(*in.rings), positions_(positions), out_(out), mesh_(out.mesh),
-          count_(out.subpatches.size()) {}
+    // `remap`: each vertex's index in `positions` (empty: the numbering's).
+    FanWriter(const FanSources& in, const std::vector<Vec3>& positions,
+              const std::vector<int>& remap, Tessellation& out)
+        : in_(in), rings_(*in.rings), positions_(positions), remap_(remap), out_(out),
+          mesh_(out.mesh), count_(out.subpatches.size()) {}
 
     // Each subpatch's triangle count (none where two ring vertices are one)
     // and first triangle; where each fan's nodes start (one more entry: the
@@ -99,9 +101,12 @@ class FanWriter {
         return bb;
     }
 
+    int vertex(int v) const { return remap_.empty() ? v : remap_[v]; }
+
     const FanSources& in_;
     const SubpatchRings& rings_;
     const std::vector<Vec3>& positions_;
+    const std::vector<int>& remap_;
     Tessellation& out_;
     TriangleMesh& mesh_;
     size_t count_;
@@ -111,16 +116,16 @@ class FanWriter {
 std::vector<int> FanWriter::count_triangles() {
     const std::vector<int>& ring_start = rings_.start;
     const std::vector<RingVertex>& ring = rings_.vertices;
-    pull_blocks(static_cast<int>(count_), kSubpatchBlock, in_.threads, nullptr,
-                [&](int begin, int end) {
-                    for (int i = begin; i < end; ++i) {
-                        const int first = ring_start[i], n = ring_start[i + 1] - first;
-                        int c = 0;
-                        for (int k = 0; k < n; ++k)
-                            c += ring[first + k].vertex != ring[first + (k + 1) % n].vertex;
-                        out_.subpatches[i].triangle_count = c;
-                    }
-                });
+    pull_blocks(
+        static_cast<int>(count_), kSubpatchBlock, in_.threads, nullptr, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i) {
+                const int first = ring_start[i], n = ring_start[i + 1] - first;
+                int c = 0;
+                for (int k = 0; k < n; ++k)
+                    c += ring[first + k].vertex != ring[first + (k + 1) % n].vertex;
+                out_.subpatches[i].triangle_count = out_.subpatches[i].diagonal >= 0 ? 2 : c;
+            }
+        });
     TessellationStats& st = out_.stats;
     std::vector<int> fan_node(count_ + 1);
     fan_node[0] = static_cast<int>(out_.trees.nodes.size());
@@ -131,6 +136,7 @@ std::vector<int> FanWriter::count_triangles() {
         fan_node[i + 1] = fan_node[i] + attached_nodes(sp.triangle_count);
         st.max_depth = std::max(st.max_depth, sp.depth);
         if (!sp.planar) ++st.nonplanar_subpatches;
+        if (sp.diagonal >= 0) ++st.two_triangle_subpatches;
     }
     return fan_node;
 }
@@ -184,16 +190,33 @@ std::vector<int> FanWriter::write_triangles(const std::vector<int>& fan_node) {
                 const double tc = 0.5 * (param_of(r.t0) + param_of(r.t1));
                 const int first = ring_start[i], n = ring_start[i + 1] - first;
                 int f = sp.first_triangle;
-                for (int k = 0; k < n; ++k) {
+                const auto uv = [&b](const RingVertex& v) {
+                    return std::array<double, 2>{b.u_at(v.fs), b.v_at(v.ft)};
+                };
+                if (sp.diagonal >= 0) {
+                    // Two triangles from corner `diagonal` (Subpatch::diagonal).
+                    for (int half = 0; half < 2; ++half) {
+                        const int k[3] = {first + sp.diagonal, first + sp.diagonal + 1 + half,
+                                          first + (sp.diagonal + 2 + half) % 4};
+                        mesh_.triangles[f] = {vertex(ring[k[0]].vertex), vertex(ring[k[1]].vertex),
+                                              vertex(ring[k[2]].vertex)};
+                        mesh_.triangle_surface[f] = b.surface;
+                        mesh_.corner_normals[f] = {normals.ring[k[0]], normals.ring[k[1]],
+                                                   normals.ring[k[2]]};
+                        mesh_.corner_uvs[f] = {uv(ring[k[0]]), uv(ring[k[1]]), uv(ring[k[2]])};
+                        ++f;
+                    }
+                }
+                for (int k = 0; k < n && sp.diagonal < 0; ++k) {
                     const RingVertex &a = ring[first + k], &c = ring[first + (k + 1) % n];
                     if (a.vertex == c.vertex) continue;
-                    mesh_.triangles[f] = {rings_.centre[i], a.vertex, c.vertex};
+                    mesh_.triangles[f] = {vertex(rings_.centre[i]), vertex(a.vertex),
+                                          vertex(c.vertex)};
                     mesh_.triangle_surface[f] = b.surface;
                     mesh_.corner_normals[f] = {normals.centre[i], normals.ring[first + k],
                                                normals.ring[first + (k + 1) % n]};
-                    mesh_.corner_uvs[f] = {std::array<double, 2>{b.u_at(sc), b.v_at(tc)},
-                                           std::array<double, 2>{b.u_at(a.fs), b.v_at(a.ft)},
-                                           std::array<double, 2>{b.u_at(c.fs), b.v_at(c.ft)}};
+                    mesh_.corner_uvs[f] = {std::array<double, 2>{b.u_at(sc), b.v_at(tc)}, uv(a),
+                                           uv(c)};
                     ++f;
                 }
                 // Proposition 11, remark 2: the triangles become the leaves below the subpatch.
@@ -220,10 +243,41 @@ void FanWriter::patch_hulls(const std::vector<int>& added) {
     });
 }
 
+// The centres of subpatches written as two triangles are no vertices: the
+// others' new indices (empty when there are none) and positions. Centres are
+// numbered in subpatch order (vertex_numbering.h), so the dropped ones come
+// sorted.
+std::vector<int> drop_quad_centres(const std::vector<Subpatch>& subpatches,
+                                   const SubpatchRings& rings, std::vector<Vec3>& positions,
+                                   int threads) {
+    std::vector<int> dropped;
+    for (size_t i = 0; i < subpatches.size(); ++i)
+        if (subpatches[i].diagonal >= 0) dropped.push_back(rings.centre[i]);
+    if (dropped.empty()) return {};
+    const int nv = static_cast<int>(positions.size());
+    std::vector<int> remap(nv);
+    size_t d = 0;
+    for (int v = 0; v < nv; ++v) {
+        while (d < dropped.size() && dropped[d] < v) ++d;
+        remap[v] = d < dropped.size() && dropped[d] == v ? -1 : v - static_cast<int>(d);
+    }
+    std::vector<Vec3> kept;
+    reserve_huge(kept, nv - dropped.size(), threads);
+    kept.resize(nv - dropped.size());
+    parallel_chunks(nv, threads, [&](int begin, int end) {
+        for (int v = begin; v < end; ++v)
+            if (remap[v] >= 0) kept[remap[v]] = positions[v];
+    });
+    positions = std::move(kept);
+    return remap;
+}
+
 } // namespace
 
 void write_fans(const FanSources& in, std::vector<Vec3>&& positions, Tessellation& out) {
-    FanWriter writer(in, positions, out);
+    const std::vector<int> remap =
+        drop_quad_centres(out.subpatches, *in.rings, positions, in.threads);
+    FanWriter writer(in, positions, remap, out);
     const std::vector<int> fan_node = writer.count_triangles();
     writer.grow(fan_node);
     // Hulls bottom-up: each fan's subtree as it is written, then each patch's

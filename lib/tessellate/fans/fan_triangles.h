@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Steps (d3) and (d4) of a tessellation pass (paper section 6): each planar
-// subpatch becomes the fan from its centre over its ring, with the exact
-// surface normals and (u, v) at the corners, and the fan hangs below the
-// subpatch in its binary patch tree (Proposition 11, remark 2).
+// subpatch becomes the fan from its centre over its ring (or, with a
+// tolerance, two triangles over its four corners where they are certified
+// within it), with the exact surface normals and (u, v) at the corners, and
+// the triangles hang below the subpatch in its binary patch tree
+// (Proposition 11, remark 2).
 #pragma once
 
 #include <seamless/spline/bezier_patch.h>
@@ -39,9 +41,12 @@ struct FanSources {
 };
 
 // The fan triangles in subpatch order into out.mesh, none where two ring
-// vertices are one (a pole); Subpatch::first_triangle and triangle_count; the
+// vertices are one (a pole), or a subpatch's two triangles
+// (Subpatch::diagonal); Subpatch::first_triangle and triangle_count; the
 // triangles as leaves of out.trees and every node's triangle_hull;
-// out.mesh.positions = `positions`; stats max_depth and nonplanar_subpatches.
+// out.mesh.positions = `positions` without the centres of two-triangle
+// subpatches; stats max_depth, nonplanar_subpatches and
+// two_triangle_subpatches.
 // Counted per subpatch, placed by prefix sums, written in parallel: the same
 // arrays for any thread count.
 void write_fans(const FanSources& in, std::vector<Vec3>&& positions, Tessellation& out);

@@ -87,6 +87,10 @@ struct Subpatch {
     // Filled by the triangulation: its fan triangles and their error bound.
     int first_triangle = 0, triangle_count = 0;
     double error_bound = 0;
+    // With a tolerance, where the ring is the four corners alone: the two
+    // triangles split along corners 0-2 (0) or 1-3 (1) in place of the fan,
+    // when they meet the tolerance and angle (fan_certification.h); -1: the fan.
+    signed char diagonal = -1;
 };
 
 // Identity of the subpatch `r` of patch `patch` (a hash: a collision only

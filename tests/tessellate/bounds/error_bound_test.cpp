@@ -128,9 +128,11 @@ Model quarter_cylinder() {
 // The bound's claim, sampled: every point of a subpatch's triangles is within
 // the subpatch's bound of its Bezier patch, and every point of a subpatch is
 // within the largest bound of its patch of the patch's triangles. Checks
-// sampled <= bound; returns the largest sampled / bound.
+// sampled <= bound on every stride-th subpatch and on each patch's first
+// subpatch written as two triangles (Subpatch::diagonal); returns the largest
+// sampled / bound and how many of those two-triangle subpatches were checked.
 void check_subpatches(const Model& m, const TessellationOptions& opt, int grid, int stride,
-                      double& worst_ratio) {
+                      double& worst_ratio, int* quads_checked = nullptr) {
     const auto patches = bezier_patches(m);
     const Tessellation t = tessellate(m, patches, opt);
     std::vector<std::vector<Tri>> patch_tris(patches.size());
@@ -146,8 +148,16 @@ void check_subpatches(const Model& m, const TessellationOptions& opt, int grid, 
         }
     }
     worst_ratio = 0;
-    for (size_t i = 0; i < t.subpatches.size(); i += stride) {
+    std::vector<char> quad_seen(patches.size(), 0);
+    for (size_t i = 0; i < t.subpatches.size(); ++i) {
         const Subpatch& sp = t.subpatches[i];
+        const bool first_quad = sp.diagonal >= 0 && !quad_seen[sp.patch];
+        if (i % stride != 0 && !first_quad) continue;
+        if (sp.diagonal >= 0) {
+            REQUIRE(sp.triangle_count == 2);
+            quad_seen[sp.patch] = 1;
+            if (quads_checked) ++*quads_checked;
+        }
         const BezierPatch& b = patches[sp.patch];
         // Triangles -> patch (the closest point is near the subpatch).
         const double ws = param_of(sp.rect.s1) - param_of(sp.rect.s0);
@@ -203,7 +213,9 @@ TEST_CASE("the error bound holds by sampling on the teapot, spoon, torus and cyl
         CHECK(r > 0.25);
         TessellationOptions tol;
         tol.tolerance = 1e-3 * d_max(m);
-        check_subpatches(m, tol, 4, 211, r);
+        int quads = 0;
+        check_subpatches(m, tol, 4, 211, r, &quads);
+        CHECK(quads > 0);
     }
     double r = 0;
     check_subpatches(quarter_cylinder(), {}, 8, 1, r);

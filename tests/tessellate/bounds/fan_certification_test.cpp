@@ -33,7 +33,7 @@ TEST_CASE("bounds kept with their rings are found again, kept without computed a
         vr.alias = &in.graph.alias;
         vr.straight_segments = false;
         number_vertices(in.t.subpatches, in.leaf_start, in.graph, threads, vr, numbered);
-        FanCertification fans(patches, 1.0, tolerance, threads);
+        FanCertification fans(patches, 1.0, tolerance, 0, threads);
         std::vector<Subpatch> first = in.t.subpatches;
         const std::vector<char> fresh = fans.certify(numbered, vr.positions, nullptr, first);
         CHECK(std::count(fresh.begin(), fresh.end(), 1) == static_cast<long>(first.size()));
