@@ -65,7 +65,8 @@ void whole_surfaces_brep(Model& m) {
 }
 
 nlohmann::json stats_json(const DeviationStats& s) {
-    return {{"max", s.max}, {"rms", s.rms}, {"samples", s.samples}};
+    return {
+        {"max", s.max}, {"rms", s.rms}, {"samples", s.samples}, {"at", {s.at.x, s.at.y, s.at.z}}};
 }
 
 int run(int argc, char** argv) {

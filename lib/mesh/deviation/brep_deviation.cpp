@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 namespace seamless {
 namespace {
@@ -61,11 +62,12 @@ DeviationStats faces_to_mesh(const Model& model, const TriangleMesh& mesh,
                 s.regions[i] = std::make_unique<FaceRegion>(model, i, region_options);
                 face_parts[i] = face_samples(model, i, *s.regions[i], sampling);
                 if (!to_mesh.empty())
-                    for (const FaceSample& f : face_parts[i]) acc[i].add(to_mesh(f.point));
+                    for (const FaceSample& f : face_parts[i]) acc[i].add(to_mesh(f.point), f.point);
             } else {
                 edge_parts[i - nf] = edge_samples(model, i - nf, sampling);
                 if (!to_mesh.empty())
-                    for (const EdgeSample& e : edge_parts[i - nf]) acc[i].add(to_mesh(e.point));
+                    for (const EdgeSample& e : edge_parts[i - nf])
+                        acc[i].add(to_mesh(e.point), e.point);
             }
         }
     });
@@ -86,7 +88,18 @@ struct FaceSearch {
     // than twice its chord), so a sample farther than best + it cannot lead
     // to a closer point.
     std::vector<double> edge_piece;
+    // Per edge, the faces using it with the pcurve of each use.
+    std::vector<std::vector<std::pair<int, int>>> edge_uses;
 };
+
+std::vector<std::vector<std::pair<int, int>>> edge_uses(const BRep& brep) {
+    std::vector<std::vector<std::pair<int, int>>> uses(brep.edges.size());
+    for (int f = 0; f < static_cast<int>(brep.faces.size()); ++f)
+        for (const BRepLoop& loop : brep.faces[f].loops)
+            for (const BRepCoedge& c : loop.coedges)
+                if (c.pcurve >= 0) uses[c.edge].push_back({f, c.pcurve});
+    return uses;
+}
 
 std::vector<double> edge_pieces(const BRep& brep, const std::vector<EdgeSample>& samples) {
     std::vector<double> piece(brep.edges.size(), 0.0);
@@ -127,6 +140,17 @@ double distance_to_faces(const FaceSearch& q, Vec3 x, std::vector<int>& nearest)
         best = std::min(best, project_to_curve(brep.curves[e.curve], x, s.t, e.t0, e.t1,
                                                q.options.newton_iterations)
                                   .distance);
+        // Onto each face of the edge from the sample's (u,v) there: a point
+        // beside an edge whose nearest face samples all lie on the other face
+        // (a wall's, denser near the edge than a large plane's) would
+        // otherwise count its distance to the edge, not to the face beside it.
+        for (const auto& [face, pcurve] : q.edge_uses[s.edge]) {
+            const Vec3 uv = evaluate_point(brep.pcurves[pcurve], s.t);
+            const SurfaceProjection p =
+                project_to_surface(q.model.surfaces[brep.faces[face].surface], x, uv.x, uv.y,
+                                   q.options.newton_iterations);
+            if (q.sampled.regions[face]->contains(p.u, p.v)) best = std::min(best, p.distance);
+        }
     }
     return best;
 }
@@ -143,7 +167,8 @@ DeviationStats mesh_to_faces(const Model& model, const TriangleMesh& mesh,
     for (size_t i = 0; i < s.edges.size(); ++i) points[i] = s.edges[i].point;
     const NearestSamples edge_tree(points);
     std::vector<Vec3>().swap(points);
-    const FaceSearch q{model, o, s, face_tree, edge_tree, edge_pieces(model.brep, s.edges)};
+    const FaceSearch q{
+        model, o, s, face_tree, edge_tree, edge_pieces(model.brep, s.edges), edge_uses(model.brep)};
 
     std::vector<char> used(mesh.positions.size(), 0);
     for (const auto& t : mesh.triangles)
@@ -160,7 +185,9 @@ DeviationStats mesh_to_faces(const Model& model, const TriangleMesh& mesh,
         for (int b = begin; b < end; ++b) {
             if (b < vertex_blocks) {
                 for (int v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v)
-                    if (used[v]) acc[b].add(distance_to_faces(q, mesh.positions[v], nearest));
+                    if (used[v])
+                        acc[b].add(distance_to_faces(q, mesh.positions[v], nearest),
+                                   mesh.positions[v]);
                 continue;
             }
             const int first = (b - vertex_blocks) * kBlock;
@@ -169,7 +196,7 @@ DeviationStats mesh_to_faces(const Model& model, const TriangleMesh& mesh,
                 for (const auto& w : bary) {
                     const Vec3 x = w[0] * mesh.positions[tri[0]] + w[1] * mesh.positions[tri[1]] +
                                    w[2] * mesh.positions[tri[2]];
-                    acc[b].add(distance_to_faces(q, x, nearest));
+                    acc[b].add(distance_to_faces(q, x, nearest), x);
                 }
             }
         }

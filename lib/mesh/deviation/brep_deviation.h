@@ -11,16 +11,17 @@
 //     face samples seed Newton projection onto their faces' surfaces, kept
 //     where the projection lies inside the face's loops; the nearest edge
 //     samples seed projection onto the edges' curves (a point whose foot on
-//     the surface is outside the face is nearest its boundary); the samples
-//     themselves count too.
+//     the surface is outside the face is nearest its boundary) and onto the
+//     faces using each edge, from the sample's (u,v) on each (a point beside
+//     an edge whose nearest face samples all lie on the other face); the
+//     samples themselves count too.
 // Both maxima are sampled, lower estimates of the Hausdorff distance: a
 // point between face samples, or of a triangle between its sample points,
 // may lie farther. Each sample's distance is to a point found on the other
 // side, so it is at least the true distance of that sample: where Newton
-// from the nearest samples misses the closest point, mesh -> face overstates
-// it, by up to the sample spacing (pyocc_surf114's folded B-splines, whose
-// grid crowds where a side collapses: 10 D at D = 1e-4 x diagonal, 1.9 D at
-// a quarter of the spacing; docs/results/cad.md).
+// misses the closest point, mesh -> face overstates it, by up to the sample
+// spacing (docs/results/cad.md). DeviationStats::at says where each maximum
+// was sampled.
 #pragma once
 
 #include <seamless/base/triangle_mesh.h>

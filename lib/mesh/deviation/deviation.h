@@ -39,6 +39,7 @@ struct DeviationOptions {
 struct DeviationStats {
     double max = 0, rms = 0; // model units
     long long samples = 0;
+    Vec3 at; // where the largest distance was sampled (on the side measured from)
 };
 
 struct Deviation {

@@ -17,13 +17,14 @@ namespace seamless {
 struct DeviationAccumulator {
     double max = 0, sum_sq = 0;
     long long count = 0;
-    void add(double d) {
-        max = std::max(max, d);
+    Vec3 at; // the sample of the largest distance (the first, in chunk order)
+    void add(double d, Vec3 x = {}) {
+        if (d > max) max = d, at = x;
         sum_sq += d * d;
         ++count;
     }
     void add(const DeviationAccumulator& c) {
-        max = std::max(max, c.max);
+        if (c.max > max) max = c.max, at = c.at;
         sum_sq += c.sum_sq;
         count += c.count;
     }
@@ -34,6 +35,7 @@ inline DeviationStats combine(const std::vector<DeviationAccumulator>& chunks) {
     for (const DeviationAccumulator& c : chunks) a.add(c);
     DeviationStats s;
     s.max = a.max;
+    s.at = a.at;
     s.samples = a.count;
     s.rms = a.count > 0 ? std::sqrt(a.sum_sq / static_cast<double>(a.count)) : 0.0;
     return s;

@@ -246,3 +246,23 @@ TEST_CASE("brep deviation: the same figures on one and two threads", "[brep_devi
     CHECK(one.mesh_to_surface.rms == two.mesh_to_surface.rms);
     CHECK(one.mesh_to_surface.samples == two.mesh_to_surface.samples);
 }
+
+TEST_CASE("brep deviation: a point beside an edge is measured against the edge's faces",
+          "[brep_deviation]") {
+    // Without face samples to start from (none of the nearest, as where a
+    // wall's samples crowd an edge that a large plane's are far from), a
+    // point on the square beside the hole is found on the square from the
+    // hole's edge samples, not measured against the edge itself.
+    const Model m = two_faces();
+    BRepDeviationOptions o = quick();
+    o.face_neighbours = 0;
+    for (double h : {0.0, 0.01}) {
+        TriangleMesh mesh;
+        mesh.positions = {{kHole + 0.05, -0.02, h}, {kHole + 0.1, 0, h}, {kHole + 0.05, 0.02, h}};
+        mesh.triangles = {{0, 1, 2}};
+        const Deviation d = measure_brep_deviation(m, mesh, o);
+        INFO("lift " << h << ": mesh->face " << d.mesh_to_surface.max);
+        CHECK(d.mesh_to_surface.max == Approx(h).margin(1e-12));
+        CHECK(d.mesh_to_surface.at.z == h);
+    }
+}
