@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 
 namespace seamless {
@@ -33,6 +34,31 @@ constexpr size_t kStopSize = 4096;
 // then gone on long beside a side it does not mend (a face whose triangles
 // meet the limits has a few dozen per boundary point).
 constexpr size_t kStopPerBoundaryPoint = 64;
+// ... or once it stalls: this many rounds without fewer triangles failing
+// than ever before, past this many triangles per boundary point. A
+// converging face's failures fall round after round once its first rounds
+// (where they rise with the triangles) are over; a face refining beside a
+// side it does not mend keeps failing there, and its failures level off and
+// rise again as the points it inserts there crowd in.
+constexpr int kStallRounds = 4;
+constexpr size_t kStallPerBoundaryPoint = 24;
+
+// When FaceCriteria::stop_when_encroached stops a face's refinement.
+struct StopRule {
+    size_t boundary_points;
+    size_t fewest_failing = SIZE_MAX;
+    int fewest_round = 0; // the round that had them
+
+    // After round `round` found `failing` of `triangles` failing.
+    bool stalled(int round, size_t failing, size_t triangles) {
+        if (failing < fewest_failing) fewest_failing = failing, fewest_round = round;
+        return round - fewest_round >= kStallRounds &&
+               triangles > kStallPerBoundaryPoint * boundary_points;
+    }
+    bool grown(size_t triangles) const {
+        return triangles > std::min(kStopSize, kStopPerBoundaryPoint * boundary_points);
+    }
+};
 
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
 // k), three points between the centroid and the corners, and on a triangle
@@ -325,6 +351,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     std::vector<int> failing;
     bool stopped = false; // by FaceCriteria::stop_when_encroached
     const size_t runaway = kStopPerBoundaryPoint * static_cast<size_t>(d.boundary_points);
+    StopRule stop{static_cast<size_t>(d.boundary_points)};
     for (int round = 0;; ++round) {
         cdt.triangles(tris);
         if (static_cast<std::int64_t>(tris.size()) > criteria.max_triangles)
@@ -345,7 +372,8 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (judged[tris[i].tag].split) failing.push_back(static_cast<int>(i));
         }
         if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
-        if (criteria.stop_when_encroached && tris.size() > std::min(kStopSize, runaway) &&
+        const bool stalled = stop.stalled(round, failing.size(), tris.size());
+        if (criteria.stop_when_encroached && (stop.grown(tris.size()) || stalled) &&
             !r.encroached_sides(kPersistent).empty()) {
             stopped = true;
             break;
