@@ -4,12 +4,12 @@
 #include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
 #include <seamless/tessellate/trimmed/faces/face_seeds.h>
 #include <seamless/tessellate/trimmed/faces/face_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/refinement_stop.h>
 #include <seamless/tessellate/trimmed/faces/touching_loops.h>
 #include <seamless/tessellate/trimmed/faces/triangle_distance.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <map>
 
 namespace seamless {
@@ -24,42 +24,6 @@ constexpr int kRounds = 64;
 // what the corpus's largest converging faces need at a tenth of the default
 // deviation (docs/results/cad.md).
 constexpr size_t kMaxFaceTriangles = 250'000;
-// Rounds a boundary side must be found encroached in before it counts as
-// one refinement does not mend (FaceCriteria::stop_when_encroached).
-constexpr int kPersistent = 8;
-// Only faces grown past this many triangles stop so: a small face's
-// refinement costs little, and left alone it mends most encroachments.
-constexpr size_t kStopSize = 4096;
-// ... or past this many triangles per boundary point: its refinement has
-// then gone on long beside a side it does not mend (a face whose triangles
-// meet the limits has a few dozen per boundary point).
-constexpr size_t kStopPerBoundaryPoint = 64;
-// ... or once it stalls: this many rounds without fewer triangles failing
-// than ever before, past this many triangles per boundary point. A
-// converging face's failures fall round after round once its first rounds
-// (where they rise with the triangles) are over; a face refining beside a
-// side it does not mend keeps failing there, and its failures level off and
-// rise again as the points it inserts there crowd in.
-constexpr int kStallRounds = 4;
-constexpr size_t kStallPerBoundaryPoint = 24;
-
-// When FaceCriteria::stop_when_encroached stops a face's refinement.
-struct StopRule {
-    size_t boundary_points;
-    size_t fewest_failing = SIZE_MAX;
-    int fewest_round = 0; // the round that had them
-
-    // After round `round` found `failing` of `triangles` failing.
-    bool stalled(int round, size_t failing, size_t triangles) {
-        if (failing < fewest_failing) fewest_failing = failing, fewest_round = round;
-        return round - fewest_round >= kStallRounds &&
-               triangles > kStallPerBoundaryPoint * boundary_points;
-    }
-    bool grown(size_t triangles) const {
-        return triangles > std::min(kStopSize, kStopPerBoundaryPoint * boundary_points);
-    }
-};
-
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
 // k), three points between the centroid and the corners, and on a triangle
 // with a boundary side three between the centroid and the edge midpoints
@@ -350,8 +314,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     long long reused = 0; // verdicts the earlier run's
     std::vector<int> failing;
     bool stopped = false; // by FaceCriteria::stop_when_encroached
-    const size_t runaway = kStopPerBoundaryPoint * static_cast<size_t>(d.boundary_points);
-    StopRule stop{static_cast<size_t>(d.boundary_points)};
+    RefinementStop stop(d.boundary_points);
     for (int round = 0;; ++round) {
         cdt.triangles(tris);
         if (static_cast<std::int64_t>(tris.size()) > criteria.max_triangles)
@@ -372,9 +335,9 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (judged[tris[i].tag].split) failing.push_back(static_cast<int>(i));
         }
         if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
-        const bool stalled = stop.stalled(round, failing.size(), tris.size());
-        if (criteria.stop_when_encroached && (stop.grown(tris.size()) || stalled) &&
-            !r.encroached_sides(kPersistent).empty()) {
+        const bool due = stop.due(round, failing.size(), tris.size());
+        if (criteria.stop_when_encroached && due &&
+            !r.encroached_sides(kPersistentEncroachment).empty()) {
             stopped = true;
             break;
         }
@@ -388,9 +351,9 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (r.insert_for(cdt, tris[i])) inserted = true;
         if (!inserted) break;
     }
-    out.crowded = stopped && tris.size() > runaway;
+    out.crowded = stopped && stop.crowded(tris.size());
     if (stopped)
-        out.encroached = d.segments_joining(r.encroached_sides(kPersistent));
+        out.encroached = d.segments_joining(r.encroached_sides(kPersistentEncroachment));
     else if (!failing.empty())
         out.encroached = d.segments_joining(r.encroached_sides(1));
     out.judged = static_cast<long long>(judged.size()) - reused;
