@@ -63,6 +63,19 @@ TriangleMesh brep_mesh(const Model& model, const std::vector<EdgePolyline>& line
                        const std::vector<FaceMesh>& meshes) {
     const BRep& brep = model.brep;
     TriangleMesh m;
+    // Sized once: grown by doubling, the arrays' copies and first touches
+    // of new pages were most of this step's time on large models.
+    size_t points = brep.vertices.size(), triangles = 0;
+    for (const EdgePolyline& line : lines) points += line.points.size();
+    for (const FaceMesh& fm : meshes) {
+        points += fm.domain.size() - fm.domain.boundary_points;
+        triangles += fm.triangles.size();
+    }
+    m.positions.reserve(points);
+    m.triangles.reserve(triangles);
+    m.triangle_surface.reserve(triangles);
+    m.corner_normals.reserve(triangles);
+    m.corner_uvs.reserve(triangles);
     for (const BRepVertex& v : brep.vertices) m.positions.push_back(v.point);
     std::vector<int> edge_first(brep.edges.size(), 0); // mesh index of point 1 of each edge
     for (size_t e = 0; e < brep.edges.size(); ++e) {

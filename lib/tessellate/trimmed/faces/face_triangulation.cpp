@@ -4,6 +4,7 @@
 #include <seamless/tessellate/trimmed/faces/constrained_triangulation.h>
 #include <seamless/tessellate/trimmed/faces/face_seeds.h>
 #include <seamless/tessellate/trimmed/faces/face_triangulation.h>
+#include <seamless/tessellate/trimmed/faces/refinement_stop.h>
 #include <seamless/tessellate/trimmed/faces/touching_loops.h>
 #include <seamless/tessellate/trimmed/faces/triangle_distance.h>
 
@@ -23,17 +24,6 @@ constexpr int kRounds = 64;
 // what the corpus's largest converging faces need at a tenth of the default
 // deviation (docs/results/cad.md).
 constexpr size_t kMaxFaceTriangles = 250'000;
-// Rounds a boundary side must be found encroached in before it counts as
-// one refinement does not mend (FaceCriteria::stop_when_encroached).
-constexpr int kPersistent = 8;
-// Only faces grown past this many triangles stop so: a small face's
-// refinement costs little, and left alone it mends most encroachments.
-constexpr size_t kStopSize = 4096;
-// ... or past this many triangles per boundary point: its refinement has
-// then gone on long beside a side it does not mend (a face whose triangles
-// meet the limits has a few dozen per boundary point).
-constexpr size_t kStopPerBoundaryPoint = 64;
-
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
 // k), three points between the centroid and the corners, and on a triangle
 // with a boundary side three between the centroid and the edge midpoints
@@ -324,7 +314,7 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
     long long reused = 0; // verdicts the earlier run's
     std::vector<int> failing;
     bool stopped = false; // by FaceCriteria::stop_when_encroached
-    const size_t runaway = kStopPerBoundaryPoint * static_cast<size_t>(d.boundary_points);
+    RefinementStop stop(d.boundary_points);
     for (int round = 0;; ++round) {
         cdt.triangles(tris);
         if (static_cast<std::int64_t>(tris.size()) > criteria.max_triangles)
@@ -345,8 +335,9 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (judged[tris[i].tag].split) failing.push_back(static_cast<int>(i));
         }
         if (round == kRounds || failing.empty() || tris.size() > kMaxFaceTriangles) break;
-        if (criteria.stop_when_encroached && tris.size() > std::min(kStopSize, runaway) &&
-            !r.encroached_sides(kPersistent).empty()) {
+        const bool due = stop.due(round, failing.size(), tris.size());
+        if (criteria.stop_when_encroached && due &&
+            !r.encroached_sides(kPersistentEncroachment).empty()) {
             stopped = true;
             break;
         }
@@ -360,9 +351,9 @@ FaceMesh triangulate_face(const Model& model, const std::vector<EdgePolyline>& l
             if (r.insert_for(cdt, tris[i])) inserted = true;
         if (!inserted) break;
     }
-    out.crowded = stopped && tris.size() > runaway;
+    out.crowded = stopped && stop.crowded(tris.size());
     if (stopped)
-        out.encroached = d.segments_joining(r.encroached_sides(kPersistent));
+        out.encroached = d.segments_joining(r.encroached_sides(kPersistentEncroachment));
     else if (!failing.empty())
         out.encroached = d.segments_joining(r.encroached_sides(1));
     out.judged = static_cast<long long>(judged.size()) - reused;
