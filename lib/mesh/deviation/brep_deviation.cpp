@@ -131,26 +131,32 @@ double distance_to_faces(const FaceSearch& q, Vec3 x, std::vector<int>& nearest)
         if (q.sampled.regions[s.face]->contains(p.u, p.v)) best = std::min(best, p.distance);
     }
     q.edge_tree.nearest(x, q.options.edge_neighbours, nearest);
+    int edges_tried[8], n_edges = 0;
     for (const int i : nearest) {
         const EdgeSample& s = q.sampled.edges[i];
         const double d = distance(s.point, x);
+        // Onto each face of the edge from the sample's (u,v) there, once per
+        // edge and however far the sample: a point beside an edge whose
+        // nearest face samples all lie on other faces (a wall's, denser near
+        // the edge than a large plane's) would otherwise count its distance
+        // to the edge or to those faces, not to the face it lies on.
+        if (std::find(edges_tried, edges_tried + n_edges, s.edge) == edges_tried + n_edges &&
+            n_edges < 8) {
+            edges_tried[n_edges++] = s.edge;
+            for (const auto& [face, pcurve] : q.edge_uses[s.edge]) {
+                const Vec3 uv = evaluate_point(brep.pcurves[pcurve], s.t);
+                const SurfaceProjection p =
+                    project_to_surface(q.model.surfaces[brep.faces[face].surface], x, uv.x, uv.y,
+                                       q.options.newton_iterations);
+                if (q.sampled.regions[face]->contains(p.u, p.v)) best = std::min(best, p.distance);
+            }
+        }
         if (d - q.edge_piece[s.edge] >= best) continue;
         const BRepEdge& e = brep.edges[s.edge];
         best = std::min(best, d);
         best = std::min(best, project_to_curve(brep.curves[e.curve], x, s.t, e.t0, e.t1,
                                                q.options.newton_iterations)
                                   .distance);
-        // Onto each face of the edge from the sample's (u,v) there: a point
-        // beside an edge whose nearest face samples all lie on the other face
-        // (a wall's, denser near the edge than a large plane's) would
-        // otherwise count its distance to the edge, not to the face beside it.
-        for (const auto& [face, pcurve] : q.edge_uses[s.edge]) {
-            const Vec3 uv = evaluate_point(brep.pcurves[pcurve], s.t);
-            const SurfaceProjection p =
-                project_to_surface(q.model.surfaces[brep.faces[face].surface], x, uv.x, uv.y,
-                                   q.options.newton_iterations);
-            if (q.sampled.regions[face]->contains(p.u, p.v)) best = std::min(best, p.distance);
-        }
     }
     return best;
 }
