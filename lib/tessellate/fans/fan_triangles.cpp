@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <seamless/base/check.h>
 #include <seamless/base/parallel/block_schedule.h>
 #include <seamless/base/parallel/huge_pages.h>
 #include <seamless/base/parallel/parallel.h>
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <numeric>
 
 namespace seamless {
@@ -254,6 +256,9 @@ std::vector<int> drop_quad_centres(const std::vector<Subpatch>& subpatches,
     for (size_t i = 0; i < subpatches.size(); ++i)
         if (subpatches[i].diagonal >= 0) dropped.push_back(rings.centre[i]);
     if (dropped.empty()) return {};
+    SEAMLESS_CHECK(std::adjacent_find(dropped.begin(), dropped.end(), std::greater_equal<int>()) ==
+                       dropped.end(),
+                   "the centres of two-triangle subpatches come in increasing order");
     const int nv = static_cast<int>(positions.size());
     std::vector<int> remap(nv);
     size_t d = 0;
