@@ -63,13 +63,13 @@ QuadVerdict quad_verdict(const BezierPatch& b, const Subpatch& sp, Vec3 centre,
     const Vec3 m13 = 0.5 * (ring[1].position + ring[3].position);
     const int d = distance(m02, centre) <= distance(m13, centre) ? 0 : 1;
     // Each triangle's normal within angle / 2 of the regular normals at its
-    // corners and the centre (a fan within an eighth of the tolerance, as
-    // fan_accepted's kTinyFan, by the centre's alone and within 45 degrees:
+    // corners and the centre (a fan within kTinyFan of the tolerance, as
+    // fan_accepted's, by the centre's alone and within 45 degrees:
     // a triangle across a fold, where two surfaces meet at a tiny tip, would
     // lie on the other side's triangle).
     double reach = 0;
     for (const RingPoint& p : ring) reach = std::max(reach, distance(p.position, centre));
-    const bool corners = angle > 0 && reach > tolerance / 8;
+    const bool corners = angle > 0 && reach > kTinyFan * tolerance;
     const double turn = angle > 0 ? 0.5 * angle : kQuadTurn;
     const double cos_half = std::cos(corners ? turn : std::min(turn, kQuadTurn));
     const auto param = [](const RingPoint& p, bool u) {

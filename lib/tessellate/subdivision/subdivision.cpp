@@ -63,9 +63,6 @@ bool split_in_u(const BezierPatch& b) {
     return l[0] >= l[1];
 }
 
-// A fan whose corners lie within this fraction of the tolerance of its
-// centre is too small for the angle criterion.
-constexpr double kTinyFan = 1.0 / 8;
 // fan_accepted's fan_error when the angle criterion rejected the fan.
 constexpr double kTurned = -2;
 

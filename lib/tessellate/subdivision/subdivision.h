@@ -43,6 +43,11 @@ struct FanVerdict {
 };
 using FanMemo = KeyTable<FanVerdict>;
 
+// A fan whose corners lie within this fraction of the tolerance of its
+// centre is too small for the angle criterion (the subdivision's fans and
+// the two-triangle subpatches, fan_certification.h).
+inline constexpr double kTinyFan = 1.0 / 8;
+
 struct SubdivisionOptions {
     // Planarity tolerances, model units (section 8); infinity: not tested.
     double eps1 = 0, eps2 = 0;
