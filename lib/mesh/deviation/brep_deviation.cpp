@@ -90,6 +90,8 @@ struct FaceSearch {
     std::vector<double> edge_piece;
     // Per edge, the faces using it with the pcurve of each use.
     std::vector<std::vector<std::pair<int, int>>> edge_uses;
+    // The face samples' spacing (model units).
+    double reach = 0;
 };
 
 std::vector<std::vector<std::pair<int, int>>> edge_uses(const BRep& brep) {
@@ -110,103 +112,208 @@ std::vector<double> edge_pieces(const BRep& brep, const std::vector<EdgeSample>&
     return piece;
 }
 
-// Distance from x to the closest point found on the faces (see the header).
-double distance_to_faces(const FaceSearch& q, Vec3 x, std::vector<int>& nearest) {
-    const BRep& brep = q.model.brep;
+// Newton from (u, v) onto a face's surface: the distance where the foot
+// lies inside the face.
+double onto_face(const FaceSearch& q, int face, Vec3 x, double u, double v) {
+    const SurfaceProjection p = project_to_surface(
+        q.model.surfaces[q.model.brep.faces[face].surface], x, u, v, q.options.newton_iterations);
+    return q.sampled.regions[face]->contains(p.u, p.v) ? p.distance : HUGE_VAL;
+}
+
+// Onto each face using an edge, from the edge sample's (u,v) on it: a point
+// beside an edge whose nearest face samples all lie on other faces (a
+// wall's, denser near the edge than a large plane's) would otherwise count
+// its distance to the edge or to those faces, not to the face it lies on.
+double beside_edge(const FaceSearch& q, const EdgeSample& s, Vec3 x) {
     double best = HUGE_VAL;
-    int tried[8], n_tried = 0;
-    const int max_tried = std::clamp(q.options.max_faces_tried, 0, 8);
-    q.face_tree.nearest(x, q.options.face_neighbours, nearest);
-    for (int k = 0; k < static_cast<int>(nearest.size()); ++k) {
-        const FaceSample& s = q.sampled.faces[nearest[k]];
-        best = std::min(best, distance(s.point, x));
-        const bool new_face = std::find(tried, tried + n_tried, s.face) == tried + n_tried;
-        if (new_face && n_tried < max_tried)
-            tried[n_tried++] = s.face;
-        else if (k >= q.options.newton_seeds)
-            continue;
-        const BSplineSurface& surface = q.model.surfaces[brep.faces[s.face].surface];
-        const SurfaceProjection p =
-            project_to_surface(surface, x, s.u, s.v, q.options.newton_iterations);
-        if (q.sampled.regions[s.face]->contains(p.u, p.v)) best = std::min(best, p.distance);
-    }
-    q.edge_tree.nearest(x, q.options.edge_neighbours, nearest);
-    int edges_tried[8], n_edges = 0;
-    for (const int i : nearest) {
-        const EdgeSample& s = q.sampled.edges[i];
-        const double d = distance(s.point, x);
-        // Onto each face of the edge from the sample's (u,v) there, once per
-        // edge and however far the sample: a point beside an edge whose
-        // nearest face samples all lie on other faces (a wall's, denser near
-        // the edge than a large plane's) would otherwise count its distance
-        // to the edge or to those faces, not to the face it lies on.
-        if (std::find(edges_tried, edges_tried + n_edges, s.edge) == edges_tried + n_edges &&
-            n_edges < 8) {
-            edges_tried[n_edges++] = s.edge;
-            for (const auto& [face, pcurve] : q.edge_uses[s.edge]) {
-                const Vec3 uv = evaluate_point(brep.pcurves[pcurve], s.t);
-                const SurfaceProjection p =
-                    project_to_surface(q.model.surfaces[brep.faces[face].surface], x, uv.x, uv.y,
-                                       q.options.newton_iterations);
-                if (q.sampled.regions[face]->contains(p.u, p.v)) best = std::min(best, p.distance);
-            }
-        }
-        if (d - q.edge_piece[s.edge] >= best) continue;
-        const BRepEdge& e = brep.edges[s.edge];
-        best = std::min(best, d);
-        best = std::min(best, project_to_curve(brep.curves[e.curve], x, s.t, e.t0, e.t1,
-                                               q.options.newton_iterations)
-                                  .distance);
+    for (const auto& [face, pcurve] : q.edge_uses[s.edge]) {
+        const Vec3 uv = evaluate_point(q.model.brep.pcurves[pcurve], s.t);
+        best = std::min(best, onto_face(q, face, x, uv.x, uv.y));
     }
     return best;
 }
 
-// Mesh -> face: every vertex a triangle uses once, then the triangles' other
-// barycentric points; fixed blocks of each, combined in order.
+// The faces and edges the nearest samples brought (fixed capacity: the
+// options' counts are clamped to it).
+struct Tried {
+    static constexpr int kMost = 8;
+    int faces[kMost], n_faces = 0, edges[kMost], n_edges = 0;
+    bool has_face(int f) const { return std::find(faces, faces + n_faces, f) != faces + n_faces; }
+    bool has_edge(int e) const { return std::find(edges, edges + n_edges, e) != edges + n_edges; }
+};
+
+// visit(sample) for the nearest to x of each run of one owner's samples
+// (samples come in face and edge order, each one's contiguous).
+template <class Sample, class Owner, class Visit>
+void nearest_of_each(const std::vector<int>& within, const std::vector<Sample>& samples, Vec3 x,
+                     Owner owner, Visit visit) {
+    for (size_t i = 0; i < within.size();) {
+        const int id = owner(samples[within[i]]);
+        size_t nearest = i, j = i;
+        double d_nearest = HUGE_VAL;
+        for (; j < within.size() && owner(samples[within[j]]) == id; ++j)
+            if (const Vec3 e = samples[within[j]].point - x; dot(e, e) < d_nearest)
+                nearest = j, d_nearest = dot(e, e);
+        i = j;
+        visit(samples[within[nearest]]);
+    }
+}
+
+// Every face and edge with a sample within best + reach of x that the
+// nearest samples did not bring, projected on from its nearest such sample:
+// a face's closest point has a sample of the face, or of its boundary, about
+// a spacing away, so none closer than best is left out. Nothing past
+// kWideMost spacings: the nearest samples alone then overstate by at most
+// one spacing (the closest point's sample would be nearer than the
+// nearest), a quarter.
+void wide_search(const FaceSearch& q, Vec3 x, const Tried& tried, double& best,
+                 std::vector<int>& within) {
+    constexpr double kWideMost = 4;
+    if (!(best <= kWideMost * q.reach)) return;
+    q.face_tree.within(x, best + q.reach, within);
+    nearest_of_each(
+        within, q.sampled.faces, x, [](const FaceSample& s) { return s.face; },
+        [&](const FaceSample& s) {
+            if (!tried.has_face(s.face)) best = std::min(best, onto_face(q, s.face, x, s.u, s.v));
+        });
+    q.edge_tree.within(x, best + q.reach, within);
+    nearest_of_each(
+        within, q.sampled.edges, x, [](const EdgeSample& s) { return s.edge; },
+        [&](const EdgeSample& s) {
+            if (tried.has_edge(s.edge)) return;
+            const BRepEdge& e = q.model.brep.edges[s.edge];
+            best = std::min(best, beside_edge(q, s, x));
+            best = std::min(best, project_to_curve(q.model.brep.curves[e.curve], x, s.t, e.t0, e.t1,
+                                                   q.options.newton_iterations)
+                                      .distance);
+        });
+}
+
+// Distance from x to the closest point found on the faces (see the header).
+double distance_to_faces(const FaceSearch& q, Vec3 x, bool wide, std::vector<int>& nearest) {
+    double best = HUGE_VAL;
+    Tried tried;
+    const int max_tried = std::clamp(q.options.max_faces_tried, 0, Tried::kMost);
+    q.face_tree.nearest(x, q.options.face_neighbours, nearest);
+    for (int k = 0; k < static_cast<int>(nearest.size()); ++k) {
+        const FaceSample& s = q.sampled.faces[nearest[k]];
+        best = std::min(best, distance(s.point, x));
+        if (!tried.has_face(s.face) && tried.n_faces < max_tried)
+            tried.faces[tried.n_faces++] = s.face;
+        else if (k >= q.options.newton_seeds)
+            continue;
+        best = std::min(best, onto_face(q, s.face, x, s.u, s.v));
+    }
+    q.edge_tree.nearest(x, q.options.edge_neighbours, nearest);
+    for (const int i : nearest) {
+        const EdgeSample& s = q.sampled.edges[i];
+        const double d = distance(s.point, x);
+        // Beside the edge once per edge, however far the sample.
+        if (!tried.has_edge(s.edge) && tried.n_edges < Tried::kMost) {
+            tried.edges[tried.n_edges++] = s.edge;
+            best = std::min(best, beside_edge(q, s, x));
+        }
+        if (d - q.edge_piece[s.edge] >= best) continue;
+        const BRepEdge& e = q.model.brep.edges[s.edge];
+        best = std::min(best, d);
+        best = std::min(best, project_to_curve(q.model.brep.curves[e.curve], x, s.t, e.t0, e.t1,
+                                               q.options.newton_iterations)
+                                  .distance);
+    }
+    if (wide) wide_search(q, x, tried, best, nearest);
+    return best;
+}
+
+// The mesh -> face sample points: every vertex a triangle uses, then each
+// triangle's other barycentric points.
+struct MeshPoints {
+    const TriangleMesh& mesh;
+    std::vector<char> used; // per vertex
+    std::vector<std::array<double, 3>> bary;
+    long long size() const {
+        return static_cast<long long>(mesh.vertex_count()) +
+               static_cast<long long>(mesh.triangle_count()) * static_cast<long long>(bary.size());
+    }
+    bool counts(long long i) const { return i >= mesh.vertex_count() || used[i]; }
+    Vec3 operator[](long long i) const {
+        const long long nv = mesh.vertex_count();
+        if (i < nv) return mesh.positions[i];
+        const long long nb = static_cast<long long>(bary.size());
+        const auto& tri = mesh.triangles[(i - nv) / nb];
+        const auto& w = bary[(i - nv) % nb];
+        return w[0] * mesh.positions[tri[0]] + w[1] * mesh.positions[tri[1]] +
+               w[2] * mesh.positions[tri[2]];
+    }
+};
+
+MeshPoints mesh_points(const TriangleMesh& mesh, int level) {
+    MeshPoints p{mesh, std::vector<char>(mesh.positions.size(), 0), barycentric_points(level)};
+    for (const auto& t : mesh.triangles)
+        for (const int v : t) p.used[v] = 1;
+    std::erase_if(
+        p.bary, [](const std::array<double, 3>& w) { return w[0] == 1 || w[1] == 1 || w[2] == 1; });
+    return p;
+}
+
+// The points of `todo` (fixed blocks of it), each to the faces.
+void measure_points(const FaceSearch& q, const MeshPoints& points,
+                    const std::vector<long long>& todo, bool wide, std::vector<double>& d) {
+    const int blocks = static_cast<int>((todo.size() + kBlock - 1) / kBlock);
+    parallel_chunks(blocks, q.options.threads, [&](int begin, int end) {
+        std::vector<int> nearest;
+        for (size_t k = size_t(begin) * kBlock; k < std::min(todo.size(), size_t(end) * kBlock);
+             ++k)
+            d[todo[k]] = distance_to_faces(q, points[todo[k]], wide, nearest);
+    });
+}
+
+// Mesh -> face: every point from its nearest samples, then the wide search
+// for the points that may hold the maximum: those at or above half the
+// maximum, again with the new maximum until it stays at or above the
+// threshold (a point left out is below it, and the search only lowers a
+// distance). The others' distances are their nearest samples'.
 DeviationStats mesh_to_faces(const Model& model, const TriangleMesh& mesh,
                              const BRepDeviationOptions& o, const BRepSampled& s) {
     if (s.faces.empty() && s.edges.empty()) return {};
-    std::vector<Vec3> points(s.faces.size());
-    for (size_t i = 0; i < s.faces.size(); ++i) points[i] = s.faces[i].point;
-    const NearestSamples face_tree(points);
-    points.resize(s.edges.size());
-    for (size_t i = 0; i < s.edges.size(); ++i) points[i] = s.edges[i].point;
-    const NearestSamples edge_tree(points);
-    std::vector<Vec3>().swap(points);
-    const FaceSearch q{
-        model, o, s, face_tree, edge_tree, edge_pieces(model.brep, s.edges), edge_uses(model.brep)};
-
-    std::vector<char> used(mesh.positions.size(), 0);
-    for (const auto& t : mesh.triangles)
-        for (const int v : t) used[v] = 1;
-    std::vector<std::array<double, 3>> bary = barycentric_points(o.triangle_level);
-    std::erase_if(
-        bary, [](const std::array<double, 3>& w) { return w[0] == 1 || w[1] == 1 || w[2] == 1; });
-    const int nv = mesh.vertex_count(), nt = mesh.triangle_count();
-    const int vertex_blocks = (nv + kBlock - 1) / kBlock;
-    const int blocks = vertex_blocks + (nt + kBlock - 1) / kBlock;
+    std::vector<Vec3> positions(s.faces.size());
+    for (size_t i = 0; i < s.faces.size(); ++i) positions[i] = s.faces[i].point;
+    const NearestSamples face_tree(positions);
+    positions.resize(s.edges.size());
+    for (size_t i = 0; i < s.edges.size(); ++i) positions[i] = s.edges[i].point;
+    const NearestSamples edge_tree(positions);
+    std::vector<Vec3>().swap(positions);
+    const FaceSearch q{model,
+                       o,
+                       s,
+                       face_tree,
+                       edge_tree,
+                       edge_pieces(model.brep, s.edges),
+                       edge_uses(model.brep),
+                       o.relative_spacing * brep_diagonal(model)};
+    const MeshPoints points = mesh_points(mesh, o.triangle_level);
+    std::vector<double> d(points.size(), 0.0);
+    std::vector<char> searched(points.size(), 0);
+    std::vector<long long> todo;
+    for (long long i = 0; i < points.size(); ++i)
+        if (points.counts(i)) todo.push_back(i);
+    measure_points(q, points, todo, false, d);
+    for (double threshold = HUGE_VAL; o.wide_search;) {
+        double most = 0;
+        for (long long i = 0; i < points.size(); ++i)
+            if (points.counts(i)) most = std::max(most, d[i]);
+        // Past a millionth of a spacing the maximum is round-off either way.
+        if (most >= threshold || most <= 1e-6 * q.reach) break;
+        threshold = most / 2;
+        todo.clear();
+        for (long long i = 0; i < points.size(); ++i)
+            if (points.counts(i) && !searched[i] && d[i] >= threshold)
+                todo.push_back(i), searched[i] = 1;
+        measure_points(q, points, todo, true, d);
+    }
+    const int blocks = static_cast<int>((points.size() + kBlock - 1) / kBlock);
     std::vector<DeviationAccumulator> acc(blocks);
-    parallel_chunks(blocks, o.threads, [&](int begin, int end) {
-        std::vector<int> nearest;
-        for (int b = begin; b < end; ++b) {
-            if (b < vertex_blocks) {
-                for (int v = b * kBlock; v < std::min(nv, (b + 1) * kBlock); ++v)
-                    if (used[v])
-                        acc[b].add(distance_to_faces(q, mesh.positions[v], nearest),
-                                   mesh.positions[v]);
-                continue;
-            }
-            const int first = (b - vertex_blocks) * kBlock;
-            for (int f = first; f < std::min(nt, first + kBlock); ++f) {
-                const auto& tri = mesh.triangles[f];
-                for (const auto& w : bary) {
-                    const Vec3 x = w[0] * mesh.positions[tri[0]] + w[1] * mesh.positions[tri[1]] +
-                                   w[2] * mesh.positions[tri[2]];
-                    acc[b].add(distance_to_faces(q, x, nearest), x);
-                }
-            }
-        }
-    });
+    for (long long i = 0; i < points.size(); ++i)
+        if (points.counts(i)) acc[i / kBlock].add(d[i], points[i]);
     return combine(acc);
 }
 

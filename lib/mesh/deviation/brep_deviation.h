@@ -14,14 +14,18 @@
 //     the surface is outside the face is nearest its boundary) and onto the
 //     faces using each edge, from the sample's (u,v) on each (a point beside
 //     an edge whose nearest face samples all lie on the other face); the
-//     samples themselves count too.
+//     samples themselves count too. The points that may hold the maximum
+//     (at or above half of it) are then searched wide: every face and edge
+//     with a sample within the distance found plus one sample spacing (a
+//     face's closest point has a sample of the face or its boundary about
+//     a spacing away), so that the maximum does not depend on which samples
+//     happened to be nearest.
 // Both maxima are sampled, lower estimates of the Hausdorff distance: a
 // point between face samples, or of a triangle between its sample points,
 // may lie farther. Each sample's distance is to a point found on the other
 // side, so it is at least the true distance of that sample: where Newton
-// misses the closest point, mesh -> face overstates it, by up to the sample
-// spacing (docs/results/cad.md). DeviationStats::at says where each maximum
-// was sampled.
+// misses the closest point, mesh -> face overstates it. DeviationStats::at
+// says where each maximum was sampled.
 #pragma once
 
 #include <seamless/base/triangle_mesh.h>
@@ -53,6 +57,10 @@ struct BRepDeviationOptions {
     // the samples of the edges meeting at a vertex coincide there).
     int edge_neighbours = 4;
     int newton_iterations = 12;
+    // The wide search of the points that may hold the maximum (above; a
+    // thin cylinder's point whose nearest samples all lie on its denser
+    // neighbour's): false, the nearest samples only (off by up to a spacing).
+    bool wide_search = true;
     // 0: every core. The result does not depend on it.
     int threads = 0;
 };

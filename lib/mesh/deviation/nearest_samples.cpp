@@ -3,6 +3,7 @@
 // property map.
 #include <seamless/mesh/deviation/nearest_samples.h>
 
+#include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -10,6 +11,7 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <iterator>
 #include <utility>
 
 namespace seamless {
@@ -21,6 +23,7 @@ using PointMap = CGAL::Pointer_property_map<Point>::type;
 using Traits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<K>>;
 using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
 using KdTree = Search::Tree;
+using Sphere = CGAL::Fuzzy_sphere<Traits>;
 
 } // namespace
 
@@ -51,6 +54,17 @@ void NearestSamples::nearest(Vec3 query, int k, std::vector<int>& out) const {
     for (const auto& hit : search) found.emplace_back(hit.second, hit.first);
     std::sort(found.begin(), found.end());
     for (const auto& f : found) out.push_back(static_cast<int>(f.second));
+}
+
+void NearestSamples::within(Vec3 query, double radius, std::vector<int>& out) const {
+    out.clear();
+    if (tree_->points.empty() || !(radius >= 0)) return;
+    std::vector<std::size_t> found;
+    tree_->tree->search(std::back_inserter(found),
+                        Sphere(Point(query.x, query.y, query.z), radius, 0,
+                               Traits(CGAL::make_property_map(tree_->points))));
+    std::sort(found.begin(), found.end());
+    for (const std::size_t i : found) out.push_back(static_cast<int>(i));
 }
 
 } // namespace seamless

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The k points of a fixed set nearest to a query point: CGAL's kd-tree
+// The k points of a fixed set nearest to a query point, or those within a
+// radius of it: CGAL's kd-tree
 // (kept inside nearest_samples.cpp), built once, then queried from any
 // number of threads at once.
 #pragma once
@@ -21,6 +22,9 @@ class NearestSamples {
     // Indices of the min(k, size) nearest points into `out`, nearest first
     // (ties in index order: the result does not depend on the thread).
     void nearest(Vec3 query, int k, std::vector<int>& out) const;
+    // Indices of the points within `radius` of the query into `out`, in
+    // index order.
+    void within(Vec3 query, double radius, std::vector<int>& out) const;
 
   private:
     struct Tree;

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 
 using namespace seamless;
 
@@ -265,4 +266,60 @@ TEST_CASE("brep deviation: a point beside an edge is measured against the edge's
         CHECK(d.mesh_to_surface.max == Approx(h).margin(1e-12));
         CHECK(d.mesh_to_surface.at.z == h);
     }
+}
+
+namespace {
+
+// A planar square face [x0, x0 + size]^2 at height z, (u,v) over [0, 1]^2.
+void add_square(Model& m, double x0, double size, double z) {
+    BSplineSurface plane;
+    plane.degree_u = plane.degree_v = 1;
+    plane.size_u = plane.size_v = 2;
+    plane.knots_u = plane.knots_v = {0, 0, 1, 1};
+    const double x1 = x0 + size;
+    plane.points = {{x0, x0, z}, {x0, x1, z}, {x1, x0, z}, {x1, x1, z}};
+    m.surfaces.push_back(plane);
+    BRep& b = m.brep;
+    const int v0 = static_cast<int>(b.vertices.size());
+    const Vec3 corners[4] = {{x0, x0, z}, {x1, x0, z}, {x1, x1, z}, {x0, x1, z}};
+    const Vec3 uvs[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    for (const Vec3& c : corners) b.vertices.push_back({c, 1e-9});
+    BRepLoop outer;
+    for (int i = 0; i < 4; ++i) {
+        const int e = add_edge(b, line(corners[i], corners[(i + 1) % 4]), v0 + i, v0 + (i + 1) % 4);
+        outer.coedges.push_back(use(b, e, false, line(uvs[i], uvs[(i + 1) % 4])));
+    }
+    b.faces.push_back({static_cast<int>(m.surfaces.size()) - 1,
+                       false,
+                       {outer},
+                       "square " + std::to_string(b.faces.size())});
+}
+
+} // namespace
+
+TEST_CASE("brep deviation: a point whose nearest samples all lie on another face",
+          "[brep_deviation]") {
+    // A small square hovering h above a large one, its 16 x 16 samples
+    // denser than the large one's 0.5 apart: a point on the large square
+    // under the small one has only the small square's samples and edges
+    // nearest, which place it h away; the wide search finds the large square.
+    Model m;
+    m.source = "hover";
+    constexpr double kLarge = 10, kSmall = 0.5, kLift = 0.05;
+    add_square(m, 0, kLarge, 0);
+    add_square(m, (kLarge - kSmall) / 2, kSmall, kLift);
+    BRepDeviationOptions o;
+    o.relative_spacing = 0.5 / brep_diagonal(m);
+    TriangleMesh mesh;
+    const double c = kLarge / 2;
+    mesh.positions = {{c - 0.01, c - 0.01, 0}, {c + 0.01, c - 0.01, 0}, {c, c + 0.01, 0}};
+    mesh.triangles = {{0, 1, 2}};
+    o.wide_search = false;
+    const Deviation nearest_only = measure_brep_deviation(m, mesh, o);
+    INFO("nearest samples only: mesh->face " << nearest_only.mesh_to_surface.max);
+    CHECK(nearest_only.mesh_to_surface.max == Approx(kLift).margin(1e-9));
+    o.wide_search = true;
+    const Deviation wide = measure_brep_deviation(m, mesh, o);
+    INFO("wide search: mesh->face " << wide.mesh_to_surface.max);
+    CHECK(wide.mesh_to_surface.max <= 1e-12);
 }
