@@ -3,6 +3,7 @@
 #include <seamless/tessellate/trimmed/faces/face_domain.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace seamless {
@@ -24,30 +25,56 @@ Vec3 face_uv_centre(const BRep& brep, const BRepFace& face) {
 
 namespace {
 
-// Mean |dP/du| and |dP/dv| over a grid on the (u,v) box: the scale that
-// makes a unit step in either direction about as long on the surface.
+// Mean |dP/du| and |dP/dv| over a grid on the (u,v) box, each times the
+// square root of the surface's mean normal curvature that way: a triangle
+// meets a deviation over a length proportional to 1 / sqrt(curvature), so
+// that a unit step either way costs about the same deviation and Delaunay's
+// round triangles are long along a cylinder's rulings (at most kAspect to
+// one), as a chordal tessellation's are. Curvature from the normal's turn
+// between neighbouring grid points per their distance.
 void metric_scale(const FaceSurface& s, const Box3& box, double& su, double& sv) {
     constexpr int kGrid = 5;
+    constexpr double kAspect = 4;
+    SurfacePoint p[kGrid][kGrid];
+    Vec3 n[kGrid][kGrid];
     double lu = 0, lv = 0;
     for (int i = 0; i < kGrid; ++i)
         for (int j = 0; j < kGrid; ++j) {
-            const SurfacePoint p = s.at({box.lo.x + (box.hi.x - box.lo.x) * (i + 0.5) / kGrid,
-                                         box.lo.y + (box.hi.y - box.lo.y) * (j + 0.5) / kGrid, 0});
-            lu += norm(p.du);
-            lv += norm(p.dv);
+            p[i][j] = s.at({box.lo.x + (box.hi.x - box.lo.x) * (i + 0.5) / kGrid,
+                            box.lo.y + (box.hi.y - box.lo.y) * (j + 0.5) / kGrid, 0});
+            n[i][j] = normalize(p[i][j].normal());
+            lu += norm(p[i][j].du);
+            lv += norm(p[i][j].dv);
+        }
+    const auto turn = [&](int i, int j, int k, int l) {
+        const double d = distance(p[i][j].point, p[k][l].point);
+        if (!(d > 0) || n[i][j] == Vec3{} || n[k][l] == Vec3{}) return 0.0;
+        return 2 * std::asin(std::min(1.0, 0.5 * distance(n[i][j], n[k][l]))) / d;
+    };
+    double ku = 0, kv = 0;
+    for (int i = 0; i < kGrid; ++i)
+        for (int j = 0; j + 1 < kGrid; ++j) {
+            ku += turn(j, i, j + 1, i);
+            kv += turn(i, j, i, j + 1);
         }
     su = lu > 0 ? lu : lv > 0 ? lv : kGrid * kGrid;
     sv = lv > 0 ? lv : su;
     // Only the ratio matters to Delaunay; the mean keeps the model's scale.
     su /= kGrid * kGrid;
     sv /= kGrid * kGrid;
+    const double most = std::max(ku, kv), floor = most / (kAspect * kAspect);
+    if (!(most > 0) || !std::isfinite(most)) return;
+    const double r = std::sqrt(std::sqrt(std::max(ku, floor) / std::max(kv, floor)));
+    su *= r;
+    sv /= r;
 }
 
 // The pcurves of two edges meeting at a vertex end at (u,v) points a
 // rounding or the vertex's tolerance apart; left apart, the constrained
 // triangulation sees two points and the segments leaving them cross where
 // the loops meet at a small angle. Images of one vertex closer than its
-// tolerance (on the scaled domain, whose unit is about one model unit) or
+// tolerance (on the scaled domain, whose unit is one model unit within a
+// factor of two each way) or
 // than rounding are made one; a seam's or a pole's images are far apart.
 // Not where they are farther apart than a fraction of a boundary segment
 // leaving either: on a face smaller than its tolerance a closed edge's two

@@ -4,8 +4,8 @@
 // runs them backwards), each point keyed by the mesh vertex it is (a B-rep
 // vertex or an edge's point), so that both sides of a seam and every point of
 // a pole's degenerate edge are one vertex. The domain is rescaled by the
-// surface's mean metric so that Delaunay triangles in it are not needlessly
-// stretched on the surface.
+// surface's mean metric and curvature so that Delaunay triangles in it are
+// about as long on the surface as the deviation allows each way.
 #pragma once
 
 #include <seamless/model/model.h>
@@ -47,7 +47,7 @@ struct FaceDomain {
         int edge = 0, segment = 0, pcurve = 0;
     };
     std::vector<Origin> origins;
-    double su = 1, sv = 1; // the metric's scale of u and v
+    double su = 1, sv = 1; // the scale of u and v (metric and curvature)
     double tolerance = 0;  // largest tolerance of the face's edges
     int boundary_points = 0;
 

@@ -16,7 +16,7 @@ TEST_CASE("face seeds: a face redone after an edge is halved meets the limits wi
     for (const BRepCase& c : {freeform_face(), torus_solid(), sphere_solid()}) {
         INFO(c.name);
         const BRep& brep = c.model.brep;
-        const double D = 1e-2;
+        const double D = 3e-3;
         // Each edge discretised against the faces that use it, as tessellation does.
         std::vector<std::vector<EdgeOnFace>> uses(brep.edges.size());
         for (const BRepFace& f : brep.faces)
