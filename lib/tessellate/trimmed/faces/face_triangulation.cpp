@@ -27,10 +27,13 @@ constexpr size_t kMaxFaceTriangles = 250'000;
 // Barycentric samples: centroid, edge midpoints (k: the edge opposite corner
 // k), three points between the centroid and the corners, and on a triangle
 // with a boundary side three between the centroid and the edge midpoints
-// (where its largest deviation lies when the boundary side is long). Inside,
-// the surface's distance to a small triangle is near a quadratic form that
-// vanishes at the corners, which the centroid and the midpoints pin down (its
-// maximum is at most 4/3 of the midpoints' largest).
+// (where its largest deviation lies when the boundary side is long), and the
+// inner sides' quarter points. Inside, the surface's distance to a small
+// triangle is near a quadratic form that vanishes at the corners, which the
+// centroid and the midpoints pin down (its maximum is at most 4/3 of the
+// midpoints' largest); on a triangle long along a direction where the
+// surface's curvature changes (the curvature-scaled domain's, face_domain.h)
+// the distance along a side is lopsided, its largest off the midpoint.
 struct Sample {
     double l[3];
     int edge;           // -1: interior
@@ -45,7 +48,13 @@ constexpr Sample kSamples[] = {{{1.0 / 3, 1.0 / 3, 1.0 / 3}, -1, false},
                                {{1.0 / 6, 1.0 / 6, 2.0 / 3}, -1, false},
                                {{1.0 / 6, 5.0 / 12, 5.0 / 12}, -1, true},
                                {{5.0 / 12, 1.0 / 6, 5.0 / 12}, -1, true},
-                               {{5.0 / 12, 5.0 / 12, 1.0 / 6}, -1, true}};
+                               {{5.0 / 12, 5.0 / 12, 1.0 / 6}, -1, true},
+                               {{0, 0.25, 0.75}, 0, false},
+                               {{0, 0.75, 0.25}, 0, false},
+                               {{0.25, 0, 0.75}, 1, false},
+                               {{0.75, 0, 0.25}, 1, false},
+                               {{0.25, 0.75, 0}, 2, false},
+                               {{0.75, 0.25, 0}, 2, false}};
 
 // A triangle this thin (height over longest side) is a sliver.
 constexpr double kSliver = 1e-3;
