@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The k points of a fixed set nearest to a query point, or those within a
-// radius of it: CGAL's kd-tree
-// (kept inside nearest_samples.cpp), built once, then queried from any
-// number of threads at once.
+// radius of it: CGAL's kd-tree (kept inside nearest_samples.cpp), built
+// once, then queried from any number of threads at once.
 #pragma once
 
 #include <seamless/base/vec.h>

@@ -32,7 +32,7 @@ namespace {
 // round triangles are long along a cylinder's rulings (at most kAspect to
 // one), as a chordal tessellation's are. Curvature from the normal's turn
 // between neighbouring grid points per their distance.
-void metric_scale(const FaceSurface& s, const Box3& box, double& su, double& sv) {
+void domain_scale(const FaceSurface& s, const Box3& box, double& su, double& sv) {
     constexpr int kGrid = 5;
     constexpr double kAspect = 4;
     SurfacePoint p[kGrid][kGrid];
@@ -74,8 +74,8 @@ void metric_scale(const FaceSurface& s, const Box3& box, double& su, double& sv)
 // triangulation sees two points and the segments leaving them cross where
 // the loops meet at a small angle. Images of one vertex closer than its
 // tolerance (on the scaled domain, whose unit is one model unit within a
-// factor of two each way) or
-// than rounding are made one; a seam's or a pole's images are far apart.
+// factor of two each way) or than rounding are made one; a seam's or a
+// pole's images are far apart.
 // Not where they are farther apart than a fraction of a boundary segment
 // leaving either: on a face smaller than its tolerance a closed edge's two
 // ends would fold the loop back on itself.
@@ -186,7 +186,7 @@ FaceDomain face_domain(const Model& model, const std::vector<EdgePolyline>& line
     Box3 box;
     for (const Vec3& p : d.uv) box.extend(p);
     const FaceSurface s(model.surfaces[f.surface]);
-    metric_scale(s, box, d.su, d.sv);
+    domain_scale(s, box, d.su, d.sv);
     for (const Vec3& p : d.uv) d.scaled.push_back({p.x * d.su, p.y * d.sv, 0});
     merge_vertex_images(brep, box, d);
     // After the merge, which moves a vertex's images onto one (u,v) point.
