@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The face's (u,v) domain rescaled by its surface's metric and curvature
-// (face_domain.h): on a torus, which curves four times as much across its
+// (face_domain.h): on a torus, which curves about six times as much across its
 // tube as around its axis on average, the triangles are longer around the
 // axis than across the tube, as a deviation-driven mesh's should be.
 #include <tessellate/trimmed/brep_cases.h>
