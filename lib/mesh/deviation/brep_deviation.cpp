@@ -133,6 +133,14 @@ double beside_edge(const FaceSearch& q, const EdgeSample& s, Vec3 x) {
     return best;
 }
 
+// Newton from an edge sample onto its edge's curve (within the edge's range).
+double onto_curve(const FaceSearch& q, const EdgeSample& s, Vec3 x) {
+    const BRepEdge& e = q.model.brep.edges[s.edge];
+    return project_to_curve(q.model.brep.curves[e.curve], x, s.t, e.t0, e.t1,
+                            q.options.newton_iterations)
+        .distance;
+}
+
 // The faces and edges the nearest samples brought (fixed capacity: the
 // options' counts are clamped to it).
 struct Tried {
@@ -181,11 +189,7 @@ void wide_search(const FaceSearch& q, Vec3 x, const Tried& tried, double& best,
         within, q.sampled.edges, x, [](const EdgeSample& s) { return s.edge; },
         [&](const EdgeSample& s) {
             if (tried.has_edge(s.edge)) return;
-            const BRepEdge& e = q.model.brep.edges[s.edge];
-            best = std::min(best, beside_edge(q, s, x));
-            best = std::min(best, project_to_curve(q.model.brep.curves[e.curve], x, s.t, e.t0, e.t1,
-                                                   q.options.newton_iterations)
-                                      .distance);
+            best = std::min({best, beside_edge(q, s, x), onto_curve(q, s, x)});
         });
 }
 
@@ -214,11 +218,7 @@ double distance_to_faces(const FaceSearch& q, Vec3 x, bool wide, std::vector<int
             best = std::min(best, beside_edge(q, s, x));
         }
         if (d - q.edge_piece[s.edge] >= best) continue;
-        const BRepEdge& e = q.model.brep.edges[s.edge];
-        best = std::min(best, d);
-        best = std::min(best, project_to_curve(q.model.brep.curves[e.curve], x, s.t, e.t0, e.t1,
-                                               q.options.newton_iterations)
-                                  .distance);
+        best = std::min({best, d, onto_curve(q, s, x)});
     }
     if (wide) wide_search(q, x, tried, best, nearest);
     return best;
